@@ -1,0 +1,61 @@
+// In-memory tables of a mesh file, shared by the readers, the writer and the command.
+// A PlyElement is a generic table (one column per property) so that every property and every
+// element the engine does not use is carried from the input to the output unchanged.
+// Values are stored as double: every PLY scalar type (8/16/32-bit integers, float, double) is
+// represented exactly, so a read/write round trip is bit-identical.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace qd::meshio {
+
+enum class ScalarType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+// PLY name ("uchar", "float", ...) of a type, and its size in bytes.
+const char* scalar_type_name(ScalarType type);
+std::size_t scalar_type_size(ScalarType type);
+
+// One property of an element: a scalar column, or a list column (values of element i are
+// values[offsets[i] .. offsets[i+1]) ).
+struct PlyProperty {
+  std::string name;
+  ScalarType type = ScalarType::Float32;
+  bool is_list = false;
+  ScalarType count_type = ScalarType::UInt8;  // lists only
+  std::vector<double> values;
+  std::vector<std::size_t> offsets;           // lists only, size count + 1
+
+  std::size_t list_size(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
+};
+
+struct PlyElement {
+  std::string name;
+  std::size_t count = 0;
+  std::vector<PlyProperty> properties;
+
+  // Index of the property called `name`, or -1.
+  int find(const std::string& property_name) const;
+};
+
+// A mesh as the command uses it: triangles, optional patch ids and constraints, and everything
+// else from the file kept for pass-through.
+struct MeshFile {
+  std::vector<std::array<double, 3>> positions;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> patch;           // per triangle; empty = the file has no patch ids
+  std::vector<char> constrained;    // per vertex; empty = the file selects no vertex
+  // Vertex properties other than x, y, z (one value per vertex, or lists).
+  std::vector<PlyProperty> vertex_extra;
+  // Face properties other than the index list (one entry per output triangle: a polygon's
+  // scalars are repeated on each of its triangles; per-corner lists are split per triangle).
+  std::vector<PlyProperty> face_extra;
+  std::vector<PlyElement> other_elements;  // elements other than vertex and face, as read
+  std::vector<std::string> comments;       // PLY "comment" lines
+  std::vector<std::string> obj_info;       // PLY "obj_info" lines
+  std::vector<std::string> notes;          // remarks for the user (e.g. polygons triangulated)
+};
+
+}  // namespace qd::meshio

@@ -1,0 +1,149 @@
+#include "obj_reader.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+#include "error.h"
+#include "text_scan.h"
+#include "triangulate.h"
+
+namespace qd::meshio {
+
+namespace {
+
+[[noreturn]] void fail(int line, const std::string& message) {
+  throw Error("OBJ line " + std::to_string(line) + ": " + message);
+}
+
+// Everything gathered while scanning, before triangulation.
+struct ObjScan {
+  std::vector<std::array<double, 2>> uv;
+  PlyProperty corners;      // vertex index lists, one per face
+  PlyProperty corner_uv;    // u v per corner, one list per face
+  bool all_faces_have_uv = true;
+  std::vector<int> face_group;
+  std::map<std::string, int> group_ids;
+  int current_group = -1;   // -1 = no g/o line seen yet: the unnamed group
+  std::size_t ignored = 0;  // l / p / unknown statements
+};
+
+// Resolves a 1-based (or negative, relative) OBJ index against `count` items seen so far.
+std::size_t resolve_index(std::string_view token, std::size_t count, int line, const char* what) {
+  long long i = 0;
+  if (!parse_integer(token, i) || i == 0)
+    fail(line, "'" + std::string(token) + "' is not a valid " + what + " index");
+  const long long resolved = i > 0 ? i - 1 : static_cast<long long>(count) + i;
+  if (resolved < 0 || resolved >= static_cast<long long>(count))
+    fail(line, std::string(what) + " index " + std::to_string(i) + " is out of range (" +
+                   std::to_string(count) + " defined so far)");
+  return static_cast<std::size_t>(resolved);
+}
+
+std::array<double, 3> parse_vertex(const std::vector<std::string_view>& w, int line) {
+  if (w.size() < 4) fail(line, "a vertex needs 3 coordinates");
+  std::array<double, 3> p{};
+  for (std::size_t k = 0; k < 3; ++k)
+    if (!parse_number(w[k + 1], p[k]) || !std::isfinite(p[k]))
+      fail(line, "vertex coordinate '" + std::string(w[k + 1]) + "' is not a finite number");
+  return p;
+}
+
+void parse_face(const std::vector<std::string_view>& w, int line, std::size_t vertex_count,
+                ObjScan& scan) {
+  if (w.size() < 4) fail(line, "a face needs at least 3 corners");
+  bool face_has_uv = true;
+  std::vector<double> uv;
+  for (std::size_t k = 1; k < w.size(); ++k) {
+    const std::string_view corner = w[k];
+    const std::size_t slash = corner.find('/');
+    scan.corners.values.push_back(static_cast<double>(
+        resolve_index(corner.substr(0, slash), vertex_count, line, "vertex")));
+    const std::string_view rest =
+        slash == std::string_view::npos ? std::string_view() : corner.substr(slash + 1);
+    const std::string_view vt = rest.substr(0, rest.find('/'));
+    if (vt.empty()) {
+      face_has_uv = false;
+      continue;
+    }
+    const std::array<double, 2>& t = scan.uv[resolve_index(vt, scan.uv.size(), line, "texture")];
+    uv.insert(uv.end(), t.begin(), t.end());
+  }
+  scan.corners.offsets.push_back(scan.corners.values.size());
+  scan.all_faces_have_uv = scan.all_faces_have_uv && face_has_uv;
+  if (face_has_uv) scan.corner_uv.values.insert(scan.corner_uv.values.end(), uv.begin(), uv.end());
+  scan.corner_uv.offsets.push_back(scan.corner_uv.values.size());
+  scan.face_group.push_back(scan.current_group);
+}
+
+void parse_group(std::string_view line, ObjScan& scan) {
+  const std::vector<std::string_view> w = split_words(line);
+  std::string name;
+  for (std::size_t k = 1; k < w.size(); ++k) name += (k > 1 ? " " : "") + std::string(w[k]);
+  const auto [it, added] = scan.group_ids.emplace(name, static_cast<int>(scan.group_ids.size()));
+  scan.current_group = it->second;
+}
+
+// Numbers groups by first appearance on a face (the unnamed group included).
+std::vector<int> patch_ids_by_first_face(const std::vector<int>& face_group) {
+  std::map<int, int> id_of;
+  std::vector<int> ids;
+  ids.reserve(face_group.size());
+  for (int g : face_group) {
+    const auto [it, added] = id_of.emplace(g, static_cast<int>(id_of.size()));
+    ids.push_back(it->second);
+  }
+  return ids;
+}
+
+}  // namespace
+
+MeshFile parse_obj(std::string_view bytes) {
+  MeshFile mesh;
+  ObjScan scan;
+  scan.corners.name = "vertex_indices";
+  scan.corners.is_list = true;
+  scan.corners.type = ScalarType::Int32;
+  scan.corners.offsets.assign(1, 0);
+  scan.corner_uv.name = "texcoord";
+  scan.corner_uv.is_list = true;
+  scan.corner_uv.offsets.assign(1, 0);
+  std::size_t pos = 0;
+  std::string_view line;
+  int line_no = 0;
+  while (next_line(bytes, pos, line)) {
+    ++line_no;
+    const std::vector<std::string_view> w = split_words(line.substr(0, line.find('#')));
+    if (w.empty()) continue;
+    if (w[0] == "v") {
+      mesh.positions.push_back(parse_vertex(w, line_no));
+    } else if (w[0] == "vt") {
+      std::array<double, 2> t{};
+      if (w.size() < 3 || !parse_number(w[1], t[0]) || !parse_number(w[2], t[1]))
+        fail(line_no, "a texture coordinate needs 2 numbers");
+      scan.uv.push_back(t);
+    } else if (w[0] == "f") {
+      parse_face(w, line_no, mesh.positions.size(), scan);
+    } else if (w[0] == "g" || w[0] == "o") {
+      parse_group(line.substr(0, line.find('#')), scan);
+    } else if (w[0] == "l" || w[0] == "p") {
+      ++scan.ignored;
+    }
+  }
+  const std::size_t faces = scan.face_group.size();
+  std::vector<PlyProperty> columns;
+  if (scan.all_faces_have_uv) columns.push_back(std::move(scan.corner_uv));
+  else if (!scan.uv.empty())
+    mesh.notes.push_back("texture coordinates dropped: not every face has them");
+  const std::vector<std::size_t> source =
+      add_faces(scan.corners, faces, mesh.positions.size(), columns, mesh);
+  if (!scan.group_ids.empty()) {
+    const std::vector<int> ids = patch_ids_by_first_face(scan.face_group);
+    for (std::size_t s : source) mesh.patch.push_back(ids[s]);
+  }
+  if (scan.ignored > 0)
+    mesh.notes.push_back(std::to_string(scan.ignored) + " OBJ line/point statement(s) ignored");
+  return mesh;
+}
+
+}  // namespace qd::meshio

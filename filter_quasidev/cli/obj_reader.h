@@ -1,0 +1,19 @@
+// Wavefront OBJ reader for the command.
+// Input: the file's bytes. Output: a MeshFile with positions (`v`, extra values such as colours
+// ignored), triangles (`f` with v, v/vt, v//vn or v/vt/vn corners, negative = relative indices;
+// polygons fan-triangulated), per-corner `texcoord` (2 floats per corner, from `vt`) when every
+// face has texture coordinates, and patch ids from `g` / `o` groups numbered 0, 1, ... in order
+// of first appearance (faces before any group form their own group). No patch ids without
+// groups. Normals, materials, lines and points are ignored (a note says so).
+// Throws qd::Error "OBJ line N: ..." on malformed or out-of-range data.
+#pragma once
+
+#include <string_view>
+
+#include "mesh_file.h"
+
+namespace qd::meshio {
+
+MeshFile parse_obj(std::string_view bytes);
+
+}  // namespace qd::meshio

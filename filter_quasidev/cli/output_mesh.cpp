@@ -1,0 +1,120 @@
+#include "output_mesh.h"
+
+#include <cmath>
+#include <string>
+
+#include "error.h"
+
+namespace qd::meshio {
+
+namespace {
+
+PlyProperty scalar_column(const std::string& name, ScalarType type, std::vector<double> values) {
+  PlyProperty p;
+  p.name = name;
+  p.type = type;
+  p.values = std::move(values);
+  return p;
+}
+
+bool is_color(const std::string& name) {
+  return name == "red" || name == "green" || name == "blue" || name == "alpha";
+}
+
+// Area-weighted vertex normals of the new positions (unit length; zero where undefined).
+std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh,
+                                                  const std::vector<std::array<double, 3>>& V) {
+  std::vector<std::array<double, 3>> n(V.size(), {0, 0, 0});
+  for (const std::array<int, 3>& t : mesh.triangles) {
+    const auto& a = V[static_cast<std::size_t>(t[0])];
+    const auto& b = V[static_cast<std::size_t>(t[1])];
+    const auto& c = V[static_cast<std::size_t>(t[2])];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double cross[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                             u[0] * v[1] - u[1] * v[0]};  // twice the area times the normal
+    for (int corner : t)
+      for (std::size_t k = 0; k < 3; ++k) n[static_cast<std::size_t>(corner)][k] += cross[k];
+  }
+  for (auto& x : n) {
+    const double length = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    if (length > 0)
+      for (double& c : x) c /= length;
+  }
+  return n;
+}
+
+PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
+  const std::size_t nv = mesh.positions.size();
+  if (fields.positions.size() != nv || (!fields.quality.empty() && fields.quality.size() != nv) ||
+      (!fields.colors.empty() && fields.colors.size() != nv))
+    throw Error("internal error: output fields do not have one value per vertex");
+  PlyElement e;
+  e.name = "vertex";
+  e.count = nv;
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::vector<double> c(nv);
+    for (std::size_t i = 0; i < nv; ++i) c[i] = fields.positions[i][k];
+    e.properties.push_back(scalar_column(std::string(1, "xyz"[k]), ScalarType::Float64, c));
+  }
+  const bool normals = mesh.vertex_extra.size() >= 3;  // checked per name below
+  std::vector<std::array<double, 3>> n;
+  for (const PlyProperty& p : mesh.vertex_extra) {
+    if ((p.name == "quality" && !fields.quality.empty()) ||
+        (is_color(p.name) && !fields.colors.empty()))
+      continue;
+    e.properties.push_back(p);
+    const int axis = p.name == "nx" ? 0 : p.name == "ny" ? 1 : p.name == "nz" ? 2 : -1;
+    if (axis < 0 || p.is_list || !normals) continue;
+    if (n.empty()) n = vertex_normals(mesh, fields.positions);
+    for (std::size_t i = 0; i < nv; ++i)
+      e.properties.back().values[i] = n[i][static_cast<std::size_t>(axis)];
+  }
+  if (!fields.quality.empty())
+    e.properties.push_back(scalar_column("quality", ScalarType::Float64, fields.quality));
+  if (!fields.colors.empty()) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      std::vector<double> c(nv);
+      for (std::size_t i = 0; i < nv; ++i) c[i] = fields.colors[i][k];
+      const char* names[] = {"red", "green", "blue"};
+      e.properties.push_back(scalar_column(names[k], ScalarType::UInt8, c));
+    }
+    e.properties.push_back(scalar_column("alpha", ScalarType::UInt8, std::vector<double>(nv, 255)));
+  }
+  return e;
+}
+
+PlyElement face_element(const MeshFile& mesh) {
+  PlyElement e;
+  e.name = "face";
+  e.count = mesh.triangles.size();
+  PlyProperty indices;
+  indices.name = "vertex_indices";
+  indices.is_list = true;
+  indices.count_type = ScalarType::UInt8;
+  indices.type = ScalarType::Int32;
+  indices.offsets.reserve(e.count + 1);
+  indices.offsets.push_back(0);
+  for (const std::array<int, 3>& t : mesh.triangles) {
+    indices.values.insert(indices.values.end(), t.begin(), t.end());
+    indices.offsets.push_back(indices.values.size());
+  }
+  e.properties.push_back(std::move(indices));
+  e.properties.insert(e.properties.end(), mesh.face_extra.begin(), mesh.face_extra.end());
+  return e;
+}
+
+}  // namespace
+
+PlyFile output_ply(const MeshFile& mesh, const OutputFields& fields) {
+  PlyFile ply;
+  ply.format = PlyFormat::BinaryLittleEndian;
+  ply.comments = mesh.comments;
+  ply.obj_info = mesh.obj_info;
+  ply.elements.push_back(vertex_element(mesh, fields));
+  ply.elements.push_back(face_element(mesh));
+  ply.elements.insert(ply.elements.end(), mesh.other_elements.begin(), mesh.other_elements.end());
+  return ply;
+}
+
+}  // namespace qd::meshio

@@ -1,0 +1,19 @@
+// From PLY tables to the mesh the command works on.
+// Input: a parsed PlyFile. Output: a MeshFile with positions (vertex x, y, z), triangles (face
+// vertex_indices or vertex_index, polygons fan-triangulated), patch ids (face `quality` rounded,
+// else an integer face `patch`), constrained vertices (vertex `flags` bit 0x20, MeshLab's
+// selection) and every other property and element kept for pass-through.
+// Throws qd::Error when the vertex or face element or a coordinate is missing or unusable.
+#pragma once
+
+#include "mesh_file.h"
+#include "ply_file.h"
+
+namespace qd::meshio {
+
+// vcg's selection bit in the PLY vertex `flags` property.
+constexpr int kSelectedFlag = 0x20;
+
+MeshFile mesh_from_ply(PlyFile ply);
+
+}  // namespace qd::meshio

@@ -1,0 +1,289 @@
+#include "ply_reader.h"
+
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "error.h"
+#include "scalar_value.h"
+#include "text_scan.h"
+
+namespace qd::meshio {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& message) { throw Error("PLY: " + message); }
+
+bool parse_type(std::string_view word, ScalarType& type) {
+  static const std::pair<const char*, ScalarType> names[] = {
+      {"char", ScalarType::Int8},      {"int8", ScalarType::Int8},
+      {"uchar", ScalarType::UInt8},    {"uint8", ScalarType::UInt8},
+      {"short", ScalarType::Int16},    {"int16", ScalarType::Int16},
+      {"ushort", ScalarType::UInt16},  {"uint16", ScalarType::UInt16},
+      {"int", ScalarType::Int32},      {"int32", ScalarType::Int32},
+      {"uint", ScalarType::UInt32},    {"uint32", ScalarType::UInt32},
+      {"float", ScalarType::Float32},  {"float32", ScalarType::Float32},
+      {"double", ScalarType::Float64}, {"float64", ScalarType::Float64}};
+  for (const auto& [name, t] : names)
+    if (word == name) {
+      type = t;
+      return true;
+    }
+  return false;
+}
+
+std::string rest_of_line(std::string_view line, std::string_view keyword) {
+  std::string_view rest = line.substr(line.find(keyword) + keyword.size());
+  if (!rest.empty() && (rest.front() == ' ' || rest.front() == '\t')) rest.remove_prefix(1);
+  return std::string(rest);
+}
+
+void parse_property_line(const std::vector<std::string_view>& w, int line_no, PlyFile& ply) {
+  const std::string at = "header line " + std::to_string(line_no) + ": ";
+  if (ply.elements.empty()) fail(at + "property before any element");
+  PlyProperty p;
+  const bool list = w.size() >= 2 && w[1] == "list";
+  if (list ? w.size() != 5 : w.size() != 3)
+    fail(at + "expected 'property TYPE NAME' or 'property list COUNTTYPE TYPE NAME'");
+  p.is_list = list;
+  if (list && !parse_type(w[2], p.count_type))
+    fail(at + "unknown list count type '" + std::string(w[2]) + "'");
+  if (list && (p.count_type == ScalarType::Float32 || p.count_type == ScalarType::Float64))
+    fail(at + "a list count type must be an integer type, not '" + std::string(w[2]) + "'");
+  const std::string_view type_word = w[list ? 3 : 1];
+  if (!parse_type(type_word, p.type))
+    fail(at + "unknown property type '" + std::string(type_word) + "'");
+  p.name = std::string(w.back());
+  PlyElement& element = ply.elements.back();
+  if (element.find(p.name) >= 0)
+    fail(at + "property '" + p.name + "' appears twice in element '" + element.name + "'");
+  element.properties.push_back(std::move(p));
+}
+
+void parse_element_line(const std::vector<std::string_view>& w, int line_no, PlyFile& ply) {
+  const std::string at = "header line " + std::to_string(line_no) + ": ";
+  if (w.size() != 3) fail(at + "expected 'element NAME COUNT'");
+  std::uint64_t count = 0;
+  const auto [end, ec] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), count);
+  if (ec != std::errc() || end != w[2].data() + w[2].size())
+    fail(at + "element count '" + std::string(w[2]) + "' is not a non-negative integer");
+  if (ply.find(std::string(w[1])))
+    fail(at + "element '" + std::string(w[1]) + "' appears twice");
+  PlyElement e;
+  e.name = std::string(w[1]);
+  e.count = static_cast<std::size_t>(count);
+  ply.elements.push_back(std::move(e));
+}
+
+// Reads the header; returns the offset of the first data byte.
+std::size_t parse_header(std::string_view bytes, PlyFile& ply) {
+  std::size_t pos = 0;
+  std::string_view line;
+  if (!next_line(bytes, pos, line) || line != "ply")
+    fail("the file does not start with 'ply' (not a PLY file, or empty)");
+  int line_no = 1;
+  bool have_format = false;
+  while (next_line(bytes, pos, line)) {
+    ++line_no;
+    const std::vector<std::string_view> w = split_words(line);
+    if (w.empty()) continue;
+    const std::string at = "header line " + std::to_string(line_no) + ": ";
+    if (w[0] == "end_header") {
+      if (!have_format) fail(at + "end_header before the format line");
+      return pos;
+    } else if (w[0] == "comment") {
+      ply.comments.push_back(rest_of_line(line, "comment"));
+    } else if (w[0] == "obj_info") {
+      ply.obj_info.push_back(rest_of_line(line, "obj_info"));
+    } else if (w[0] == "format") {
+      if (w.size() != 3 || w[2] != "1.0") fail(at + "expected 'format KIND 1.0'");
+      if (w[1] == "ascii") ply.format = PlyFormat::Ascii;
+      else if (w[1] == "binary_little_endian") ply.format = PlyFormat::BinaryLittleEndian;
+      else if (w[1] == "binary_big_endian") ply.format = PlyFormat::BinaryBigEndian;
+      else fail(at + "unknown format '" + std::string(w[1]) + "'");
+      have_format = true;
+    } else if (w[0] == "element") {
+      parse_element_line(w, line_no, ply);
+    } else if (w[0] == "property") {
+      parse_property_line(w, line_no, ply);
+    } else {
+      fail(at + "unknown keyword '" + std::string(w[0]) + "'");
+    }
+  }
+  fail("the header is not terminated by 'end_header' (file truncated?)");
+}
+
+std::string element_place(const PlyElement& e, std::size_t i, const PlyProperty& p) {
+  return "property '" + p.name + "' of " + e.name + " " + std::to_string(i) + " (of " +
+         std::to_string(e.count) + ")";
+}
+
+// Data source for ascii files: whitespace-separated tokens, line numbers for messages.
+class AsciiSource {
+ public:
+  AsciiSource(std::string_view bytes, std::size_t pos, int line)
+      : bytes_(bytes), pos_(pos), line_(line) {}
+
+  // Each value takes at least one character and a separator.
+  std::size_t min_bytes(ScalarType) const { return 2; }
+  std::size_t remaining() const { return bytes_.size() - pos_ + 1; }
+
+  double read(ScalarType type, const std::string& place) {
+    const std::string_view token = next_token(place);
+    double value = 0;
+    if (!parse_number(token, value) || !fits_scalar_type(type, value))
+      fail("line " + std::to_string(line_) + ": '" + std::string(token.substr(0, 40)) +
+           "' is not a valid " + scalar_type_name(type) + " for " + place);
+    return value;
+  }
+
+  void expect_end() {
+    skip_space();
+    if (pos_ < bytes_.size())
+      fail("line " + std::to_string(line_) +
+           ": unexpected data after the last element (do the header's element counts match the "
+           "data?)");
+  }
+
+ private:
+  void skip_space() {
+    while (pos_ < bytes_.size() && is_space(bytes_[pos_])) {
+      if (bytes_[pos_] == '\n') ++line_;
+      ++pos_;
+    }
+  }
+
+  std::string_view next_token(const std::string& place) {
+    skip_space();
+    if (pos_ >= bytes_.size())
+      fail("the data ends early (line " + std::to_string(line_) + "): missing " + place);
+    const std::size_t start = pos_;
+    while (pos_ < bytes_.size() && !is_space(bytes_[pos_])) ++pos_;
+    return bytes_.substr(start, pos_ - start);
+  }
+
+  std::string_view bytes_;
+  std::size_t pos_;
+  int line_;
+};
+
+// Data source for binary files, either byte order; byte offsets for messages.
+class BinarySource {
+ public:
+  BinarySource(std::string_view bytes, std::size_t pos, bool big_endian)
+      : bytes_(bytes), pos_(pos), swap_(big_endian) {}
+
+  std::size_t min_bytes(ScalarType type) const { return scalar_type_size(type); }
+  std::size_t remaining() const { return bytes_.size() - pos_; }
+
+  double read(ScalarType type, const std::string& place) {
+    const std::size_t size = scalar_type_size(type);
+    if (bytes_.size() - pos_ < size)
+      fail("truncated binary data at byte " + std::to_string(pos_) + ": missing " + place);
+    unsigned char raw[8];
+    std::memcpy(raw, bytes_.data() + pos_, size);
+    if (swap_)
+      for (std::size_t i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
+    pos_ += size;
+    return decode(type, raw);
+  }
+
+  void expect_end() const {
+    if (pos_ < bytes_.size())
+      fail(std::to_string(bytes_.size() - pos_) + " unexpected bytes after the last element at byte " +
+           std::to_string(pos_) + " (do the header's element counts match the data?)");
+  }
+
+ private:
+  template <typename T>
+  static double as(const unsigned char* raw) {
+    T v;
+    std::memcpy(&v, raw, sizeof v);
+    return static_cast<double>(v);
+  }
+
+  static double decode(ScalarType type, const unsigned char* raw) {
+    switch (type) {
+      case ScalarType::Int8: return as<std::int8_t>(raw);
+      case ScalarType::UInt8: return as<std::uint8_t>(raw);
+      case ScalarType::Int16: return as<std::int16_t>(raw);
+      case ScalarType::UInt16: return as<std::uint16_t>(raw);
+      case ScalarType::Int32: return as<std::int32_t>(raw);
+      case ScalarType::UInt32: return as<std::uint32_t>(raw);
+      case ScalarType::Float32: return as<float>(raw);
+      case ScalarType::Float64: return as<double>(raw);
+    }
+    return 0;
+  }
+
+  std::string_view bytes_;
+  std::size_t pos_;
+  bool swap_;
+};
+
+// Refuses counts the remaining bytes cannot hold, before anything is allocated.
+template <typename Source>
+void check_count_fits(const PlyElement& e, const Source& source) {
+  std::size_t per_element = 0;
+  for (const PlyProperty& p : e.properties)
+    per_element += source.min_bytes(p.is_list ? p.count_type : p.type);
+  if (per_element > 0 && e.count > source.remaining() / per_element)
+    fail("the header declares " + std::to_string(e.count) + " '" + e.name +
+         "' elements, but only " + std::to_string(source.remaining()) +
+         " bytes of data remain (wrong count or truncated file)");
+}
+
+template <typename Source>
+void read_element(PlyElement& e, Source& source) {
+  if (e.properties.empty()) return;  // nothing stored, nothing to read
+  check_count_fits(e, source);
+  for (PlyProperty& p : e.properties) {
+    p.values.reserve(e.count);
+    if (p.is_list) p.offsets.assign(1, 0);
+  }
+  for (std::size_t i = 0; i < e.count; ++i) {
+    for (PlyProperty& p : e.properties) {
+      if (!p.is_list) {
+        p.values.push_back(source.read(p.type, element_place(e, i, p)));
+        continue;
+      }
+      const double n = source.read(p.count_type, "list length of " + element_place(e, i, p));
+      if (n < 0) fail("negative list length for " + element_place(e, i, p));
+      const auto length = static_cast<std::size_t>(n);
+      if (length > source.remaining() / source.min_bytes(p.type))
+        fail("list length " + std::to_string(length) + " of " + element_place(e, i, p) +
+             " exceeds the remaining data (truncated or corrupt file)");
+      for (std::size_t k = 0; k < length; ++k)
+        p.values.push_back(source.read(p.type, element_place(e, i, p)));
+      p.offsets.push_back(p.values.size());
+    }
+  }
+}
+
+template <typename Source>
+void read_body(PlyFile& ply, Source source) {
+  for (PlyElement& e : ply.elements) read_element(e, source);
+  source.expect_end();
+}
+
+int count_lines(std::string_view bytes, std::size_t end) {
+  int lines = 1;
+  for (std::size_t i = 0; i < end; ++i)
+    if (bytes[i] == '\n') ++lines;
+  return lines;
+}
+
+}  // namespace
+
+PlyFile parse_ply(std::string_view bytes) {
+  PlyFile ply;
+  const std::size_t data = parse_header(bytes, ply);
+  if (ply.format == PlyFormat::Ascii)
+    read_body(ply, AsciiSource(bytes, data, count_lines(bytes, data)));
+  else
+    read_body(ply, BinarySource(bytes, data, ply.format == PlyFormat::BinaryBigEndian));
+  return ply;
+}
+
+}  // namespace qd::meshio

@@ -1,0 +1,15 @@
+// PLY writer. serialize_ply turns tables into the bytes of a PLY file in any of the three
+// formats (the command writes binary little-endian; the others serve round-trip tests).
+// Throws qd::Error if a value does not fit its declared type (e.g. a list longer than its
+// count type allows).
+#pragma once
+
+#include <string>
+
+#include "ply_file.h"
+
+namespace qd::meshio {
+
+std::string serialize_ply(const PlyFile& ply, PlyFormat format);
+
+}  // namespace qd::meshio

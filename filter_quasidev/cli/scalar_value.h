@@ -1,0 +1,12 @@
+// Checks that a value can be stored in a PLY scalar type without change.
+#pragma once
+
+#include "mesh_file.h"
+
+namespace qd::meshio {
+
+// True when `value` is representable in `type`: integer types need an integral value within
+// their range; float accepts any value whose magnitude fits (or a non-finite one); double any.
+bool fits_scalar_type(ScalarType type, double value);
+
+}  // namespace qd::meshio

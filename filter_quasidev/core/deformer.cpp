@@ -1,0 +1,115 @@
+#include "deformer.h"
+
+#include <cmath>
+#include <numeric>
+
+#include "deformation_system.h"
+#include "metrics.h"
+
+namespace qd {
+namespace {
+
+std::vector<int> all_indices(Eigen::Index n) {
+  std::vector<int> v(static_cast<size_t>(n));
+  std::iota(v.begin(), v.end(), 0);
+  return v;
+}
+
+// Decrease ratio of Eqs. (19)–(20), percent; 0 when there was nothing left to decrease.
+double decrease_ratio(double before, double after) {
+  return before > 0 ? 100.0 * (before - after) / before : 0.0;
+}
+
+}  // namespace
+
+Positions clamp_step(const GroupMesh& group, const Positions& current, const Positions& proposed,
+                     ToleranceMode mode) {
+  Positions out = proposed;
+  const Positions& origin = mode == ToleranceMode::Step ? current : group.V0;
+  for (Eigen::Index v = 0; v < out.rows(); ++v) {
+    const Vec3 d = (out.row(v) - origin.row(v)).transpose();
+    const double limit = group.tolerance[static_cast<size_t>(v)];
+    const double len = d.norm();
+    if (len > limit) out.row(v) = origin.row(v) + (d * (limit / len)).transpose();
+  }
+  return out;
+}
+
+int flipped_faces(const Triangles& F, const Positions& V0, const Positions& V) {
+  int flipped = 0;
+  for (Eigen::Index f = 0; f < F.rows(); ++f) {
+    auto cross = [&](const Positions& P) {
+      const Vec3 a = P.row(F(f, 0)), b = P.row(F(f, 1)), c = P.row(F(f, 2));
+      return Vec3((b - a).cross(c - a));
+    };
+    if (cross(V0).dot(cross(V)) <= 0) ++flipped;
+  }
+  return flipped;
+}
+
+DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
+                     const Retarget& retarget, const Params& params, double ae,
+                     const std::function<void(double)>& progress) {
+  const std::vector<int> faces = all_indices(group.F.rows());
+  const std::vector<int> vertices = all_indices(group.V0.rows());
+  auto figures = [&](const Positions& X, const std::vector<Vec3>& t) {
+    return measure(group.V0, X, group.F, group.owned, faces, t, vertices);
+  };
+
+  DeformationSystem system(group, params.weight, params.anchor, ae);
+  std::vector<Vec3> current_targets = targets;
+  system.set_targets(current_targets);  // Algorithm 1, steps 2.1–2.3
+
+  DeformOutcome out;
+  out.V = group.V0;
+  out.stop_reason = "maxIter reached";
+  for (int it = 1; it <= params.max_iter; ++it) {
+    if (it > 1 && params.targets != TargetMode::Fixed) {
+      current_targets = retarget(out.V);
+      system.set_targets(current_targets);
+    }
+    const Figures before = figures(out.V, current_targets);
+    // Steps 2.4.1–2.4.3: new right-hand side, back substitution, tolerance check.
+    const Positions step = clamp_step(group, out.V, system.solve(out.V), params.tolerance_mode);
+
+    IterationReport report;
+    report.iteration = it;
+    bool accepted = false;
+    for (double scale = 1.0; scale >= 0.25; scale *= 0.5) {
+      const Positions candidate = out.V + scale * (step - out.V);
+      const int flips = flipped_faces(group.F, group.V0, candidate);
+      const Figures after = figures(candidate, current_targets);
+      if (flips == 0 && after.g_abd <= before.g_abd) {
+        report.figures = after;
+        report.step_scale = scale;
+        out.V = candidate;
+        accepted = true;
+        break;
+      }
+      report.note += (report.note.empty() ? "" : "; ") + std::string("step ×") +
+                     std::to_string(scale).substr(0, 4) +
+                     (flips ? " flips " + std::to_string(flips) + " face(s)" : " raises G_ABD");
+    }
+    if (!accepted) {
+      out.stop_reason = "never-worse rule: iteration " + std::to_string(it) + " rejected (" +
+                        report.note + ")";
+      break;
+    }
+    report.ratio_abd = decrease_ratio(before.g_abd, report.figures.g_abd);  // Eq. (19)
+    report.ratio_obd = decrease_ratio(before.obd, report.figures.obd);      // Eq. (20)
+    out.history.push_back(report);
+    if (progress) progress(static_cast<double>(it) / params.max_iter);
+    if (report.ratio_abd < params.stop_abd) {
+      out.stop_reason = "ratio_ABD below δ_ABD";
+      break;
+    }
+    if (report.ratio_obd < params.stop_obd) {
+      out.stop_reason = "ratio_OBD below δ_OBD";
+      break;
+    }
+  }
+  out.factorizations = system.factorizations();
+  return out;
+}
+
+}  // namespace qd

@@ -1,0 +1,24 @@
+// Triangle mesh and the small helpers every engine step shares.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace qd {
+
+using Vec3 = Eigen::Vector3d;
+using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3>;  // one row per vertex
+using Triangles = Eigen::Matrix<int, Eigen::Dynamic, 3>;     // one row per face, vertex indices
+
+// Unit normal of face f (zero vector for a zero-area face).
+Vec3 face_normal(const Positions& V, const Triangles& F, int f);
+
+// Area of face f.
+double face_area(const Positions& V, const Triangles& F, int f);
+
+// Average edge length AE over the given faces (each undirected edge counted once).
+// faces empty = all faces.
+double average_edge_length(const Positions& V, const Triangles& F,
+                           const std::vector<int>& faces = {});
+
+}  // namespace qd

@@ -1,0 +1,39 @@
+// The figures of DESIGN.md "Metrics": OBD (Defs. 2–3), discrete Gaussian curvature with the
+// mixed Voronoi area (Eq. 18, Meyer et al. 2003), G_ABD, angle defect, shape difference
+// (Defs. 4–5), displacement.
+#pragma once
+
+#include <vector>
+
+#include "mesh.h"
+#include "result.h"
+
+namespace qd {
+
+// 2π − Σθ_j per vertex (angle defect); only meaningful for interior vertices.
+std::vector<double> angle_defects(const Positions& V, const Triangles& F);
+
+// Mixed Voronoi area A_v per vertex (Meyer et al. 2003), summed over all incident faces.
+std::vector<double> mixed_areas(const Positions& V, const Triangles& F);
+
+// K(v) = (2π − Σθ_j)/A_v (Eq. 18) where interior[v], else 0.
+std::vector<double> gaussian_curvature(const Positions& V, const Triangles& F,
+                                       const std::vector<char>& interior);
+
+// d(t) = Σ|n_t·e_i| (Def. 2, Eq. 1–2) summed over faces (Def. 3, Eq. 3); targets[i] belongs
+// to faces[i].
+double orientation_developability(const Positions& V, const Triangles& F,
+                                  const std::vector<int>& faces, const std::vector<Vec3>& targets);
+
+// S(P) = Σ_t s1 + s2 + s3 (Defs. 4–5, Eqs. 4–7) between original V0 and deformed V.
+double shape_difference(const Positions& V0, const Positions& V, const Triangles& F,
+                        const std::vector<int>& faces);
+
+// All Figures of a vertex/face set: curvature figures over `vertices` (which must be interior),
+// OBD over faces/targets (skipped when targets is empty), shape and displacement against V0
+// over `faces` / `moved` (the vertices whose displacement counts).
+Figures measure(const Positions& V0, const Positions& V, const Triangles& F,
+                const std::vector<int>& vertices, const std::vector<int>& faces,
+                const std::vector<Vec3>& targets, const std::vector<int>& moved);
+
+}  // namespace qd

@@ -1,0 +1,27 @@
+// User parameters of the quasi-developable approximation (DESIGN.md "The algorithm").
+// Lengths are in model units; adapters convert from multiples of the average edge length AE.
+#pragma once
+
+#include <map>
+
+namespace qd {
+
+enum class SeamMode { Fixed, Free };         // seam vertices fixed (paper) or shared unknowns
+enum class ToleranceMode { Step, Total };    // δ_err caps each step (paper) or the total move
+enum class TargetMode { Fixed, Reproject, Refit };  // targets once (paper), re-projected, re-fitted
+
+struct Params {
+  double tolerance = 0.0;                    // δ_err in model units (> 0)
+  std::map<int, double> patch_tolerance;     // per patch id, overrides tolerance
+  ToleranceMode tolerance_mode = ToleranceMode::Step;
+  int max_iter = 10;                         // stop criterion 1
+  double weight = 30.0;                      // w of Eq. (8): developability vs shape rows
+  double anchor = 10.0;                      // α of the MLS soft anchor rows (Eq. 15)
+  SeamMode seams = SeamMode::Fixed;
+  bool keep_boundary = true;                 // open mesh boundary vertices are constrained
+  TargetMode targets = TargetMode::Reproject;
+  double stop_abd = 1.0;                     // δ_ABD, percent (Eq. 19); stop when ratio below
+  double stop_obd = 1.0;                     // δ_OBD, percent (Eq. 20)
+};
+
+}  // namespace qd

@@ -1,0 +1,11 @@
+// Progress reporting: percent in [0, 100] and a short message. May be empty.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace qd {
+
+using Progress = std::function<void(int percent, const std::string& message)>;
+
+}  // namespace qd

@@ -1,0 +1,250 @@
+// Algorithm 1 of the paper over a whole mesh: validation, solve groups (one per patch with fixed
+// seams, one for all patches with free seams), Step 1 per patch, Step 2 per group, reports.
+#include "quasidev.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <numeric>
+
+#include "deformer.h"
+#include "error.h"
+#include "group_mesh.h"
+#include "metrics.h"
+#include "target_normals.h"
+#include "topology.h"
+#include "validate.h"
+
+namespace qd {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// Below this fit residual a planar patch is already developable: nothing to do.
+constexpr double kPlanarResidualDeg = 0.05;
+// Above this fit residual the patch is far from one developable surface: warn.
+constexpr double kFarResidualDeg = 10.0;
+
+// Step 1 for one patch of a group: its faces (local indices) and the fitted Gauss model.
+struct PatchFit {
+  int id = 0;
+  std::vector<int> faces;
+  TargetFit fit;
+  bool planar() const {
+    return fit.model->kind() == "plane" && fit.residual_deg < kPlanarResidualDeg;
+  }
+};
+
+void normals_and_areas(const Positions& X, const Triangles& F, const std::vector<int>& faces,
+                       std::vector<Vec3>& normals, std::vector<double>& areas) {
+  normals.clear();
+  areas.clear();
+  for (int f : faces) {
+    normals.push_back(face_normal(X, F, f));
+    areas.push_back(face_area(X, F, f));
+  }
+}
+
+std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
+  std::map<int, std::vector<int>> faces_of;
+  for (size_t f = 0; f < g.face_patch.size(); ++f)
+    faces_of[g.face_patch[f]].push_back(static_cast<int>(f));
+  std::vector<PatchFit> fits;
+  std::vector<Vec3> normals;
+  std::vector<double> areas;
+  for (auto& [id, faces] : faces_of) {
+    normals_and_areas(X, g.F, faces, normals, areas);
+    PatchFit p;
+    p.id = id;
+    p.faces = faces;
+    try {
+      p.fit = fit_targets(normals, areas);
+    } catch (const Error& e) {
+      throw Error("patch " + std::to_string(id) + ": " + e.what());
+    }
+    fits.push_back(std::move(p));
+  }
+  return fits;
+}
+
+// Target per group face from the per-patch fits.
+std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>& fits) {
+  std::vector<Vec3> t(static_cast<size_t>(g.F.rows()));
+  for (const PatchFit& p : fits)
+    for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = p.fit.targets[k];
+  return t;
+}
+
+// Re-projection (nearest point of the fixed c_3D) or re-fit (Step 1 again) between iterations.
+Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode) {
+  return [&g, &fits, mode](const Positions& X) {
+    if (mode == TargetMode::Refit) return group_targets(g, fit_patches(g, X));
+    std::vector<Vec3> t(static_cast<size_t>(g.F.rows()));
+    for (const PatchFit& p : fits)
+      for (int f : p.faces) t[static_cast<size_t>(f)] = p.fit.model->project(face_normal(X, g.F, f));
+    return t;
+  };
+}
+
+std::vector<int> indices(size_t n) {
+  std::vector<int> v(n);
+  std::iota(v.begin(), v.end(), 0);
+  return v;
+}
+
+std::string format(const char* fmt, double a, double b = 0, double c = 0, double d = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
+  return buf;
+}
+
+std::string patch_log_line(const PatchReport& p, double ae) {
+  std::string s = "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
+                  p.target_kind + format(" fit residual %.2f°, ", p.fit_residual_deg) +
+                  std::to_string(p.iterations) + " iteration(s), " +
+                  format("G_ABD %.1f%% lower, OBD %.1f%% lower, max displacement %.3g AE, %.1f ms",
+                         p.abd_reduction, p.obd_reduction, p.after.max_disp / ae, p.time_ms) +
+                  " (stop: " + p.stop_reason + ")";
+  if (p.fit_residual_deg > kFarResidualDeg)
+    s += format(
+        "; warning: fit residual %.1f° — this patch is far from one developable surface; the "
+        "method assumes near-developable patches: split it into finer patches",
+        p.fit_residual_deg);
+  return s;
+}
+
+}  // namespace
+
+Result approximate(const Problem& problem, const Progress& progress) {
+  const auto t0 = Clock::now();
+  const Topology topo = validate(problem);
+  const Params& params = problem.params;
+  const Positions& V = problem.V;
+  const Triangles& F = problem.F;
+  const size_t nv = static_cast<size_t>(V.rows()), nf = static_cast<size_t>(F.rows());
+  const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
+
+  std::vector<char> interior(nv), constrained(nv);
+  std::vector<int> face_count(nv, 0);
+  for (size_t f = 0; f < nf; ++f)
+    for (int c = 0; c < 3; ++c) ++face_count[static_cast<size_t>(F(static_cast<Eigen::Index>(f), c))];
+  for (size_t v = 0; v < nv; ++v) {
+    interior[v] = topo.used[v] && !topo.boundary[v];
+    constrained[v] = (!problem.constrained.empty() && problem.constrained[v]) ||
+                     (params.keep_boundary && topo.boundary[v]) ||
+                     (params.seams == SeamMode::Fixed && topo.seam[v]);
+  }
+
+  Result r;
+  r.V = V;
+  r.average_edge = average_edge_length(V, F);
+  r.k_before = gaussian_curvature(V, F, interior);
+
+  std::map<int, std::vector<int>> faces_of_patch;
+  for (size_t f = 0; f < nf; ++f) faces_of_patch[patch[f]].push_back(static_cast<int>(f));
+  std::vector<std::vector<int>> groups;
+  if (params.seams == SeamMode::Fixed) {
+    for (auto& [id, faces] : faces_of_patch) groups.push_back(faces);
+  } else {
+    groups.push_back(indices(nf));
+  }
+
+  std::vector<Vec3> initial_target(nf);
+  std::map<int, PatchReport> reports;
+  for (size_t gi = 0; gi < groups.size(); ++gi) {
+    const auto tg = Clock::now();
+    const GroupMesh g =
+        extract_group(V, F, groups[gi], patch, constrained, interior, face_count, params);
+    const std::vector<PatchFit> fits = fit_patches(g, g.V0);
+    const std::vector<Vec3> targets = group_targets(g, fits);
+    for (size_t f = 0; f < targets.size(); ++f)
+      initial_target[static_cast<size_t>(g.global_face[f])] = targets[f];
+
+    bool all_planar = true;
+    for (const PatchFit& p : fits) all_planar = all_planar && p.planar();
+    DeformOutcome outcome;
+    if (all_planar) {
+      outcome.V = g.V0;
+      outcome.stop_reason = "planar: the Gauss image is a point, nothing to do";
+    } else {
+      const auto group_progress = [&](double fraction) {
+        if (progress)
+          progress(static_cast<int>(100.0 * (static_cast<double>(gi) + fraction) /
+                                    static_cast<double>(groups.size())),
+                   "deforming");
+      };
+      outcome = deform(g, targets, make_retarget(g, fits, params.targets), params,
+                       r.average_edge, group_progress);
+    }
+    r.factorizations += outcome.factorizations;
+    for (size_t l = 0; l < g.global_vertex.size(); ++l)
+      r.V.row(g.global_vertex[l]) = outcome.V.row(static_cast<Eigen::Index>(l));
+
+    const double group_ms = ms_since(tg);
+    for (const PatchFit& p : fits) {
+      PatchReport& rep = reports[p.id];
+      rep.id = p.id;
+      rep.target_kind = p.fit.model->kind();
+      rep.fit_residual_deg = p.fit.residual_deg;
+      rep.tolerance = patch_tolerance(params, p.id);
+      rep.iterations = static_cast<int>(outcome.history.size());
+      rep.stop_reason = outcome.stop_reason;
+      rep.history = outcome.history;
+      rep.time_ms = group_ms / static_cast<double>(fits.size());
+    }
+  }
+
+  // Per-patch figures, each patch measured on its own faces and interior vertices.
+  for (auto& [id, faces] : faces_of_patch) {
+    const GroupMesh pm = extract_group(V, F, faces, patch, constrained, interior, face_count, params);
+    Positions after(pm.V0.rows(), 3);
+    for (size_t l = 0; l < pm.global_vertex.size(); ++l)
+      after.row(static_cast<Eigen::Index>(l)) = r.V.row(pm.global_vertex[l]);
+    std::vector<Vec3> t;
+    for (int f : faces) t.push_back(initial_target[static_cast<size_t>(f)]);
+    const std::vector<int> local_faces = indices(faces.size()), local_vertices = indices(pm.global_vertex.size());
+    PatchReport& rep = reports[id];
+    rep.faces = static_cast<int>(faces.size());
+    rep.vertices = static_cast<int>(pm.global_vertex.size());
+    rep.free_vertices = static_cast<int>(std::count(pm.fixed.begin(), pm.fixed.end(), 0));
+    rep.before = measure(pm.V0, pm.V0, pm.F, pm.owned, local_faces, t, local_vertices);
+    rep.after = measure(pm.V0, after, pm.F, pm.owned, local_faces, t, local_vertices);
+    rep.abd_reduction = rep.before.g_abd > 0
+                            ? 100.0 * (rep.before.g_abd - rep.after.g_abd) / rep.before.g_abd
+                            : 0.0;
+    rep.obd_reduction =
+        rep.before.obd > 0 ? 100.0 * (rep.before.obd - rep.after.obd) / rep.before.obd : 0.0;
+    r.patches.push_back(rep);
+    r.log.push_back(patch_log_line(rep, r.average_edge));
+  }
+
+  std::vector<int> interior_list;
+  for (size_t v = 0; v < nv; ++v)
+    if (interior[v]) interior_list.push_back(static_cast<int>(v));
+  const std::vector<int> all_faces = indices(nf), all_vertices = indices(nv);
+  r.k_after = gaussian_curvature(r.V, F, interior);
+  r.displacement.resize(nv);
+  for (size_t v = 0; v < nv; ++v)
+    r.displacement[v] = (r.V.row(static_cast<Eigen::Index>(v)) - V.row(static_cast<Eigen::Index>(v))).norm();
+  r.total_before = measure(V, V, F, interior_list, all_faces, initial_target, all_vertices);
+  r.total_after = measure(V, r.V, F, interior_list, all_faces, initial_target, all_vertices);
+  r.abd_reduction = r.total_before.g_abd > 0 ? 100.0 * (r.total_before.g_abd - r.total_after.g_abd) /
+                                                   r.total_before.g_abd
+                                             : 0.0;
+  r.time_ms = ms_since(t0);
+  r.log.push_back(format("total: G_ABD %.1f%% lower, max displacement %.3g AE, ", r.abd_reduction,
+                         r.total_after.max_disp / r.average_edge) +
+                  std::to_string(r.patches.size()) + " patch(es), " +
+                  std::to_string(r.factorizations) + " factorisation(s), " +
+                  format("%.1f ms", r.time_ms));
+  if (progress) progress(100, "done");
+  return r;
+}
+
+}  // namespace qd

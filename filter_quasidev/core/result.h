@@ -1,0 +1,64 @@
+// Output of the engine: new positions, per-vertex figures, per-patch and total reports.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh.h"
+
+namespace qd {
+
+// Figures of one set of faces/vertices at one moment (DESIGN.md "Metrics").
+struct Figures {
+  double g_abd = 0;          // Σ|K(v)| over owned interior vertices (Eq. 18)
+  double angle_defect = 0;   // Σ|2π − Σθ| over the same vertices (density independent)
+  double max_abs_k = 0;      // max |K(v)|
+  double obd = 0;            // D(P) = Σ d(t) w.r.t. the current targets (Defs. 2–3)
+  double shape = 0;          // S(P) w.r.t. the original positions (Defs. 4–5)
+  double max_disp = 0;       // max |v' − v0|, model units
+  double mean_disp = 0;      // mean |v' − v0| over the group's vertices
+};
+
+struct IterationReport {
+  int iteration = 0;         // 1-based
+  Figures figures;           // after this iteration
+  double ratio_abd = 0;      // Eq. (19), percent, vs the previous iteration
+  double ratio_obd = 0;      // Eq. (20), percent
+  double step_scale = 1;     // 1 = full step; < 1 = shortened by the never-worse rule
+  std::string note;          // why a step was shortened or rejected, if it was
+};
+
+struct PatchReport {
+  int id = 0;
+  int faces = 0;
+  int vertices = 0;
+  int free_vertices = 0;
+  double tolerance = 0;          // δ_err used, model units
+  std::string target_kind;       // "curve", "closed curve", "plane"
+  double fit_residual_deg = 0;   // area-weighted mean angle between n_f and its target
+  int iterations = 0;            // accepted iterations
+  std::string stop_reason;
+  Figures before;
+  Figures after;
+  double abd_reduction = 0;      // (G_before − G_after)/G_before, percent
+  double obd_reduction = 0;      // same for D(P), measured with the initial targets
+  double time_ms = 0;
+  std::vector<IterationReport> history;
+};
+
+struct Result {
+  Positions V;                       // new positions, same order as the input
+  double average_edge = 0;           // AE of the input
+  std::vector<double> k_before;      // K(v) per vertex, 0 on boundary / unused vertices
+  std::vector<double> k_after;
+  std::vector<double> displacement;  // |v' − v0| per vertex
+  std::vector<PatchReport> patches;  // in ascending patch id order
+  Figures total_before;              // whole mesh
+  Figures total_after;
+  double abd_reduction = 0;          // whole mesh, percent
+  int factorizations = 0;            // sparse Cholesky numeric factorisations performed
+  double time_ms = 0;
+  std::vector<std::string> log;      // human-readable lines, one per patch plus notes
+};
+
+}  // namespace qd

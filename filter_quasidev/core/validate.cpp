@@ -1,0 +1,205 @@
+// Checks of a Problem before any work (DESIGN.md "Bad input"): each check throws qd::Error
+// with one line saying what is wrong and what to do. All checks are O(n log n).
+#include "validate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <tuple>
+
+#include "error.h"
+
+namespace qd {
+
+namespace {
+
+std::string str(int n) { return std::to_string(n); }
+
+std::string str(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+void check_not_empty(const Problem& p) {
+  if (p.V.rows() == 0) throw Error("The mesh has no vertices: load a triangle mesh first.");
+  if (p.F.rows() == 0)
+    throw Error("The mesh has no faces (a point cloud?): the filter needs a triangle mesh; "
+                "reconstruct a surface first.");
+}
+
+void check_sizes(const Problem& p) {
+  if (!p.patch.empty() && p.patch.size() != static_cast<size_t>(p.F.rows()))
+    throw Error("Got " + std::to_string(p.patch.size()) + " patch ids for " + str(int(p.F.rows())) +
+                " faces: give one patch id per face, or none for a single patch.");
+  if (!p.constrained.empty() && p.constrained.size() != static_cast<size_t>(p.V.rows()))
+    throw Error("Got " + std::to_string(p.constrained.size()) + " constrained flags for " +
+                str(int(p.V.rows())) + " vertices: give one flag per vertex, or none.");
+}
+
+bool positive(double x) { return std::isfinite(x) && x > 0; }
+
+void check_percent(const char* name, double x) {
+  if (!std::isfinite(x) || x < 0 || x >= 100)
+    throw Error(std::string("The stop threshold ") + name + " is " + str(x) +
+                ": it is a percentage, use a value in [0, 100), e.g. 1.");
+}
+
+void check_params(const Params& q) {
+  if (!positive(q.tolerance))
+    throw Error("The deformation tolerance is " + str(q.tolerance) +
+                ": use a positive distance, e.g. a few tenths of the average edge length.");
+  for (const auto& [id, tol] : q.patch_tolerance)
+    if (!positive(tol))
+      throw Error("The tolerance of patch " + str(id) + " is " + str(tol) +
+                  ": use a positive distance or drop the override.");
+  if (q.max_iter < 1 || q.max_iter > 10000)
+    throw Error("The maximum number of iterations is " + str(q.max_iter) +
+                ": use a value from 1 to 10000, e.g. 10.");
+  if (!positive(q.weight))
+    throw Error("The developability weight w is " + str(q.weight) +
+                ": use a positive value, e.g. 30.");
+  if (!std::isfinite(q.anchor) || q.anchor < 0)
+    throw Error("The anchor weight is " + str(q.anchor) +
+                ": use a value >= 0, e.g. 10 (0 disables the anchor).");
+  check_percent("ABD", q.stop_abd);
+  check_percent("OBD", q.stop_obd);
+}
+
+void check_coordinates(const Positions& V) {
+  int bad = 0;
+  int first = -1;
+  for (int v = 0; v < V.rows(); ++v) {
+    if (V.row(v).allFinite()) continue;
+    if (bad++ == 0) first = v;
+  }
+  if (bad > 0)
+    throw Error("The mesh has " + str(bad) + " vertices with NaN or infinite coordinates (first: "
+                "vertex " + str(first) + "): remove or repair them before running the filter.");
+}
+
+void check_face_indices(const Triangles& F, int vertex_count) {
+  for (int f = 0; f < F.rows(); ++f) {
+    const int a = F(f, 0), b = F(f, 1), c = F(f, 2);
+    for (const int v : {a, b, c})
+      if (v < 0 || v >= vertex_count)
+        throw Error("Face " + str(f) + " refers to vertex " + str(v) + " but the mesh has only " +
+                    str(vertex_count) + " vertices: the file is corrupt; re-export the mesh.");
+    if (a == b || b == c || c == a)
+      throw Error("Face " + str(f) + " uses vertex " + str(a == b || a == c ? a : b) +
+                  " twice: remove degenerate faces first (MeshLab: Filters > Cleaning and "
+                  "Repairing > Remove Zero Area Faces).");
+  }
+}
+
+void check_zero_area(const Positions& V, const Triangles& F) {
+  const double ae = average_edge_length(V, F);
+  const double threshold = kZeroAreaRatio * ae * ae;
+  int bad = 0;
+  int first = -1;
+  for (int f = 0; f < F.rows(); ++f) {
+    if (face_area(V, F, f) >= threshold && threshold > 0) continue;
+    if (bad++ == 0) first = f;
+  }
+  if (bad > 0)
+    throw Error("The mesh has " + str(bad) + " zero-area faces (first: face " + str(first) +
+                "): remove them first (MeshLab: Filters > Cleaning and Repairing > Remove Zero "
+                "Area Faces).");
+}
+
+void check_manifold(const Topology& t) {
+  if (t.nonmanifold_edges > 0)
+    throw Error("The mesh has " + str(t.nonmanifold_edges) +
+                " non-manifold edges (more than two faces; e.g. the edge between vertices " +
+                str(t.first_nonmanifold_edge[0]) + " and " + str(t.first_nonmanifold_edge[1]) +
+                "): repair them first (MeshLab: Filters > Cleaning and Repairing > Repair non "
+                "Manifold Edges).");
+}
+
+int patch_of(const std::vector<int>& patch, int f) { return patch.empty() ? 0 : patch[f]; }
+
+void check_patch_sizes(const Triangles& F, const std::vector<int>& patch) {
+  std::map<int, int> faces;
+  for (int f = 0; f < F.rows(); ++f) ++faces[patch_of(patch, f)];
+  int small = 0;
+  auto first = faces.end();
+  for (auto it = faces.begin(); it != faces.end(); ++it) {
+    if (it->second >= kMinPatchFaces) continue;
+    if (small++ == 0) first = it;
+  }
+  if (small > 0)
+    throw Error("Patch " + str(first->first) + " has only " + str(first->second) +
+                " faces (" + str(small) + " patches have fewer than " + str(kMinPatchFaces) +
+                "): a patch needs at least " + str(kMinPatchFaces) +
+                " faces; merge small patches into their neighbours.");
+}
+
+// Two faces of one patch that run along their shared edge in the same direction are
+// oppositely oriented: sort the directed edges and look for repeats within a patch.
+void check_orientation(const Triangles& F, const std::vector<int>& patch) {
+  struct Directed {
+    int from, to, patch, face;
+  };
+  std::vector<Directed> edges;
+  edges.reserve(3 * static_cast<size_t>(F.rows()));
+  for (int f = 0; f < F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) edges.push_back({F(f, k), F(f, (k + 1) % 3), patch_of(patch, f), f});
+  const auto key = [](const Directed& e) { return std::tie(e.from, e.to, e.patch); };
+  std::sort(edges.begin(), edges.end(),
+            [&](const Directed& x, const Directed& y) { return key(x) < key(y); });
+  int bad = 0;
+  size_t first = 0;
+  for (size_t i = 1; i < edges.size(); ++i) {
+    if (key(edges[i]) != key(edges[i - 1])) continue;
+    if (bad++ == 0) first = i;
+  }
+  if (bad > 0) {
+    const Directed& e = edges[first];
+    throw Error("Patch " + str(e.patch) + " is not consistently oriented (faces " +
+                str(edges[first - 1].face) + " and " + str(e.face) + " run along edge " +
+                str(e.from) + "-" + str(e.to) + " the same way; " + str(bad) +
+                " such edges): fix it first (MeshLab: Filters > Normals, Curvatures and "
+                "Orientation > Re-Orient all faces coherently).");
+  }
+}
+
+void check_free_vertices(const Problem& p, const Topology& t) {
+  const bool fix_seams = p.params.seams == SeamMode::Fixed;
+  int used = 0, selected = 0, seams = 0, boundary = 0;
+  for (size_t v = 0; v < t.used.size(); ++v) {
+    if (!t.used[v]) continue;
+    ++used;
+    const bool is_selected = !p.constrained.empty() && p.constrained[v];
+    const bool is_seam = fix_seams && t.seam[v];
+    const bool is_boundary = p.params.keep_boundary && t.boundary[v];
+    if (!is_selected && !is_seam && !is_boundary) return;
+    selected += is_selected;
+    seams += is_seam;
+    boundary += is_boundary;
+  }
+  throw Error("All " + str(used) + " vertices are constrained (" + str(selected) + " selected, " +
+              str(seams) + " on fixed seams, " + str(boundary) +
+              " on the kept boundary), so nothing can move: select fewer vertices, free the "
+              "seams or let the boundary move.");
+}
+
+}  // namespace
+
+Topology validate(const Problem& problem) {
+  check_not_empty(problem);
+  check_sizes(problem);
+  check_params(problem.params);
+  check_coordinates(problem.V);
+  check_face_indices(problem.F, static_cast<int>(problem.V.rows()));
+  check_zero_area(problem.V, problem.F);
+  Topology topology = analyse_topology(problem.F, static_cast<int>(problem.V.rows()), problem.patch);
+  check_manifold(topology);
+  check_patch_sizes(problem.F, problem.patch);
+  check_orientation(problem.F, problem.patch);
+  check_free_vertices(problem, topology);
+  return topology;
+}
+
+}  // namespace qd

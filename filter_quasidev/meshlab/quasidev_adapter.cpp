@@ -1,0 +1,306 @@
+#include "quasidev_adapter.h"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <limits>
+#include <new>
+#include <set>
+#include <stdexcept>
+
+#if __has_include(<common/ml_document/cmesh.h>)
+#include <common/ml_document/cmesh.h>  // MeshLab 2025.07
+#else
+#include <common/ml_mesh_type.h>  // MeshLab 2020.09
+#endif
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+
+#include "error.h"
+#include "mesh.h"
+#include "quality_range.h"
+#include "quasidev.h"
+
+namespace qdml {
+
+namespace {
+
+// printf-style formatting into a std::string.
+__attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
+  char buffer[512];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buffer, sizeof buffer, fmt, args);
+  va_end(args);
+  return buffer;
+}
+
+// The live (not deleted) part of a CMeshO in engine form, and where each engine vertex lives in
+// m.vert, so results can be written back in place.
+struct EngineMesh {
+  qd::Positions V;
+  qd::Triangles F;
+  std::vector<std::size_t> vertex_slot;  // engine vertex i -> index into m.vert
+  std::vector<std::size_t> face_slot;    // engine face f -> index into m.face
+};
+
+EngineMesh read_geometry(const CMeshO& m) {
+  EngineMesh e;
+  std::vector<int> compact(m.vert.size(), -1);
+  for (std::size_t i = 0; i < m.vert.size(); ++i)
+    if (!m.vert[i].IsD()) {
+      compact[i] = static_cast<int>(e.vertex_slot.size());
+      e.vertex_slot.push_back(i);
+    }
+  for (std::size_t f = 0; f < m.face.size(); ++f)
+    if (!m.face[f].IsD()) e.face_slot.push_back(f);
+  e.V.resize(static_cast<Eigen::Index>(e.vertex_slot.size()), 3);
+  for (std::size_t i = 0; i < e.vertex_slot.size(); ++i)
+    for (int a = 0; a < 3; ++a)
+      e.V(static_cast<Eigen::Index>(i), a) = static_cast<double>(m.vert[e.vertex_slot[i]].cP()[a]);
+  e.F.resize(static_cast<Eigen::Index>(e.face_slot.size()), 3);
+  for (std::size_t f = 0; f < e.face_slot.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      e.F(static_cast<Eigen::Index>(f), k) =
+          compact[static_cast<std::size_t>(vcg::tri::Index(m, m.face[e.face_slot[f]].cV(k)))];
+  return e;
+}
+
+// Patch id per face from the per-face quality, rounded to the nearest integer.
+std::vector<int> read_patch_ids(const CMeshO& m, const EngineMesh& e) {
+  std::vector<int> patch(e.face_slot.size());
+  for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
+    const double q = static_cast<double>(m.face[e.face_slot[f]].cQ());
+    if (!std::isfinite(q) || std::fabs(q) > std::numeric_limits<int>::max())
+      throw qd::Error(format("face %zu has per-face quality %g, which is not a patch id: set the "
+                             "per-face quality to an integer patch id per face",
+                             f, q));
+    patch[f] = static_cast<int>(std::lround(q));
+  }
+  return patch;
+}
+
+// Selected vertices as constrained (1) per engine vertex; empty when none is selected.
+std::vector<char> read_selection(const CMeshO& m, const EngineMesh& e) {
+  std::vector<char> constrained(e.vertex_slot.size(), 0);
+  bool any = false;
+  for (std::size_t i = 0; i < e.vertex_slot.size(); ++i)
+    if (m.vert[e.vertex_slot[i]].IsS()) {
+      constrained[i] = 1;
+      any = true;
+    }
+  if (!any) constrained.clear();
+  return constrained;
+}
+
+std::size_t count_selected(const std::vector<char>& constrained) {
+  std::size_t n = 0;
+  for (char c : constrained) n += c ? 1 : 0;
+  return n;
+}
+
+// Average edge length AE of the live mesh (0 for a mesh without faces).
+double average_edge(const EngineMesh& e) {
+  return e.F.rows() > 0 ? qd::average_edge_length(e.V, e.F) : 0.0;
+}
+
+// Last entry of a patch's iteration history, or an empty report when it did not iterate.
+qd::IterationReport last_iteration(const qd::PatchReport& p) {
+  return p.history.empty() ? qd::IterationReport{} : p.history.back();
+}
+
+// One log line per patch and a total (issue 3, bullet 2): ratio_ABD, ratio_OBD, max
+// displacement in AE, iterations, time.
+std::vector<std::string> summary_lines(const qd::Result& r) {
+  std::vector<std::string> lines;
+  const double ae = r.average_edge > 0 ? r.average_edge : 1.0;
+  int iterations = 0;
+  for (const qd::PatchReport& p : r.patches) {
+    const qd::IterationReport last = last_iteration(p);
+    lines.push_back(format(
+        "patch %d: %d faces, %s fit residual %.1f deg, %d iterations (%s), G_ABD %.4g -> %.4g "
+        "(-%.1f %%), ratio_ABD %.2f %%, ratio_OBD %.2f %%, max displacement %.3f AE, %.0f ms",
+        p.id, p.faces, p.target_kind.c_str(), p.fit_residual_deg, p.iterations,
+        p.stop_reason.c_str(), p.before.g_abd, p.after.g_abd, p.abd_reduction, last.ratio_abd,
+        last.ratio_obd, p.after.max_disp / ae, p.time_ms));
+    iterations = std::max(iterations, p.iterations);
+  }
+  lines.push_back(format("total: %zu patches, G_ABD %.4g -> %.4g (-%.1f %%), max displacement "
+                         "%.3f AE (AE = %g), up to %d iterations, %d factorisations, %.0f ms",
+                         r.patches.size(), r.total_before.g_abd, r.total_after.g_abd,
+                         r.abd_reduction, r.total_after.max_disp / ae, r.average_edge, iterations,
+                         r.factorizations, r.time_ms));
+  return lines;
+}
+
+// Writes the engine's positions, per-vertex quality and (optionally) colours into m, then
+// refreshes normals and the bounding box. Touches nothing else.
+void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Settings& s) {
+  using Scalar = CMeshO::ScalarType;
+  using Quality = CMeshO::VertexType::QualityType;
+  const std::vector<double>& quality = s.displacement_quality ? r.displacement : r.k_after;
+  if (static_cast<std::size_t>(r.V.rows()) != e.vertex_slot.size() ||
+      quality.size() != e.vertex_slot.size())
+    throw std::logic_error("the engine returned a result of the wrong size");
+  const qd::QualityRange range = qd::robust_quality_range(quality);
+  for (std::size_t i = 0; i < e.vertex_slot.size(); ++i) {
+    CMeshO::VertexType& v = m.vert[e.vertex_slot[i]];
+    const auto row = static_cast<Eigen::Index>(i);
+    v.P() = CMeshO::CoordType(static_cast<Scalar>(r.V(row, 0)), static_cast<Scalar>(r.V(row, 1)),
+                              static_cast<Scalar>(r.V(row, 2)));
+    v.Q() = static_cast<Quality>(quality[i]);
+    if (s.colorize) {
+      const std::array<unsigned char, 3> c = qd::ramp_color(quality[i], range);
+      v.C() = vcg::Color4b(c[0], c[1], c[2], 255);
+    }
+  }
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
+  vcg::tri::UpdateBounding<CMeshO>::Box(m);
+}
+
+}  // namespace
+
+std::string filter_name() { return "Quasi-Developable Approximation"; }
+
+std::string python_filter_name() { return "apply_coord_quasi_developable_approximation"; }
+
+std::string filter_info() {
+  return "Makes every patch of the mesh nearly <b>developable</b> (flattenable from sheet material "
+         "without stretching) while moving the vertices as little as possible. For each patch the "
+         "Gauss image of its face normals is fitted by a curve on the sphere (the normals of a "
+         "developable surface lie on one), every face gets the nearest normal on that curve as "
+         "its target, and a least-squares solve moves the vertices so each face turns towards "
+         "its target while keeping its shape; this repeats until the curvature stops falling. "
+         "Connectivity is kept, so texture coordinates and sewing patterns survive; an iteration "
+         "that would raise the curvature or flip a face is rejected.<br>"
+         "<b>Per-face quality</b> = patch id (rounded to an integer); vertices shared by two "
+         "patches are seams. Without per-face quality the whole mesh is one patch.<br>"
+         "<b>Selected vertices</b> do not move. The open boundary stays fixed while <i>Keep "
+         "boundary</i> is on.<br>"
+         "<b>Output</b>: moved vertices, per-vertex quality = Gaussian curvature after the filter "
+         "(or the displacement) with a colour ramp (red low, blue high), and one log line per "
+         "patch with its figures. Works best on patches close to one developable surface (cone, "
+         "cylinder, gently bent sheet); wrinkled patches are reported as poor fits.<br>"
+         "Zeng L., Liu Y.-J., Chen M., Yuen M.-F., <i>Least squares quasi-developable mesh "
+         "approximation</i>, Computer Aided Geometric Design 29(7):565&ndash;578, 2012.";
+}
+
+std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
+  const qd::Params d;
+  const Settings ds;
+  const double ae = average_edge(read_geometry(m));
+  const auto flag = [](bool b) { return b ? 1.0 : 0.0; };
+  const auto index = [](auto e) { return static_cast<double>(static_cast<int>(e)); };
+  return {
+      {"tolerance", "Tolerance (model units)",
+       format("delta_err: the most a vertex may move (per iteration or in total, see Tolerance "
+              "mode), in model units. The mesh's average edge length AE = %g; 0 means 1 AE. "
+              "Smaller keeps the shape closer but leaves more curvature.",
+              ae),
+       ParamKind::Float, ae, {}},
+      {"tolerance_mode", "Tolerance mode",
+       "step: the tolerance caps each iteration's move (the paper); total: it caps the whole "
+       "move from the original position.",
+       ParamKind::Enum, index(d.tolerance_mode), {"step", "total"}},
+      {"max_iter", "Max iterations", "Stop after this many iterations per patch.", ParamKind::Int,
+       static_cast<double>(d.max_iter), {}},
+      {"weight", "Developability weight",
+       "w of the paper's Eq. (8): how strongly faces are turned towards their target normals "
+       "against keeping their shape. Larger removes more curvature per iteration but moves more.",
+       ParamKind::Float, d.weight, {}},
+      {"anchor", "Anchor stiffness",
+       "alpha of the soft anchors (paper Eq. 15): how strongly vertices near fixed vertices resist "
+       "moving; the stiffness fades with the distance (in AE) from fixed vertices.",
+       ParamKind::Float, d.anchor, {}},
+      {"seam_mode", "Seams",
+       "fixed: vertices shared by two patches do not move (the paper); free: all patches are "
+       "solved together and seam vertices move too, staying shared so no crack opens.",
+       ParamKind::Enum, index(d.seams), {"fixed", "free"}},
+      {"keep_boundary", "Keep boundary",
+       "Keep the vertices of the open mesh boundary fixed.", ParamKind::Bool,
+       flag(d.keep_boundary), {}},
+      {"target_mode", "Target normals",
+       "fixed: fit the Gauss-image curve once (the paper); reproject: project the current normals "
+       "onto it every iteration; refit: refit the curve every iteration (slower, strongest).",
+       ParamKind::Enum, index(d.targets), {"fixed", "reproject", "refit"}},
+      {"stop_abd", "Stop at ratio_ABD (%)",
+       "Stop when an iteration lowers the total absolute Gaussian curvature G_ABD by less than "
+       "this percentage (paper Eq. 19).",
+       ParamKind::Float, d.stop_abd, {}},
+      {"stop_obd", "Stop at ratio_OBD (%)",
+       "Stop when an iteration lowers the orientation developability D(P) by less than this "
+       "percentage (paper Eq. 20).",
+       ParamKind::Float, d.stop_obd, {}},
+      {"output_quality", "Output quality",
+       "What the per-vertex quality holds afterwards: the Gaussian curvature after the filter, "
+       "or each vertex's displacement in model units.",
+       ParamKind::Enum, flag(ds.displacement_quality), {"curvature", "displacement"}},
+      {"colorize", "Colorize", "Colour the vertices by a ramp on the output quality.",
+       ParamKind::Bool, flag(ds.colorize), {}},
+  };
+}
+
+Settings settings_from_values(const std::map<std::string, double>& values) {
+  Settings s;
+  qd::Params& p = s.params;
+  const auto get = [&](const char* name, double fallback) {
+    const auto it = values.find(name);
+    return it == values.end() ? fallback : it->second;
+  };
+  const auto choice = [&](const char* name, auto fallback) {
+    return static_cast<decltype(fallback)>(
+        static_cast<int>(std::lround(get(name, static_cast<int>(fallback)))));
+  };
+  p.tolerance = get("tolerance", p.tolerance);
+  p.tolerance_mode = choice("tolerance_mode", p.tolerance_mode);
+  p.max_iter = static_cast<int>(std::lround(get("max_iter", p.max_iter)));
+  p.weight = get("weight", p.weight);
+  p.anchor = get("anchor", p.anchor);
+  p.seams = choice("seam_mode", p.seams);
+  p.keep_boundary = get("keep_boundary", p.keep_boundary) != 0;
+  p.targets = choice("target_mode", p.targets);
+  p.stop_abd = get("stop_abd", p.stop_abd);
+  p.stop_obd = get("stop_obd", p.stop_obd);
+  s.displacement_quality = get("output_quality", s.displacement_quality) != 0;
+  s.colorize = get("colorize", s.colorize) != 0;
+  return s;
+}
+
+Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBackPos* cb) {
+  Outcome out;
+  try {
+    const EngineMesh e = read_geometry(m);
+    qd::Problem problem;
+    problem.V = e.V;
+    problem.F = e.F;
+    problem.params = s.params;
+    if (problem.params.tolerance == 0) problem.params.tolerance = average_edge(e);
+    if (has_face_quality) {
+      problem.patch = read_patch_ids(m, e);
+      const std::set<int> ids(problem.patch.begin(), problem.patch.end());
+      out.log.push_back(format("patches from per-face quality: %zu patch(es)", ids.size()));
+    } else {
+      out.log.push_back("no per-face quality: the whole mesh is one patch");
+    }
+    problem.constrained = read_selection(m, e);
+    out.log.push_back(format("%zu selected vertices kept fixed; tolerance %g model units",
+                             count_selected(problem.constrained), problem.params.tolerance));
+    const qd::Progress progress = [cb](int percent, const std::string& message) {
+      if (cb) cb(percent, message.c_str());
+    };
+    out.result = qd::approximate(problem, progress);
+    write_back(m, e, out.result, s);
+    for (const std::string& line : out.result.log) out.log.push_back(line);
+    for (const std::string& line : summary_lines(out.result)) out.log.push_back(line);
+    out.ok = true;
+  } catch (const qd::Error& error) {
+    out.error = error.what();
+  } catch (const std::bad_alloc&) {
+    out.error = "out of memory: try a smaller mesh or split it into smaller patches";
+  } catch (const std::exception& error) {
+    out.error = std::string("internal error (please report it with the mesh): ") + error.what();
+  }
+  return out;
+}
+
+}  // namespace qdml

@@ -1,0 +1,133 @@
+// Properties of the whole engine (qd::approximate) on generated meshes.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include "error.h"
+#include "quasidev.h"
+#include "test_meshes.h"
+
+namespace qd {
+namespace {
+
+Problem bumpy(double bump = 0.08) {
+  Problem p = test::bumpy_cylinder(48, 24, bump);
+  p.params.tolerance = 0.2;
+  return p;
+}
+
+TEST(Approximate, FixedTargetsFactoriseOnceHoweverManyIterations) {
+  Problem p = bumpy();
+  p.params.targets = TargetMode::Fixed;
+  p.params.stop_abd = p.params.stop_obd = 0;
+  for (int iters : {1, 4}) {
+    p.params.max_iter = iters;
+    const Result r = approximate(p);
+    EXPECT_EQ(r.factorizations, 1) << iters << " iterations";
+    EXPECT_GE(r.patches[0].iterations, 1);
+  }
+}
+
+TEST(Approximate, ReprojectedTargetsRefactoriseEachIteration) {
+  Problem p = bumpy();
+  p.params.targets = TargetMode::Reproject;
+  p.params.stop_abd = p.params.stop_obd = 0;
+  p.params.max_iter = 3;
+  const Result r = approximate(p);
+  EXPECT_EQ(r.factorizations, r.patches[0].iterations);
+}
+
+TEST(Approximate, IterationsReduceCurvatureAndOrientationEnergy) {
+  const Result r = approximate(bumpy());
+  const PatchReport& p = r.patches[0];
+  ASSERT_GE(p.history.size(), 2u);
+  double g = p.before.g_abd;
+  for (const IterationReport& it : p.history) {
+    EXPECT_LE(it.figures.g_abd, g) << "iteration " << it.iteration;
+    EXPECT_GE(it.ratio_obd, 0.0) << "iteration " << it.iteration;
+    g = it.figures.g_abd;
+  }
+  EXPECT_GT(r.abd_reduction, 50.0);
+}
+
+TEST(Approximate, ConstrainedVerticesDoNotMoveAtAll) {
+  Problem p = bumpy();
+  p.constrained.assign(static_cast<size_t>(p.V.rows()), 0);
+  for (Eigen::Index v = 0; v < p.V.rows(); v += 7) p.constrained[static_cast<size_t>(v)] = 1;
+  p.params.keep_boundary = true;
+  const Result r = approximate(p);
+  int moved = 0;
+  for (Eigen::Index v = 0; v < p.V.rows(); ++v) {
+    const bool on_boundary = v < 48 || v >= p.V.rows() - 48;
+    if (p.constrained[static_cast<size_t>(v)] || on_boundary)
+      EXPECT_EQ(r.V.row(v), p.V.row(v)) << "vertex " << v;
+    else
+      moved += (r.V.row(v) != p.V.row(v));
+  }
+  EXPECT_GT(moved, 100);
+}
+
+TEST(Approximate, ScaleAndRotationInvariant) {
+  const Problem p = bumpy();
+  const Result r = approximate(p);
+  const double s = 37.5;
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  Problem q = p;
+  q.V = (s * p.V * R.transpose()).eval();
+  q.V.rowwise() += Eigen::RowVector3d(3, -5, 11);
+  q.params.tolerance = s * p.params.tolerance;
+  const Result rq = approximate(q);
+  Positions expected = s * r.V * R.transpose();
+  expected.rowwise() += Eigen::RowVector3d(3, -5, 11);
+  const double diag = (q.V.colwise().maxCoeff() - q.V.colwise().minCoeff()).norm();
+  EXPECT_LT((rq.V - expected).cwiseAbs().maxCoeff(), 1e-6 * diag);
+  EXPECT_NEAR(rq.abd_reduction, r.abd_reduction, 1e-6);
+}
+
+TEST(Approximate, StepToleranceIsNeverExceeded) {
+  Problem p = bumpy(0.15);
+  p.params.tolerance = 0.01;
+  p.params.max_iter = 1;
+  Result r = approximate(p);
+  EXPECT_LE(r.total_after.max_disp, 0.01 * (1 + 1e-12));
+  EXPECT_GT(r.total_after.max_disp, 0.005);  // the cap is active
+  p.params.max_iter = 4;
+  p.params.stop_abd = p.params.stop_obd = 0;
+  r = approximate(p);
+  EXPECT_LE(r.total_after.max_disp, 4 * 0.01 * (1 + 1e-12));
+}
+
+TEST(Approximate, TotalToleranceIsNeverExceeded) {
+  Problem p = bumpy(0.15);
+  p.params.tolerance = 0.01;
+  p.params.tolerance_mode = ToleranceMode::Total;
+  p.params.max_iter = 6;
+  p.params.stop_abd = p.params.stop_obd = 0;
+  const Result r = approximate(p);
+  EXPECT_LE(r.total_after.max_disp, 0.01 * (1 + 1e-12));
+  EXPECT_GT(r.total_after.max_disp, 0.005);
+}
+
+TEST(Approximate, FixedSeamsStayAndFreeSeamsGoFurther) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 3);
+  p.params.tolerance = 0.2;
+  p.params.seams = SeamMode::Fixed;
+  const Result fixed = approximate(p);
+  ASSERT_EQ(fixed.patches.size(), 3u);
+  // seam vertices: columns i = 0, 16, 32 of every ring
+  for (Eigen::Index j = 0; j <= 24; ++j)
+    for (Eigen::Index i : {0, 16, 32}) EXPECT_EQ(fixed.V.row(j * 48 + i), p.V.row(j * 48 + i));
+  p.params.seams = SeamMode::Free;
+  const Result free = approximate(p);
+  EXPECT_GT(free.abd_reduction, fixed.abd_reduction);
+}
+
+TEST(Approximate, BadParametersAreRejectedWithoutTouchingTheInput) {
+  Problem p = bumpy();
+  p.params.tolerance = -1;
+  EXPECT_THROW(approximate(p), Error);
+}
+
+}  // namespace
+}  // namespace qd

@@ -1,0 +1,127 @@
+// The sparse normal equations of Step 2 equal a dense, literal assembly of Eq. (13) with summed
+// vertex columns (§5.3), exact elimination of constrained vertices and the Eq. (15) anchors.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+
+#include "anchor_weights.h"
+#include "deformation_system.h"
+#include "group_mesh.h"
+#include "mesh.h"
+#include "test_meshes.h"
+
+namespace qd {
+namespace {
+
+struct Fixture {
+  Problem p = test::bumpy_cylinder(6, 3, 0.2);
+  GroupMesh g;
+  std::vector<Vec3> targets;
+  Positions ref;
+  Fixture() {
+    const size_t nv = static_cast<size_t>(p.V.rows()), nf = static_cast<size_t>(p.F.rows());
+    std::vector<int> faces(nf);
+    for (size_t f = 0; f < nf; ++f) faces[f] = static_cast<int>(f);
+    std::vector<char> constrained(nv, 0), interior(nv, 1);
+    constrained[0] = constrained[7] = constrained[20] = 1;
+    std::vector<int> face_count(nv, 0);
+    for (Eigen::Index f = 0; f < p.F.rows(); ++f)
+      for (int c = 0; c < 3; ++c) ++face_count[static_cast<size_t>(p.F(f, c))];
+    g = extract_group(p.V, p.F, faces, std::vector<int>(nf, 0), constrained, interior, face_count,
+                      p.params);
+    std::mt19937 rng(7);
+    std::normal_distribution<double> gauss;
+    for (size_t f = 0; f < nf; ++f) targets.push_back(Vec3(gauss(rng), gauss(rng), gauss(rng)).normalized());
+    ref = g.V0;
+    for (Eigen::Index v = 0; v < ref.rows(); ++v)
+      if (!g.fixed[static_cast<size_t>(v)]) ref.row(v) += 0.05 * Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
+  }
+};
+
+// Dense A (12|T| + 3|V_free| rows, 3|V| columns) and c, built row by row from Eq. (13) and the
+// anchor rows, then the constrained columns moved to the right-hand side.
+void dense_system(const Fixture& s, double w, double alpha, double ae, Eigen::MatrixXd& A_free,
+                  Eigen::VectorXd& c_eff) {
+  const Eigen::Index nv = s.g.V0.rows(), nf = s.g.F.rows();
+  const std::vector<double> mls = mls_weights(s.g.V0, s.g.fixed, ae);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(12 * nf + 3 * nv, 3 * nv);
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(A.rows());
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    const int v[3] = {s.g.F(f, 0), s.g.F(f, 1), s.g.F(f, 2)};
+    const Eigen::RowVector3d H = w * s.targets[static_cast<size_t>(f)].transpose();
+    const Eigen::Index r = 12 * f;
+    for (int e = 0; e < 3; ++e) {  // w·n·(v_{e+1} − v_e) = 0
+      A.block(r + e, 3 * v[(e + 1) % 3], 1, 3) += H;
+      A.block(r + e, 3 * v[e], 1, 3) -= H;
+    }
+    const Vec3 x1 = s.ref.row(v[0]), x2 = s.ref.row(v[1]), x3 = s.ref.row(v[2]);
+    A.block(r + 3, 3 * v[1], 3, 3) += I;
+    A.block(r + 3, 3 * v[0], 3, 3) -= I;
+    c.segment<3>(r + 3) = x2 - x1;
+    A.block(r + 6, 3 * v[2], 3, 3) += I;
+    A.block(r + 6, 3 * v[0], 3, 3) -= I;
+    c.segment<3>(r + 6) = x3 - x1;
+    for (int k = 0; k < 3; ++k) A.block(r + 9, 3 * v[k], 3, 3) += I / 3.0;
+    c.segment<3>(r + 9) = (x1 + x2 + x3) / 3.0;
+  }
+  for (Eigen::Index v = 0; v < nv; ++v) {
+    if (s.g.fixed[static_cast<size_t>(v)]) continue;
+    const double a = alpha * mls[static_cast<size_t>(v)];
+    A.block(12 * nf + 3 * v, 3 * v, 3, 3) = a * I;
+    c.segment<3>(12 * nf + 3 * v) = a * s.g.V0.row(v).transpose();
+  }
+  std::vector<Eigen::Index> free_cols;
+  c_eff = c;
+  for (Eigen::Index v = 0; v < nv; ++v)
+    for (int d = 0; d < 3; ++d) {
+      if (s.g.fixed[static_cast<size_t>(v)])
+        c_eff -= A.col(3 * v + d) * s.g.V0(v, d);
+      else
+        free_cols.push_back(3 * v + d);
+    }
+  A_free.resize(A.rows(), static_cast<Eigen::Index>(free_cols.size()));
+  for (size_t k = 0; k < free_cols.size(); ++k) A_free.col(static_cast<Eigen::Index>(k)) = A.col(free_cols[k]);
+}
+
+TEST(DeformationSystem, SparseEqualsDenseAssembly) {
+  Fixture s;
+  const double w = 7.0, alpha = 3.0, ae = 0.4;
+  DeformationSystem sys(s.g, w, alpha, ae);
+  sys.set_targets(s.targets);
+  Eigen::MatrixXd A;
+  Eigen::VectorXd c;
+  dense_system(s, w, alpha, ae, A, c);
+
+  const Eigen::MatrixXd lower = Eigen::MatrixXd(sys.matrix());
+  const Eigen::MatrixXd M = lower + lower.transpose() - Eigen::MatrixXd(lower.diagonal().asDiagonal());
+  const Eigen::MatrixXd expected = A.transpose() * A;
+  ASSERT_EQ(M.rows(), expected.rows());
+  EXPECT_LT((M - expected).norm(), 1e-9 * expected.norm());
+  const Eigen::VectorXd b = sys.rhs(s.ref), eb = A.transpose() * c;
+  EXPECT_LT((b - eb).norm(), 1e-9 * eb.norm());
+}
+
+TEST(DeformationSystem, SolveIsTheLeastSquaresMinimiser) {
+  Fixture s;
+  DeformationSystem sys(s.g, 30.0, 10.0, 0.4);
+  sys.set_targets(s.targets);
+  Eigen::MatrixXd A;
+  Eigen::VectorXd c;
+  dense_system(s, 30.0, 10.0, 0.4, A, c);
+  const Eigen::VectorXd x = A.colPivHouseholderQr().solve(c);
+  const Positions X = sys.solve(s.ref);
+  Eigen::Index k = 0;
+  for (Eigen::Index v = 0; v < X.rows(); ++v) {
+    if (s.g.fixed[static_cast<size_t>(v)]) {
+      EXPECT_EQ(X.row(v), s.g.V0.row(v)) << "constrained vertex " << v << " moved";
+      continue;
+    }
+    EXPECT_LT((X.row(v).transpose() - x.segment<3>(3 * k)).norm(), 1e-8);
+    ++k;
+  }
+}
+
+}  // namespace
+}  // namespace qd

@@ -1,0 +1,43 @@
+// Small generated meshes for the engine's tests.
+#pragma once
+
+#include <cmath>
+
+#include "problem.h"
+
+namespace qd::test {
+
+// Open cylinder (axis z, radius 1, height h) of nu×nv quads split into triangles, with a smooth
+// radial Gaussian bump of amplitude `bump` (0 = exactly developable up to discretisation) and an
+// optional cone factor (radius grows by `cone`·z). Patch id = 0, or by angular sector when
+// `sectors` > 1. Faces are oriented outward.
+inline Problem bumpy_cylinder(int nu, int nv, double bump, double cone = 0.0, int sectors = 1,
+                              double h = 2.0) {
+  Problem p;
+  p.V.resize(nu * (nv + 1), 3);
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const double t = 2 * M_PI * i / nu, z = h * j / nv;
+      const double d2 = std::pow(std::remainder(t - 1.0, 2 * M_PI), 2) + std::pow(z - h / 2, 2);
+      const double r = 1.0 + cone * z + bump * std::exp(-d2 / 0.18) +
+                       0.5 * bump * std::exp(-(std::pow(std::remainder(t + 2.0, 2 * M_PI), 2) +
+                                               std::pow(z - h / 3, 2)) / 0.1);
+      p.V.row(j * nu + i) << r * std::cos(t), r * std::sin(t), z;
+    }
+  p.F.resize(2 * nu * nv, 3);
+  int f = 0;
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i) {
+      const int a = j * nu + i, b = j * nu + (i + 1) % nu, c = a + nu, d = b + nu;
+      p.F.row(f++) << a, b, d;
+      p.F.row(f++) << a, d, c;
+      const int s = i * sectors / nu;
+      p.patch.push_back(s);
+      p.patch.push_back(s);
+    }
+  if (sectors == 1) p.patch.clear();
+  p.params.tolerance = 1.0;  // model units: generous
+  return p;
+}
+
+}  // namespace qd::test
