@@ -20,7 +20,7 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from plyio import PlyData, read_ply  # noqa: E402
+from plyio import PlyData, PlyError, read_ply  # noqa: E402
 
 SUPERSAMPLE = 2
 BACKGROUND = (255, 255, 255)
@@ -103,11 +103,12 @@ def auto_azimuth(mesh: Mesh, up: str) -> float:
 
 
 def camera_basis(to_camera: np.ndarray, up: str) -> np.ndarray:
-    """Rows: screen right, screen up, towards the camera."""
+    """Rows: screen right, screen up, towards the camera (looking along up: the next axis is up)."""
     w = to_camera / np.linalg.norm(to_camera)
-    u = AXES[up] - (AXES[up] @ w) * w
-    if np.linalg.norm(u) < 1e-6:
-        u = AXES["yzx"["xyz".index(up)]] - (AXES["yzx"["xyz".index(up)]] @ w) * w
+    for axis in (AXES[up], AXES["yzx"["xyz".index(up)]]):
+        u = axis - (axis @ w) * w
+        if np.linalg.norm(u) > 1e-6:
+            break
     u /= np.linalg.norm(u)
     return np.stack([np.cross(u, w), u, w])
 
@@ -267,8 +268,11 @@ def main() -> None:
             ap.error(f"{p}: no such file")
     w, h = (int(s) for s in args.size.lower().split("x"))
     labels = [s for s in args.labels.split(",") if s] if args.labels else []
-    render(args.meshes, args.out, args.title, labels, args.view, args.up, args.color, args.qrange,
-           args.flat, (w, h))
+    try:
+        render(args.meshes, args.out, args.title, labels, args.view, args.up, args.color, args.qrange,
+               args.flat, (w, h))
+    except PlyError as exc:
+        sys.exit(f"render.py: cannot read the input PLY: {exc}")
 
 
 if __name__ == "__main__":

@@ -21,6 +21,14 @@ bool is_color(const std::string& name) {
   return name == "red" || name == "green" || name == "blue" || name == "alpha";
 }
 
+// True when the vertex has scalar nx, ny and nz (stale after the move: they are recomputed).
+bool has_normals(const std::vector<PlyProperty>& vertex_extra) {
+  int found = 0;
+  for (const PlyProperty& p : vertex_extra)
+    if (!p.is_list && (p.name == "nx" || p.name == "ny" || p.name == "nz")) ++found;
+  return found == 3;
+}
+
 // Area-weighted vertex normals of the new positions (unit length; zero where undefined).
 std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh,
                                                   const std::vector<std::array<double, 3>>& V) {
@@ -57,7 +65,7 @@ PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
     for (std::size_t i = 0; i < nv; ++i) c[i] = fields.positions[i][k];
     e.properties.push_back(scalar_column(std::string(1, "xyz"[k]), ScalarType::Float64, c));
   }
-  const bool normals = mesh.vertex_extra.size() >= 3;  // checked per name below
+  const bool normals = has_normals(mesh.vertex_extra);
   std::vector<std::array<double, 3>> n;
   for (const PlyProperty& p : mesh.vertex_extra) {
     if ((p.name == "quality" && !fields.quality.empty()) ||

@@ -125,9 +125,9 @@ class AsciiSource {
   AsciiSource(std::string_view bytes, std::size_t pos, int line)
       : bytes_(bytes), pos_(pos), line_(line) {}
 
-  // Each value takes at least one character and a separator.
-  std::size_t min_bytes(ScalarType) const { return 2; }
-  std::size_t remaining() const { return bytes_.size() - pos_ + 1; }
+  // Each value takes at least one character.
+  std::size_t min_bytes(ScalarType) const { return 1; }
+  std::size_t remaining() const { return bytes_.size() - pos_; }
 
   double read(ScalarType type, const std::string& place) {
     const std::string_view token = next_token(place);
@@ -135,7 +135,8 @@ class AsciiSource {
     if (!parse_number(token, value) || !fits_scalar_type(type, value))
       fail("line " + std::to_string(line_) + ": '" + std::string(token.substr(0, 40)) +
            "' is not a valid " + scalar_type_name(type) + " for " + place);
-    return value;
+    // A float property holds the nearest float, as a binary file would.
+    return type == ScalarType::Float32 ? static_cast<double>(static_cast<float>(value)) : value;
   }
 
   void expect_end() {
@@ -157,7 +158,8 @@ class AsciiSource {
   std::string_view next_token(const std::string& place) {
     skip_space();
     if (pos_ >= bytes_.size())
-      fail("the data ends early (line " + std::to_string(line_) + "): missing " + place);
+      fail("the data ends early (line " + std::to_string(line_) + "): missing " + place +
+           " (wrong element counts or truncated file)");
     const std::size_t start = pos_;
     while (pos_ < bytes_.size() && !is_space(bytes_[pos_])) ++pos_;
     return bytes_.substr(start, pos_ - start);

@@ -39,8 +39,8 @@ void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
   targets_ = targets;
   const Eigen::Matrix3d L = shape_block();
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<size_t>(g_.F.rows()) * 81 + static_cast<size_t>(unknowns_) * 3);
-  for (Eigen::Index f = 0; f < g_.F.rows(); ++f) {
+  entries.reserve(static_cast<size_t>(g_.solve_faces) * 81 + static_cast<size_t>(unknowns_) * 3);
+  for (Eigen::Index f = 0; f < g_.solve_faces; ++f) {
     const Vec3& n = targets_[static_cast<size_t>(f)];
     const Eigen::Matrix3d N = w_ * w_ * n * n.transpose();
     for (int p = 0; p < 3; ++p) {
@@ -68,7 +68,7 @@ void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
 Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
   const Eigen::Matrix3d L = shape_block();
   Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * unknowns_);
-  for (Eigen::Index f = 0; f < g_.F.rows(); ++f) {
+  for (Eigen::Index f = 0; f < g_.solve_faces; ++f) {
     Vec3 x[3];
     for (int c = 0; c < 3; ++c) x[c] = ref.row(g_.F(f, c)).transpose();
     const Vec3 e12 = x[1] - x[0], e13 = x[2] - x[0];  // c of Eq. (13): reference edges

@@ -1,5 +1,6 @@
 #include "deformer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -23,14 +24,23 @@ double decrease_ratio(double before, double after) {
 }  // namespace
 
 Positions clamp_step(const GroupMesh& group, const Positions& current, const Positions& proposed,
-                     ToleranceMode mode) {
-  Positions out = proposed;
+                     ToleranceMode mode, ClampMode clamp) {
   const Positions& origin = mode == ToleranceMode::Step ? current : group.V0;
+  const auto limit = [&](Eigen::Index v) { return group.tolerance[static_cast<size_t>(v)]; };
+  if (mode == ToleranceMode::Step && clamp == ClampMode::Scale) {
+    // Departure from §5.2: one factor for the whole step keeps it a least-squares direction.
+    double scale = 1.0;
+    for (Eigen::Index v = 0; v < proposed.rows(); ++v) {
+      const double len = (proposed.row(v) - current.row(v)).norm();
+      if (len > limit(v)) scale = std::min(scale, limit(v) / len);
+    }
+    return current + scale * (proposed - current);
+  }
+  Positions out = proposed;  // §5.2: if ‖Δv‖ > δ_err then ‖Δv‖ = δ_err, vertex by vertex
   for (Eigen::Index v = 0; v < out.rows(); ++v) {
     const Vec3 d = (out.row(v) - origin.row(v)).transpose();
-    const double limit = group.tolerance[static_cast<size_t>(v)];
     const double len = d.norm();
-    if (len > limit) out.row(v) = origin.row(v) + (d * (limit / len)).transpose();
+    if (len > limit(v)) out.row(v) = origin.row(v) + (d * (limit(v) / len)).transpose();
   }
   return out;
 }
@@ -50,8 +60,8 @@ int flipped_faces(const Triangles& F, const Positions& V0, const Positions& V) {
 DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
                      const Retarget& retarget, const Params& params, double ae,
                      const std::function<void(double)>& progress) {
-  const std::vector<int> faces = all_indices(group.F.rows());
-  const std::vector<int> vertices = all_indices(group.V0.rows());
+  const std::vector<int> faces = all_indices(group.solve_faces);
+  const std::vector<int> vertices = all_indices(group.solve_vertices);
   auto figures = [&](const Positions& X, const std::vector<Vec3>& t) {
     return measure(group.V0, X, group.F, group.owned, faces, t, vertices);
   };
@@ -70,7 +80,8 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
     }
     const Figures before = figures(out.V, current_targets);
     // Steps 2.4.1–2.4.3: new right-hand side, back substitution, tolerance check.
-    const Positions step = clamp_step(group, out.V, system.solve(out.V), params.tolerance_mode);
+    const Positions step = clamp_step(group, out.V, system.solve(out.V), params.tolerance_mode,
+                                      params.clamp);
 
     IterationReport report;
     report.iteration = it;

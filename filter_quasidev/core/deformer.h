@@ -31,10 +31,11 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
                      const Retarget& retarget, const Params& params, double ae,
                      const std::function<void(double)>& progress);
 
-// Clamps the step from `current` to `proposed` per vertex to the group's δ_err (§5.2): in Step
-// mode |Δv| ≤ δ_err per step; in Total mode |v' − v0| ≤ δ_err overall.
+// Limits the step from `current` to `proposed` by the group's δ_err (§5.2). Step mode:
+// |Δv| ≤ δ_err for every vertex, by scaling the whole step (ClampMode::Scale) or clamping each
+// vertex (ClampMode::Vertex, the paper's). Total mode: |v' − v0| ≤ δ_err, vertex by vertex.
 Positions clamp_step(const GroupMesh& group, const Positions& current, const Positions& proposed,
-                     ToleranceMode mode);
+                     ToleranceMode mode, ClampMode clamp);
 
 // Number of faces whose normal at V points against their normal at V0 (or became degenerate).
 int flipped_faces(const Triangles& F, const Positions& V0, const Positions& V);

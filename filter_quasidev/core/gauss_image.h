@@ -41,8 +41,14 @@ Vec3 best_great_circle_pole(const std::vector<Vec3>& normals, const std::vector<
 // The rotation R of Eq. 9 and what the θ coverage says about the curve.
 struct GaussFrame {
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // rows e1, e2, p: maps p to +z
+  double gap = 0;       // width of the widest empty θ-gap, centred on the seam: the samples
+                        // lie in θ ∈ [gap/2, 2π − gap/2] (up to kGapOutlierShare of the area)
   bool closed = false;  // samples cover all θ (a tube): the skeleton curve is closed
 };
+
+// Share of the total area that may lie inside an "empty" θ-gap (stray outlier normals must
+// not close the gap of a partial cylinder).
+constexpr double kGapOutlierShare = 0.01;
 
 // R maps the pole to +z and is then turned about z so the widest empty θ-gap of the
 // positive-area samples is centred on the θ = 0/2π seam.

@@ -1,8 +1,6 @@
 // Face normal, face area and average edge length AE of a triangle mesh.
 #include "mesh.h"
 
-#include <Eigen/Geometry>
-
 #include <algorithm>
 #include <utility>
 

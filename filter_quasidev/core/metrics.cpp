@@ -2,7 +2,6 @@
 // K(v) (Eq. 18), OBD (Defs. 2–3), shape difference (Defs. 4–5), displacement.
 #include "metrics.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <string>

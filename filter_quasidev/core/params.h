@@ -8,12 +8,15 @@ namespace qd {
 
 enum class SeamMode { Fixed, Free };         // seam vertices fixed (paper) or shared unknowns
 enum class ToleranceMode { Step, Total };    // δ_err caps each step (paper) or the total move
+enum class ClampMode { Scale, Vertex };     // δ_err in Step mode: scale the whole step, or
+                                            // clamp each vertex's step (paper §5.2)
 enum class TargetMode { Fixed, Reproject, Refit };  // targets once (paper), re-projected, re-fitted
 
 struct Params {
   double tolerance = 0.0;                    // δ_err in model units (> 0)
   std::map<int, double> patch_tolerance;     // per patch id, overrides tolerance
   ToleranceMode tolerance_mode = ToleranceMode::Step;
+  ClampMode clamp = ClampMode::Scale;        // Step mode only; Total mode clamps per vertex
   int max_iter = 10;                         // stop criterion 1
   double weight = 30.0;                      // w of Eq. (8): developability vs shape rows
   double anchor = 10.0;                      // α of the MLS soft anchor rows (Eq. 15)

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <numeric>
 
 #include "deformer.h"
@@ -31,14 +32,24 @@ constexpr double kPlanarResidualDeg = 0.05;
 // Above this fit residual the patch is far from one developable surface: warn.
 constexpr double kFarResidualDeg = 10.0;
 
+// The model of a patch Step 1 could not fit (e.g. its normals fill the sphere): every face
+// keeps its own normal as target, so the patch keeps its shape.
+class KeepNormals : public GaussModel {
+ public:
+  Vec3 project(const Vec3& n) const override { return n; }
+  std::string kind() const override { return "unchanged"; }
+};
+
 // Step 1 for one patch of a group: its faces (local indices) and the fitted Gauss model.
 struct PatchFit {
   int id = 0;
   std::vector<int> faces;
   TargetFit fit;
+  std::string skipped;  // why Step 1 failed; empty when it succeeded
   bool planar() const {
     return fit.model->kind() == "plane" && fit.residual_deg < kPlanarResidualDeg;
   }
+  bool idle() const { return planar() || !skipped.empty(); }
 };
 
 void normals_and_areas(const Positions& X, const Triangles& F, const std::vector<int>& faces,
@@ -53,8 +64,8 @@ void normals_and_areas(const Positions& X, const Triangles& F, const std::vector
 
 std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
   std::map<int, std::vector<int>> faces_of;
-  for (size_t f = 0; f < g.face_patch.size(); ++f)
-    faces_of[g.face_patch[f]].push_back(static_cast<int>(f));
+  for (Eigen::Index f = 0; f < g.solve_faces; ++f)
+    faces_of[g.face_patch[static_cast<size_t>(f)]].push_back(static_cast<int>(f));
   std::vector<PatchFit> fits;
   std::vector<Vec3> normals;
   std::vector<double> areas;
@@ -66,7 +77,9 @@ std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
     try {
       p.fit = fit_targets(normals, areas);
     } catch (const Error& e) {
-      throw Error("patch " + std::to_string(id) + ": " + e.what());
+      p.skipped = e.what();
+      p.fit.model = std::make_shared<KeepNormals>();
+      p.fit.targets = normals;
     }
     fits.push_back(std::move(p));
   }
@@ -75,7 +88,7 @@ std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
 
 // Target per group face from the per-patch fits.
 std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>& fits) {
-  std::vector<Vec3> t(static_cast<size_t>(g.F.rows()));
+  std::vector<Vec3> t(static_cast<size_t>(g.solve_faces));
   for (const PatchFit& p : fits)
     for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = p.fit.targets[k];
   return t;
@@ -85,7 +98,7 @@ std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>&
 Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode) {
   return [&g, &fits, mode](const Positions& X) {
     if (mode == TargetMode::Refit) return group_targets(g, fit_patches(g, X));
-    std::vector<Vec3> t(static_cast<size_t>(g.F.rows()));
+    std::vector<Vec3> t(static_cast<size_t>(g.solve_faces));
     for (const PatchFit& p : fits)
       for (int f : p.faces) t[static_cast<size_t>(f)] = p.fit.model->project(face_normal(X, g.F, f));
     return t;
@@ -131,9 +144,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
 
   std::vector<char> interior(nv), constrained(nv);
-  std::vector<int> face_count(nv, 0);
-  for (size_t f = 0; f < nf; ++f)
-    for (int c = 0; c < 3; ++c) ++face_count[static_cast<size_t>(F(static_cast<Eigen::Index>(f), c))];
+  const VertexFaces incident(F, V.rows());
   for (size_t v = 0; v < nv; ++v) {
     interior[v] = topo.used[v] && !topo.boundary[v];
     constrained[v] = (!problem.constrained.empty() && problem.constrained[v]) ||
@@ -156,22 +167,26 @@ Result approximate(const Problem& problem, const Progress& progress) {
   }
 
   std::vector<Vec3> initial_target(nf);
+  size_t skipped_patches = 0;
+  std::string first_skip;  // the reason of the first patch Step 1 could not fit
   std::map<int, PatchReport> reports;
   for (size_t gi = 0; gi < groups.size(); ++gi) {
     const auto tg = Clock::now();
     const GroupMesh g =
-        extract_group(V, F, groups[gi], patch, constrained, interior, face_count, params);
+        extract_group(r.V, F, groups[gi], patch, constrained, interior, incident, params);
     const std::vector<PatchFit> fits = fit_patches(g, g.V0);
     const std::vector<Vec3> targets = group_targets(g, fits);
     for (size_t f = 0; f < targets.size(); ++f)
       initial_target[static_cast<size_t>(g.global_face[f])] = targets[f];
 
-    bool all_planar = true;
-    for (const PatchFit& p : fits) all_planar = all_planar && p.planar();
+    bool all_idle = true;
+    for (const PatchFit& p : fits) all_idle = all_idle && p.idle();
     DeformOutcome outcome;
-    if (all_planar) {
+    if (all_idle) {
       outcome.V = g.V0;
-      outcome.stop_reason = "planar: the Gauss image is a point, nothing to do";
+      outcome.stop_reason = fits.front().skipped.empty()
+                                ? "planar: the Gauss image is a point, nothing to do"
+                                : "left unchanged: " + fits.front().skipped;
     } else {
       const auto group_progress = [&](double fraction) {
         if (progress)
@@ -194,25 +209,31 @@ Result approximate(const Problem& problem, const Progress& progress) {
       rep.fit_residual_deg = p.fit.residual_deg;
       rep.tolerance = patch_tolerance(params, p.id);
       rep.iterations = static_cast<int>(outcome.history.size());
-      rep.stop_reason = outcome.stop_reason;
+      rep.stop_reason = p.skipped.empty() ? outcome.stop_reason : "left unchanged: " + p.skipped;
+      if (!p.skipped.empty() && skipped_patches++ == 0) first_skip = "patch " + std::to_string(p.id) + ": " + p.skipped;
       rep.history = outcome.history;
       rep.time_ms = group_ms / static_cast<double>(fits.size());
     }
   }
 
+  if (skipped_patches == faces_of_patch.size())
+    throw Error(faces_of_patch.size() == 1 ? first_skip.substr(first_skip.find(": ") + 2)
+                                           : "no patch can be made developable; " + first_skip);
+
   // Per-patch figures, each patch measured on its own faces and interior vertices.
   for (auto& [id, faces] : faces_of_patch) {
-    const GroupMesh pm = extract_group(V, F, faces, patch, constrained, interior, face_count, params);
+    const GroupMesh pm = extract_group(V, F, faces, patch, constrained, interior, incident, params);
     Positions after(pm.V0.rows(), 3);
     for (size_t l = 0; l < pm.global_vertex.size(); ++l)
       after.row(static_cast<Eigen::Index>(l)) = r.V.row(pm.global_vertex[l]);
     std::vector<Vec3> t;
     for (int f : faces) t.push_back(initial_target[static_cast<size_t>(f)]);
-    const std::vector<int> local_faces = indices(faces.size()), local_vertices = indices(pm.global_vertex.size());
+    const std::vector<int> local_faces = indices(faces.size());
+    const std::vector<int> local_vertices = indices(static_cast<size_t>(pm.solve_vertices));
     PatchReport& rep = reports[id];
     rep.faces = static_cast<int>(faces.size());
-    rep.vertices = static_cast<int>(pm.global_vertex.size());
-    rep.free_vertices = static_cast<int>(std::count(pm.fixed.begin(), pm.fixed.end(), 0));
+    rep.vertices = static_cast<int>(pm.solve_vertices);
+    rep.free_vertices = static_cast<int>(std::count(pm.fixed.begin(), pm.fixed.begin() + pm.solve_vertices, 0));
     rep.before = measure(pm.V0, pm.V0, pm.F, pm.owned, local_faces, t, local_vertices);
     rep.after = measure(pm.V0, after, pm.F, pm.owned, local_faces, t, local_vertices);
     rep.abd_reduction = rep.before.g_abd > 0

@@ -17,6 +17,11 @@ namespace {
 
 std::string str(int n) { return std::to_string(n); }
 
+// "1 face", "3 faces".
+std::string count(int n, const char* one, const char* many) {
+  return str(n) + " " + (n == 1 ? one : many);
+}
+
 std::string str(double x) {
   std::ostringstream out;
   out << x;
@@ -76,8 +81,8 @@ void check_coordinates(const Positions& V) {
     if (bad++ == 0) first = v;
   }
   if (bad > 0)
-    throw Error("The mesh has " + str(bad) + " vertices with NaN or infinite coordinates (first: "
-                "vertex " + str(first) + "): remove or repair them before running the filter.");
+    throw Error("The mesh has " + count(bad, "vertex", "vertices") +
+                " with NaN or infinite coordinates (first: vertex " + str(first) + "): remove or repair them before running the filter.");
 }
 
 void check_face_indices(const Triangles& F, int vertex_count) {
@@ -104,15 +109,16 @@ void check_zero_area(const Positions& V, const Triangles& F) {
     if (bad++ == 0) first = f;
   }
   if (bad > 0)
-    throw Error("The mesh has " + str(bad) + " zero-area faces (first: face " + str(first) +
+    throw Error("The mesh has " + count(bad, "zero-area face", "zero-area faces") + " (first: face " + str(first) +
                 "): remove them first (MeshLab: Filters > Cleaning and Repairing > Remove Zero "
                 "Area Faces).");
 }
 
 void check_manifold(const Topology& t) {
   if (t.nonmanifold_edges > 0)
-    throw Error("The mesh has " + str(t.nonmanifold_edges) +
-                " non-manifold edges (more than two faces; e.g. the edge between vertices " +
+    throw Error("The mesh has " +
+                count(t.nonmanifold_edges, "non-manifold edge", "non-manifold edges") +
+                " (more than two faces; e.g. the edge between vertices " +
                 str(t.first_nonmanifold_edge[0]) + " and " + str(t.first_nonmanifold_edge[1]) +
                 "): repair them first (MeshLab: Filters > Cleaning and Repairing > Repair non "
                 "Manifold Edges).");
@@ -130,8 +136,8 @@ void check_patch_sizes(const Triangles& F, const std::vector<int>& patch) {
     if (small++ == 0) first = it;
   }
   if (small > 0)
-    throw Error("Patch " + str(first->first) + " has only " + str(first->second) +
-                " faces (" + str(small) + " patches have fewer than " + str(kMinPatchFaces) +
+    throw Error("Patch " + str(first->first) + " has only " + count(first->second, "face", "faces") + " (" +
+                count(small, "patch has", "patches have") + " fewer than " + str(kMinPatchFaces) +
                 "): a patch needs at least " + str(kMinPatchFaces) +
                 " faces; merge small patches into their neighbours.");
 }
@@ -157,10 +163,11 @@ void check_orientation(const Triangles& F, const std::vector<int>& patch) {
   }
   if (bad > 0) {
     const Directed& e = edges[first];
-    throw Error("Patch " + str(e.patch) + " is not consistently oriented (faces " +
-                str(edges[first - 1].face) + " and " + str(e.face) + " run along edge " +
-                str(e.from) + "-" + str(e.to) + " the same way; " + str(bad) +
-                " such edges): fix it first (MeshLab: Filters > Normals, Curvatures and "
+    const int f1 = std::min(e.face, edges[first - 1].face);
+    const int f2 = std::max(e.face, edges[first - 1].face);
+    throw Error("Patch " + str(e.patch) + " is not consistently oriented (faces " + str(f1) +
+                " and " + str(f2) + " run along edge " + str(e.from) + "-" + str(e.to) +
+                " the same way; " + count(bad, "such edge", "such edges") + "): fix it first (MeshLab: Filters > Normals, Curvatures and "
                 "Orientation > Re-Orient all faces coherently).");
   }
 }

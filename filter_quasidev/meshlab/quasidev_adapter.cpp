@@ -20,6 +20,7 @@
 #include "mesh.h"
 #include "quality_range.h"
 #include "quasidev.h"
+#include "validate.h"
 
 namespace qdml {
 
@@ -133,6 +134,12 @@ std::vector<std::string> summary_lines(const qd::Result& r) {
   return lines;
 }
 
+// The engine's log holds its own per-patch and total summaries besides its notes; the adapter
+// logs summary_lines() instead (they carry the figures issue 3 asks for), and the notes as they are.
+bool is_summary_line(const std::string& line) {
+  return line.rfind("patch ", 0) == 0 || line.rfind("total:", 0) == 0;
+}
+
 // Writes the engine's positions, per-vertex quality and (optionally) colours into m, then
 // refreshes normals and the bounding box. Touches nothing else.
 void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Settings& s) {
@@ -212,6 +219,10 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
        "alpha of the soft anchors (paper Eq. 15): how strongly vertices near fixed vertices resist "
        "moving; the stiffness fades with the distance (in AE) from fixed vertices.",
        ParamKind::Float, d.anchor, {}},
+      {"use_patches", "Patches from face quality",
+       "On: faces with the same per-face quality (rounded) form one patch, each made "
+       "developable on its own. Off, or without per-face quality: the whole mesh is one patch.",
+       ParamKind::Bool, flag(ds.use_patches), {}},
       {"seam_mode", "Seams",
        "fixed: vertices shared by two patches do not move (the paper); free: all patches are "
        "solved together and seam vertices move too, staying shared so no crack opens.",
@@ -256,6 +267,7 @@ Settings settings_from_values(const std::map<std::string, double>& values) {
   p.max_iter = static_cast<int>(std::lround(get("max_iter", p.max_iter)));
   p.weight = get("weight", p.weight);
   p.anchor = get("anchor", p.anchor);
+  s.use_patches = get("use_patches", s.use_patches) != 0;
   p.seams = choice("seam_mode", p.seams);
   p.keep_boundary = get("keep_boundary", p.keep_boundary) != 0;
   p.targets = choice("target_mode", p.targets);
@@ -274,13 +286,19 @@ Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBack
     problem.V = e.V;
     problem.F = e.F;
     problem.params = s.params;
-    if (problem.params.tolerance == 0) problem.params.tolerance = average_edge(e);
-    if (has_face_quality) {
+    // The mesh is validated before the parameters, with a placeholder tolerance: a tolerance
+    // derived from a broken mesh (NaN coordinates give a NaN AE, also as the dialog's default)
+    // would otherwise hide what is really wrong. Then 0 = 1·AE.
+    problem.params.tolerance = 1;
+    qd::validate(problem);
+    problem.params.tolerance = s.params.tolerance == 0 ? average_edge(e) : s.params.tolerance;
+    if (has_face_quality && s.use_patches) {
       problem.patch = read_patch_ids(m, e);
       const std::set<int> ids(problem.patch.begin(), problem.patch.end());
       out.log.push_back(format("patches from per-face quality: %zu patch(es)", ids.size()));
     } else {
-      out.log.push_back("no per-face quality: the whole mesh is one patch");
+      out.log.push_back(has_face_quality ? "patches from face quality off: the whole mesh is one patch"
+                                         : "no per-face quality: the whole mesh is one patch");
     }
     problem.constrained = read_selection(m, e);
     out.log.push_back(format("%zu selected vertices kept fixed; tolerance %g model units",
@@ -290,7 +308,8 @@ Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBack
     };
     out.result = qd::approximate(problem, progress);
     write_back(m, e, out.result, s);
-    for (const std::string& line : out.result.log) out.log.push_back(line);
+    for (const std::string& line : out.result.log)
+      if (!is_summary_line(line)) out.log.push_back(line);
     for (const std::string& line : summary_lines(out.result)) out.log.push_back(line);
     out.ok = true;
   } catch (const qd::Error& error) {

@@ -45,6 +45,7 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m);
 // What the user chose. params.tolerance == 0 means 1·AE (resolved by apply()).
 struct Settings {
   qd::Params params;
+  bool use_patches = true;            // patch id per face from per-face quality, when present
   bool displacement_quality = false;  // per-vertex quality = displacement instead of K after
   bool colorize = true;               // colour ramp on the per-vertex quality
 };
@@ -60,10 +61,11 @@ struct Outcome {
   qd::Result result;              // the engine's result when ok
 };
 
-// Reads m (positions, faces; patch id per face = rounded per-face quality when has_face_quality,
-// else one patch; constrained = selected vertices; deleted elements skipped), runs the engine
-// and ONLY on success writes back positions, per-vertex quality (K after or displacement) and,
-// when s.colorize, per-vertex colour on a robust ramp, then face/vertex normals and the bbox.
+// Reads m (positions, faces; patch id per face = rounded per-face quality when has_face_quality
+// and s.use_patches, else one patch; constrained = selected vertices; deleted elements skipped),
+// runs the engine and ONLY on success writes back positions, per-vertex quality (K after or
+// displacement) and, when s.colorize, per-vertex colour on a robust ramp, then face/vertex
+// normals and the bbox.
 // Nothing else of m changes (texture coordinates, face quality, face colours, selection).
 // On failure m is untouched and Outcome::error says why. cb may be null.
 Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBackPos* cb);

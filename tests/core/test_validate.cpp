@@ -119,7 +119,7 @@ TEST(Validate, ZeroAreaFace) {
   append_vertex(p, 0.5, 0, 0);  // on edge 0–1: the new face is flat
   append_face(p, 1, 0, 16, 0);
   const std::string m = message(p);
-  EXPECT_TRUE(mentions(m, "1 zero-area")) << m;
+  EXPECT_TRUE(mentions(m, "1 zero-area face ")) << m;
   EXPECT_TRUE(mentions(m, "face 18")) << m;
   EXPECT_TRUE(mentions(m, "Remove Zero Area Faces")) << m;
 }
@@ -138,7 +138,7 @@ TEST(Validate, NonManifoldEdge) {
   append_vertex(p, 0.5, -1, -1);
   append_face(p, 1, 0, 17, 0);
   const std::string m = message(p);
-  EXPECT_TRUE(mentions(m, "1 non-manifold")) << m;
+  EXPECT_TRUE(mentions(m, "1 non-manifold edge ")) << m;
   EXPECT_TRUE(mentions(m, "vertices 0 and 1")) << m;
   EXPECT_TRUE(mentions(m, "Repair non Manifold Edges")) << m;
 }

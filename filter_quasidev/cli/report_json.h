@@ -1,0 +1,24 @@
+// The --report JSON: every figure of a qd::Result (input AE, totals before/after, per patch with
+// its per-iteration history, factorisations, time) plus what was run (files, mesh size,
+// parameters in model units and in AE units). Input: the Result and its context. Output: text.
+#pragma once
+
+#include <string>
+
+#include "options.h"
+#include "result.h"
+
+namespace qd::cli {
+
+struct ReportContext {
+  const Options& options;
+  const Params& params;  // as passed to the engine (tolerances in model units)
+  int vertices;
+  int faces;
+  bool has_patch_ids;
+  int constrained_vertices;
+};
+
+std::string report_json(const Result& result, const ReportContext& context);
+
+}  // namespace qd::cli

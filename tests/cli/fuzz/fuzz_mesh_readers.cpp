@@ -1,0 +1,29 @@
+// Fuzz target of the mesh readers (libFuzzer entry point): any bytes given to the PLY, OBJ and
+// OFF readers must either parse or throw qd::Error — never crash, hang or read out of bounds.
+// Built with clang -fsanitize=fuzzer when QD_LIBFUZZER is on, else with fuzz_driver.cpp.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "error.h"
+#include "obj_reader.h"
+#include "off_reader.h"
+#include "ply_mesh.h"
+#include "ply_reader.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  try {
+    qd::meshio::mesh_from_ply(qd::meshio::parse_ply(bytes));
+  } catch (const qd::Error&) {
+  }
+  try {
+    qd::meshio::parse_obj(bytes);
+  } catch (const qd::Error&) {
+  }
+  try {
+    qd::meshio::parse_off(bytes);
+  } catch (const qd::Error&) {
+  }
+  return 0;
+}

@@ -1,0 +1,155 @@
+"""Generates the bad-input corpus of issue 6 (hostile and odd inputs for `quasidev`).
+
+Each case is (name, file bytes, extra arguments, expectation):
+  "fail"  — the command must exit 1 (bad input) or 2 (bad arguments) with one stderr line;
+  "odd"   — merely odd input: success, or a clean one-line failure; never a crash.
+Usage: python3 make_bad_corpus.py DIR   writes DIR/<name>.ply (or .obj/.off) and DIR/cases.json.
+"""
+import json
+import math
+import pathlib
+import struct
+import sys
+
+
+def ply_ascii(V, F, face_quality=None, vertex_flags=None):
+    head = ["ply", "format ascii 1.0", f"element vertex {len(V)}",
+            "property double x", "property double y", "property double z"]
+    if vertex_flags is not None:
+        head.append("property int flags")
+    head += [f"element face {len(F)}", "property list uchar int vertex_indices"]
+    if face_quality is not None:
+        head.append("property float quality")
+    head.append("end_header")
+    rows = []
+    for i, v in enumerate(V):
+        row = " ".join(repr(float(c)) for c in v)
+        rows.append(row + (f" {vertex_flags[i]}" if vertex_flags is not None else ""))
+    for i, f in enumerate(F):
+        row = f"{len(f)} " + " ".join(map(str, f))
+        rows.append(row + (f" {face_quality[i]}" if face_quality is not None else ""))
+    return ("\n".join(head + rows) + "\n").encode()
+
+
+def ply_binary(V, F):
+    head = (f"ply\nformat binary_little_endian 1.0\nelement vertex {len(V)}\n"
+            "property double x\nproperty double y\nproperty double z\n"
+            f"element face {len(F)}\nproperty list uchar int vertex_indices\nend_header\n")
+    body = b"".join(struct.pack("<3d", *v) for v in V)
+    body += b"".join(struct.pack("<B3i", 3, *f) for f in F)
+    return head.encode() + body
+
+
+def grid(n, height=lambda x, y: 0.1 * math.sin(2 * x) * math.cos(3 * y), scale=1.0):
+    V = [(scale * x / n, scale * y / n, scale * height(x / n, y / n))
+         for y in range(n + 1) for x in range(n + 1)]
+    F = []
+    for y in range(n):
+        for x in range(n):
+            a = y * (n + 1) + x
+            F += [(a, a + 1, a + n + 2), (a, a + n + 2, a + n + 1)]
+    return V, F
+
+
+def cylinder(n_around=24, n_along=12, bump=0.05):
+    V, F = [], []
+    for j in range(n_along + 1):
+        for i in range(n_around):
+            t = 2 * math.pi * i / n_around
+            z = j / n_along
+            r = 1 + bump * math.exp(-((t - 1) ** 2 + (z - 0.5) ** 2) / 0.05)
+            V.append((r * math.cos(t), r * math.sin(t), 2 * z))
+    for j in range(n_along):
+        for i in range(n_around):
+            a, b = j * n_around + i, j * n_around + (i + 1) % n_around
+            F += [(a, b, b + n_around), (a, b + n_around, a + n_around)]
+    return V, F
+
+
+def icosphere(levels=2):
+    p = (1 + 5 ** 0.5) / 2
+    V = [(-1, p, 0), (1, p, 0), (-1, -p, 0), (1, -p, 0), (0, -1, p), (0, 1, p), (0, -1, -p),
+         (0, 1, -p), (p, 0, -1), (p, 0, 1), (-p, 0, -1), (-p, 0, 1)]
+    F = [(0, 11, 5), (0, 5, 1), (0, 1, 7), (0, 7, 10), (0, 10, 11), (1, 5, 9), (5, 11, 4),
+         (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6), (3, 6, 8),
+         (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)]
+    V = [tuple(c / math.sqrt(sum(x * x for x in v)) for c in v) for v in V]
+    for _ in range(levels):
+        mid, F2 = {}, []
+
+        def m(a, b):
+            key = (min(a, b), max(a, b))
+            if key not in mid:
+                c = [(V[a][k] + V[b][k]) / 2 for k in range(3)]
+                s = math.sqrt(sum(x * x for x in c))
+                V.append(tuple(x / s for x in c))
+                mid[key] = len(V) - 1
+            return mid[key]
+        for a, b, c in F:
+            ab, bc, ca = m(a, b), m(b, c), m(c, a)
+            F2 += [(a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca)]
+        F = F2
+    return V, F
+
+
+def cases():
+    V, F = grid(12)
+    good = ply_ascii(V, F)
+    head = good[: good.index(b"end_header\n") + len(b"end_header\n")]
+    binary = ply_binary(V, F)
+    cV, cF = cylinder()
+    out = [
+        ("empty", b"", [], "fail"),
+        ("header_only", head, [], "fail"),
+        ("truncated_binary", binary[: len(binary) - 5], [], "fail"),
+        ("wrong_vertex_count", good.replace(f"vertex {len(V)}".encode(),
+                                            f"vertex {len(V) + 3}".encode()), [], "fail"),
+        ("index_out_of_range", ply_ascii(V, F[:-1] + [(0, 1, len(V))]), [], "fail"),
+        ("nan_coordinates", ply_ascii([(math.nan, 0, 0)] + V[1:], F), [], "fail"),
+        ("inf_coordinates", ply_ascii(V[:-1] + [(0, math.inf, 0)], F), [], "fail"),
+        ("negative_tolerance", good, ["--tolerance", "-1"], "fail"),
+        ("zero_iterations", good, ["--max-iter", "0"], "fail"),
+        ("nan_weight", good, ["--weight", "nan"], "fail"),
+        ("zero_area_faces", ply_ascii(V + [V[0], V[1]], F + [(0, 1, len(V) + 1)]), [], "odd"),
+        ("duplicate_faces", ply_ascii(V, F + F[:5]), [], "odd"),
+        ("non_manifold_edge", ply_ascii(V + [(0.5, 0.5, 1.0)], F + [(0, 1, len(V))]), [], "odd"),
+        ("non_manifold_vertex",
+         ply_ascii(V + [(-1, -1, 0.3), (-1, 0, 0.2)], F + [(0, len(V), len(V) + 1)]), [], "odd"),
+        ("isolated_vertices", ply_ascii(V + [(5, 5, 5), (6, 6, 6)], F), [], "odd"),
+        ("single_triangle", ply_ascii([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [(0, 1, 2)]), [], "odd"),
+        ("every_face_own_patch", ply_ascii(V, F, face_quality=list(range(len(F)))), [], "odd"),
+        ("patch_all_selected", ply_ascii(cV, cF, face_quality=[0] * len(cF),
+                                         vertex_flags=[0x20] * len(cV)), [], "odd"),
+        ("closed_sphere", ply_ascii(*icosphere()), [], "odd"),
+        ("flat_patch", ply_ascii(*grid(10, height=lambda x, y: 0.0)), [], "odd"),
+        ("huge_coordinates", ply_ascii(*grid(12, scale=1e12)), [], "odd"),
+        ("tiny_coordinates", ply_ascii(*grid(12, scale=1e-12)), [], "odd"),
+        ("bumpy_cylinder", ply_ascii(cV, cF), [], "odd"),
+    ]
+    bV, bF = grid(224, height=lambda x, y: 0.05 * math.sin(7 * x) * math.sin(5 * y))
+    out.append(("hundred_thousand_patches", ply_binary_quality(bV, bF[:100000]), [], "odd"))
+    return out
+
+
+def ply_binary_quality(V, F):
+    head = (f"ply\nformat binary_little_endian 1.0\nelement vertex {len(V)}\n"
+            "property double x\nproperty double y\nproperty double z\n"
+            f"element face {len(F)}\nproperty list uchar int vertex_indices\n"
+            "property float quality\nend_header\n")
+    body = b"".join(struct.pack("<3d", *v) for v in V)
+    body += b"".join(struct.pack("<B3if", 3, *f, float(i)) for i, f in enumerate(F))
+    return head.encode() + body
+
+
+def main(directory):
+    d = pathlib.Path(directory)
+    d.mkdir(parents=True, exist_ok=True)
+    index = []
+    for name, data, args, expect in cases():
+        (d / f"{name}.ply").write_bytes(data)
+        index.append({"name": name, "file": f"{name}.ply", "args": args, "expect": expect})
+    (d / "cases.json").write_text(json.dumps(index, indent=1) + "\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "bad_corpus")

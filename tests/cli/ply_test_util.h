@@ -1,0 +1,34 @@
+// Helpers of the reader/writer tests: building small PLY tables and parsing bytes to a mesh.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh_file.h"
+#include "ply_file.h"
+
+namespace qd::meshio::test {
+
+PlyProperty scalar(const std::string& name, ScalarType type, std::vector<double> values);
+PlyProperty list(const std::string& name, ScalarType count_type, ScalarType type,
+                 const std::vector<std::vector<double>>& lists);
+
+// A unit square made of two triangles plus one quad (5 vertices), with a per-corner texcoord
+// list, a face quality (patch id), vertex flags (vertex 4 selected) and an extra "edge" element.
+PlyFile sample_ply();
+
+// parse_ply then mesh_from_ply.
+MeshFile mesh_of(const std::string& bytes);
+
+// The message of the qd::Error that `f` throws ("" if it throws none).
+template <typename F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace qd::meshio::test

@@ -1,0 +1,42 @@
+"""Runs `quasidev` on every case of the generated bad-input corpus (make_bad_corpus.py).
+
+"fail" cases: exit 1 or 2 with one stderr line, no output, and an existing output untouched.
+"odd" cases: success with a complete output (same face count), or such a clean failure.
+Never a signal, never a partial file.
+"""
+import pathlib
+import sys
+
+import pytest
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import make_bad_corpus  # noqa: E402
+from plyfile import element, read_ply  # noqa: E402
+from test_quasidev_cli import BINARY, run  # noqa: E402
+
+CASES = make_bad_corpus.cases()
+
+pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c[0] for c in CASES])
+def test_corpus_case(case, tmp_path):
+    name, data, args, expect = case
+    src = tmp_path / f"{name}.ply"
+    src.write_bytes(data)
+    out = tmp_path / "out.ply"
+    out.write_bytes(b"precious")
+    r = run(src, out, *args, timeout=600)
+    assert r.returncode >= 0, f"killed by signal {-r.returncode}: {r.stderr}"
+    if expect == "fail" or r.returncode != 0:
+        assert r.returncode in (1, 2), r.stderr
+        lines = r.stderr.splitlines()
+        assert len(lines) == 1 and lines[0].startswith("quasidev: error: "), r.stderr
+        assert out.read_bytes() == b"precious"
+    else:
+        res, _ = read_ply(out)
+        inp_faces = data.count(b"\n3 ") if data.startswith(b"ply\nformat ascii") else None
+        assert element(res, "vertex")[1] > 0
+        if inp_faces is not None:
+            assert element(res, "face")[1] == inp_faces
+    assert not list(tmp_path.glob("*quasidev-tmp*"))

@@ -1,0 +1,175 @@
+// Robust quality range and colour ramp; command-line options and their defaults.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "json_writer.h"
+#include "options.h"
+#include "quality_range.h"
+
+namespace {
+
+TEST(QualityRange, PercentilesIgnoreOutliersAndNonFiniteValues) {
+  std::vector<double> q;
+  for (int i = 0; i <= 100; ++i) q.push_back(i);
+  q.push_back(std::numeric_limits<double>::quiet_NaN());
+  q.push_back(std::numeric_limits<double>::infinity());
+  const qd::QualityRange r = qd::robust_quality_range(q);
+  EXPECT_DOUBLE_EQ(r.lo, 2.0);
+  EXPECT_DOUBLE_EQ(r.hi, 98.0);
+  q.push_back(1e9);  // one outlier barely shifts the range
+  EXPECT_LT(qd::robust_quality_range(q).hi, 100.0);
+  const qd::QualityRange full = qd::robust_quality_range({3, 1, 2}, 0, 100);
+  EXPECT_EQ(full.lo, 1.0);
+  EXPECT_EQ(full.hi, 3.0);
+  EXPECT_DOUBLE_EQ(qd::robust_quality_range({0, 10}, 25, 50).lo, 2.5);
+  EXPECT_EQ(qd::robust_quality_range({}).hi, 0.0);
+}
+
+TEST(QualityRange, RampGoesRedGreenBlueAndClamps) {
+  const qd::QualityRange r{-1, 1};
+  using C = std::array<unsigned char, 3>;
+  EXPECT_EQ(qd::ramp_color(-1, r), (C{255, 0, 0}));
+  EXPECT_EQ(qd::ramp_color(-5, r), (C{255, 0, 0}));
+  EXPECT_EQ(qd::ramp_color(0, r), (C{0, 255, 0}));
+  EXPECT_EQ(qd::ramp_color(1, r), (C{0, 0, 255}));
+  EXPECT_EQ(qd::ramp_color(7, r), (C{0, 0, 255}));
+  EXPECT_EQ(qd::ramp_color(-0.5, r), (C{255, 255, 0}));
+  EXPECT_EQ(qd::ramp_color(0.5, r), (C{0, 255, 255}));
+  EXPECT_EQ(qd::ramp_color(3, qd::QualityRange{2, 2}), (C{0, 255, 0}));
+  // Monotone: red falls then blue rises along the ramp.
+  int previous_red = 256, previous_blue = -1;
+  for (int i = 0; i <= 40; ++i) {
+    const C c = qd::ramp_color(-1 + i / 20.0, r);
+    EXPECT_LE(c[0], previous_red);
+    EXPECT_GE(c[2], previous_blue);
+    previous_red = c[0];
+    previous_blue = c[2];
+  }
+}
+
+qd::cli::Options parse(std::vector<std::string> args) { return qd::cli::parse_options(args); }
+
+std::string usage_error(std::vector<std::string> args) {
+  try {
+    parse(args);
+  } catch (const qd::cli::UsageError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Options, DefaultsComeFromParams) {
+  const qd::cli::Options o = parse({"in.ply", "out.ply"});
+  const qd::Params d;
+  EXPECT_EQ(o.input, "in.ply");
+  EXPECT_EQ(o.output, "out.ply");
+  EXPECT_EQ(o.tolerance_ae, qd::cli::kDefaultToleranceAE);
+  EXPECT_EQ(o.params.max_iter, d.max_iter);
+  EXPECT_EQ(o.params.weight, d.weight);
+  EXPECT_EQ(o.params.anchor, d.anchor);
+  EXPECT_EQ(o.params.stop_abd, d.stop_abd);
+  EXPECT_EQ(o.params.stop_obd, d.stop_obd);
+  EXPECT_EQ(o.params.seams, d.seams);
+  EXPECT_EQ(o.params.targets, d.targets);
+  EXPECT_EQ(o.params.tolerance_mode, d.tolerance_mode);
+  EXPECT_EQ(o.params.keep_boundary, d.keep_boundary);
+  EXPECT_TRUE(o.color);
+  EXPECT_TRUE(o.report.empty());
+}
+
+TEST(Options, ParsesEveryOption) {
+  const qd::cli::Options o =
+      parse({"--tolerance", "0.5", "in.obj", "--tolerance-mode=total", "--max-iter", "3", "--seams",
+             "free", "--free-boundary", "--weight", "12", "--anchor", "0", "--targets", "refit",
+             "--stop-abd", "0.5", "--stop-obd=2", "--patch-tolerance", "2=0.01", "--patch-tolerance",
+             "-1=3", "--constraints", "c.txt", "--quality", "displacement", "--no-color", "--report",
+             "r.json", "--quiet", "--progress", "out.ply"});
+  EXPECT_EQ(o.input, "in.obj");
+  EXPECT_EQ(o.output, "out.ply");
+  EXPECT_EQ(o.tolerance_ae, 0.5);
+  EXPECT_EQ(o.params.tolerance_mode, qd::ToleranceMode::Total);
+  EXPECT_EQ(o.params.max_iter, 3);
+  EXPECT_EQ(o.params.seams, qd::SeamMode::Free);
+  EXPECT_FALSE(o.params.keep_boundary);
+  EXPECT_EQ(o.params.weight, 12);
+  EXPECT_EQ(o.params.anchor, 0);
+  EXPECT_EQ(o.params.targets, qd::TargetMode::Refit);
+  EXPECT_EQ(o.params.stop_abd, 0.5);
+  EXPECT_EQ(o.params.stop_obd, 2);
+  EXPECT_EQ(o.patch_tolerance_ae, (std::map<int, double>{{-1, 3.0}, {2, 0.01}}));
+  EXPECT_EQ(o.constraints, "c.txt");
+  EXPECT_EQ(o.quality, qd::cli::QualityKind::Displacement);
+  EXPECT_FALSE(o.color);
+  EXPECT_EQ(o.report, "r.json");
+  EXPECT_TRUE(o.quiet);
+  EXPECT_EQ(o.progress, qd::cli::ProgressMode::On);
+}
+
+TEST(Options, RejectsBadCommandLines) {
+  const std::pair<std::vector<std::string>, const char*> cases[] = {
+      {{"in.ply"}, "expected INPUT and OUTPUT, got 1"},
+      {{"a", "b", "c"}, "got 3"},
+      {{"a", "b", "--frobnicate"}, "unknown option '--frobnicate'"},
+      {{"a", "b", "--tolerance", "-1"}, "--tolerance must be greater than 0, got -1"},
+      {{"a", "b", "--tolerance", "0"}, "--tolerance must be greater than 0"},
+      {{"a", "b", "--tolerance", "nan"}, "--tolerance expects a finite number, got 'nan'"},
+      {{"a", "b", "--tolerance"}, "--tolerance needs a value"},
+      {{"a", "b", "--max-iter", "0"}, "--max-iter expects a whole number from 1 to 100000, got '0'"},
+      {{"a", "b", "--max-iter", "2.5"}, "--max-iter expects a whole number"},
+      {{"a", "b", "--weight", "nan"}, "--weight expects a finite number"},
+      {{"a", "b", "--anchor", "-2"}, "--anchor must not be negative"},
+      {{"a", "b", "--seams", "loose"}, "--seams expects fixed|free, got 'loose'"},
+      {{"a", "b", "--targets", "x"}, "--targets expects fixed|reproject|refit"},
+      {{"a", "b", "--tolerance-mode", "x"}, "--tolerance-mode expects step|total"},
+      {{"a", "b", "--patch-tolerance", "3"}, "--patch-tolerance expects ID=X"},
+      {{"a", "b", "--patch-tolerance", "3=-1"}, "--patch-tolerance must be greater than 0"},
+      {{"a", "a"}, "OUTPUT is the INPUT file; pass --overwrite-input"},
+      {{"a", "b", "--report", "b"}, "the --report file must differ"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const std::string message = usage_error(args);
+    EXPECT_NE(message.find(expected), std::string::npos) << "got '" << message << "'";
+  }
+  EXPECT_TRUE(usage_error({"a", "a", "--overwrite-input"}).empty());
+  EXPECT_TRUE(parse({"--help"}).help);
+  EXPECT_TRUE(parse({"--version"}).version);
+  EXPECT_EQ(parse({"--", "-in.ply", "out.ply"}).input, "-in.ply");
+}
+
+TEST(Options, HelpNamesEveryOptionAndTheDefaults) {
+  const std::string help = qd::cli::help_text();
+  for (const char* option :
+       {"--report", "--tolerance ", "--tolerance-mode", "--max-iter", "--seams", "--keep-boundary",
+        "--free-boundary", "--weight", "--anchor", "--targets", "--stop-abd", "--stop-obd",
+        "--patch-tolerance", "--constraints", "--quality", "--no-color", "--progress", "--quiet",
+        "--version", "--help", "--overwrite-input"})
+    EXPECT_NE(help.find(option), std::string::npos) << option;
+  const qd::Params d;
+  EXPECT_NE(help.find("(default " + std::to_string(d.max_iter) + ")"), std::string::npos);
+  EXPECT_NE(help.find("reproject)"), std::string::npos);
+}
+
+TEST(JsonWriter, NestsEscapesAndKeepsFullPrecision) {
+  qd::cli::JsonWriter j;
+  j.begin_object();
+  j.value("x", 0.1);
+  j.value("s", std::string("a\"b\\c\n"));
+  j.value("bad", std::numeric_limits<double>::quiet_NaN());
+  j.begin_array("empty");
+  j.end_array();
+  j.begin_array("list");
+  j.value(nullptr, 1);
+  j.value(nullptr, true);
+  j.end_array();
+  j.end_object();
+  const std::string& t = j.text();
+  EXPECT_NE(t.find("\"x\": 0.10000000000000001"), std::string::npos) << t;
+  EXPECT_NE(t.find("\"s\": \"a\\\"b\\\\c\\u000a\""), std::string::npos) << t;
+  EXPECT_NE(t.find("\"bad\": null"), std::string::npos);
+  EXPECT_NE(t.find("\"empty\": []"), std::string::npos) << t;
+  EXPECT_NE(t.find("1,\n    true"), std::string::npos) << t;
+}
+
+}  // namespace

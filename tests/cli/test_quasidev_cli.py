@@ -1,0 +1,307 @@
+"""End-to-end tests of the built `quasidev` command.
+
+The binary is $QUASIDEV if set, else $QD_BUILD_DIR/bin/quasidev (QD_BUILD_DIR defaults to the
+repository's build/). Meshes: sample_meshes/*.ply of the repository and, where present, the shared
+developer meshes (../shared/meshes beside the repository, or $QD_SHARED_MESHES).
+"""
+import json
+import math
+import os
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from plyfile import column, element, has, prop_type, read_ply  # noqa: E402
+
+REPO = pathlib.Path(__file__).resolve().parents[2]
+BUILD = pathlib.Path(os.environ.get("QD_BUILD_DIR", REPO / "build"))
+BINARY = pathlib.Path(os.environ.get("QUASIDEV", BUILD / "bin" / "quasidev"))
+SHARED = pathlib.Path(os.environ.get("QD_SHARED_MESHES", REPO.parent / "shared" / "meshes"))
+if not SHARED.is_dir():
+    SHARED = pathlib.Path("/work/shared/meshes")
+
+SAMPLES = sorted((REPO / "sample_meshes").glob("*.ply"))
+# Shared meshes the command must handle: texture coordinates, face quality, int patch, patches.
+SHARED_GOOD = [SHARED / n for n in ("developable_crumpled_crane.ply",
+                                    "garment_shirt_initial_diffavatar.ply")]
+SHARED_GOOD = [p for p in SHARED_GOOD if p.exists()]
+
+pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
+
+
+def run(*args, timeout=600):
+    return subprocess.run([str(BINARY), *map(str, args)], capture_output=True, text=True,
+                          timeout=timeout)
+
+
+def assert_clean_failure(r, output, status=None):
+    """Non-zero exit by status (not a signal), one stderr line, no OUTPUT written."""
+    assert r.returncode > 0, f"exit {r.returncode} (negative = killed by a signal): {r.stderr}"
+    if status is not None:
+        assert r.returncode == status, r.stderr
+    lines = r.stderr.splitlines()
+    assert len(lines) == 1, r.stderr
+    assert lines[0].startswith("quasidev: error: ") and len(lines[0]) > len("quasidev: error: ") + 5
+    assert not pathlib.Path(output).exists()
+    leftovers = [p for p in pathlib.Path(output).parent.glob("*quasidev-tmp*")]
+    assert not leftovers, leftovers
+
+
+def read_input_faces(path):
+    elements, _ = read_ply(path)
+    return elements
+
+
+# ---------------------------------------------------------------------------------------------
+# Success
+
+
+@pytest.mark.parametrize("mesh", SAMPLES + SHARED_GOOD, ids=lambda p: p.name)
+def test_success_keeps_order_adds_quality_and_colour(mesh, tmp_path):
+    out, report = tmp_path / "out.ply", tmp_path / "report.json"
+    r = run(mesh, out, "--report", report)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip(), "the per-patch log goes to stdout"
+    inp = read_input_faces(mesh)
+    res, _ = read_ply(out)
+    # Same vertices and faces, same order; positions double.
+    assert element(res, "vertex")[1] == element(inp, "vertex")[1]
+    in_faces = column(inp, "face", "vertex_indices")
+    assert column(res, "face", "vertex_indices") == in_faces
+    assert prop_type(res, "vertex", "x") == "double"
+    # Quality finite, colours present and not all equal (the ramp spans the range).
+    q = column(res, "vertex", "quality")
+    assert all(math.isfinite(v) for v in q)
+    colours = set(zip(column(res, "vertex", "red"), column(res, "vertex", "green"),
+                      column(res, "vertex", "blue")))
+    assert len(colours) > 1 or len(set(q)) == 1
+    assert set(column(res, "vertex", "alpha")) == {255}
+    # Every face property of the input passes through bit-identical (texcoord, quality, patch).
+    for name, _, _, values in element(inp, "face")[2]:
+        assert column(res, "face", name) == values, name
+    # The displacement respects the tolerance bound loosely: no vertex flies away.
+    rep = json.loads(report.read_text())
+    assert rep["faces"] == len(in_faces)
+    assert rep["average_edge"] > 0
+    assert rep["patches"], "one entry per patch"
+    for p in rep["patches"]:
+        for key in ("id", "faces", "vertices", "free_vertices", "tolerance", "target_kind",
+                    "fit_residual_deg", "iterations", "stop_reason", "before", "after",
+                    "abd_reduction", "obd_reduction", "time_ms", "history"):
+            assert key in p, key
+    assert sum(p["faces"] for p in rep["patches"]) == len(in_faces)
+    assert rep["total_after"]["g_abd"] <= rep["total_before"]["g_abd"] * (1 + 1e-9)
+    assert not list(tmp_path.glob("*quasidev-tmp*"))
+
+
+def test_texcoords_and_face_quality_pass_through(tmp_path):
+    mesh = SHARED / "garment_shirt_initial_diffavatar.ply"
+    if not mesh.exists():
+        pytest.skip("shared garment mesh missing")
+    out = tmp_path / "out.ply"
+    assert run(mesh, out, "--quiet").returncode == 0
+    inp, in_comments = read_ply(mesh)
+    res, out_comments = read_ply(out)
+    assert column(res, "face", "texcoord") == column(inp, "face", "texcoord")
+    assert column(res, "face", "quality") == column(inp, "face", "quality")
+    assert column(res, "face", "patch") == column(inp, "face", "patch")
+    assert out_comments == in_comments
+
+
+def test_displacement_quality_equals_the_vertex_moves(tmp_path):
+    mesh = SAMPLES[0] if SAMPLES else SHARED_GOOD[0]
+    out = tmp_path / "out.ply"
+    assert run(mesh, out, "--quality", "displacement", "--no-color", "--quiet").returncode == 0
+    inp, _ = read_ply(mesh)
+    res, _ = read_ply(out)
+    assert not has(res, "vertex", "red")
+    moved = [math.dist(a, b) for a, b in zip(
+        zip(*(column(inp, "vertex", c) for c in "xyz")),
+        zip(*(column(res, "vertex", c) for c in "xyz")))]
+    q = column(res, "vertex", "quality")
+    assert max(moved) > 0, "the sample should move"
+    assert max(abs(a - b) for a, b in zip(moved, q)) <= 1e-9 * max(1.0, max(moved))
+
+
+def test_constrained_vertices_do_not_move(tmp_path):
+    mesh = SAMPLES[0] if SAMPLES else SHARED_GOOD[0]
+    inp, _ = read_ply(mesh)
+    n = element(inp, "vertex")[1]
+    chosen = list(range(0, n, 7))
+    cfile = tmp_path / "fixed.txt"
+    cfile.write_text("# every 7th vertex\n" + "\n".join(map(str, chosen)) + "\n")
+    out, report = tmp_path / "out.ply", tmp_path / "r.json"
+    r = run(mesh, out, "--constraints", cfile, "--report", report, "--quiet")
+    assert r.returncode == 0, r.stderr
+    res, _ = read_ply(out)
+    for c in "xyz":
+        a, b = column(inp, "vertex", c), column(res, "vertex", c)
+        assert all(a[i] == b[i] for i in chosen)
+    assert json.loads(report.read_text())["constrained_vertices"] >= len(chosen)
+
+
+def test_output_is_deterministic(tmp_path):
+    mesh = SAMPLES[0] if SAMPLES else SHARED_GOOD[0]
+    a, b = tmp_path / "a.ply", tmp_path / "b.ply"
+    assert run(mesh, a, "--quiet").returncode == 0
+    assert run(mesh, b, "--quiet").returncode == 0
+    assert a.read_bytes() == b.read_bytes()
+
+
+def test_obj_groups_become_patches(tmp_path):
+    ply = SHARED / "garment_shirt_initial_diffavatar.ply"
+    obj = SHARED / "obj" / "garment_shirt_initial_diffavatar.obj"
+    if not obj.exists():
+        pytest.skip("shared OBJ missing")
+    reports = []
+    for i, mesh in enumerate((ply, obj)):
+        rep = tmp_path / f"r{i}.json"
+        r = run(mesh, tmp_path / f"o{i}.ply", "--report", rep, "--quiet")
+        assert r.returncode == 0, r.stderr
+        reports.append(json.loads(rep.read_text()))
+    assert reports[1]["has_patch_ids"]
+    assert reports[0]["faces"] == reports[1]["faces"]
+    assert sorted(p["faces"] for p in reports[0]["patches"]) == \
+        sorted(p["faces"] for p in reports[1]["patches"])
+
+
+def test_quiet_prints_nothing_and_polygons_are_noted(tmp_path):
+    src = tmp_path / "quads.obj"
+    rows = [f"v {x} {y} {0.05 * math.sin(x) * math.cos(y)}" for y in range(8) for x in range(8)]
+    quads = [f"f {y * 8 + x + 1} {y * 8 + x + 2} {y * 8 + x + 10} {y * 8 + x + 9}"
+             for y in range(7) for x in range(7)]
+    src.write_text("\n".join(rows + quads) + "\n")
+    r = run(src, tmp_path / "q.ply", "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert r.stdout == "" and r.stderr == ""
+    r = run(src, tmp_path / "n.ply")
+    assert r.returncode == 0, r.stderr
+    assert "fan-triangulated" in r.stderr
+    res, _ = read_ply(tmp_path / "n.ply")
+    assert element(res, "face")[1] == 2 * 49
+
+
+def test_help_and_version():
+    r = run("--help")
+    assert r.returncode == 0
+    for opt in ("--report", "--tolerance", "--tolerance-mode", "--max-iter", "--seams",
+                "--keep-boundary", "--free-boundary", "--weight", "--anchor", "--targets",
+                "--stop-abd", "--stop-obd", "--patch-tolerance", "--constraints", "--quality",
+                "--no-color", "--progress", "--quiet", "--version"):
+        assert opt in r.stdout, opt
+    assert "default" in r.stdout
+    r = run("--version")
+    assert r.returncode == 0 and r.stdout.startswith("quasidev ")
+
+
+def test_refuses_to_overwrite_input_unless_asked(tmp_path):
+    mesh = SAMPLES[0] if SAMPLES else SHARED_GOOD[0]
+    copy = tmp_path / "in.ply"
+    copy.write_bytes(mesh.read_bytes())
+    alias = tmp_path / "." / "in.ply"
+    r = run(copy, alias)
+    assert r.returncode == 2 and "overwrite-input" in r.stderr
+    assert copy.read_bytes() == mesh.read_bytes()
+    r = run(copy, copy, "--overwrite-input", "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert copy.read_bytes() != mesh.read_bytes()
+
+
+# ---------------------------------------------------------------------------------------------
+# Failure: exit status, one line, no output, existing output untouched
+
+ASCII_HEAD = ("ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+              "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+              "end_header\n")
+GOOD_BODY = "0 0 0\n1 0 0\n1 1 0.2\n0 1 0\n3 0 1 2\n3 0 2 3\n"
+
+
+def bad_inputs():
+    sample = (SAMPLES or SHARED_GOOD)[0].read_bytes()
+    return {
+        "empty": b"",
+        "header_only": ASCII_HEAD.encode(),
+        "unterminated_header": b"ply\nformat ascii 1.0\nelement vertex 4\n",
+        "truncated_binary": sample[: len(sample) * 2 // 3],
+        "too_few_vertices": (ASCII_HEAD + "0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n3 0 2 3\n").encode(),
+        "too_many_faces": (ASCII_HEAD + GOOD_BODY + "3 0 1 3\n").encode(),
+        "huge_count": ASCII_HEAD.replace("vertex 4", "vertex 1000000000000").encode() + b"0 0 0\n",
+        "index_out_of_range": (ASCII_HEAD + GOOD_BODY.replace("3 0 2 3", "3 0 2 9")).encode(),
+        "nan_coordinate": (ASCII_HEAD + GOOD_BODY.replace("1 1 0.2", "1 nan 0.2")).encode(),
+        "garbage": bytes(range(256)) * 4,
+    }
+
+
+@pytest.mark.parametrize("name", list(bad_inputs()))
+@pytest.mark.parametrize("existing_output", [False, True])
+def test_bad_input_fails_cleanly(name, existing_output, tmp_path):
+    src = tmp_path / f"{name}.ply"
+    src.write_bytes(bad_inputs()[name])
+    out = tmp_path / "out.ply"
+    if existing_output:
+        out.write_bytes(b"precious")
+    r = run(src, out, "--report", tmp_path / "r.json")
+    assert r.returncode == 1, r.stderr
+    if existing_output:
+        assert out.read_bytes() == b"precious"
+        out.unlink()
+    assert_clean_failure(r, out)
+    assert not (tmp_path / "r.json").exists()
+
+
+BAD_ARGS = {
+    "unknown_option": ["--frobnicate"],
+    "negative_tolerance": ["--tolerance", "-1"],
+    "zero_tolerance": ["--tolerance", "0"],
+    "zero_iterations": ["--max-iter", "0"],
+    "nan_weight": ["--weight", "nan"],
+    "bad_seams": ["--seams", "sometimes"],
+    "missing_value": ["--report"],
+    "unknown_patch": ["--patch-tolerance", "123456=0.1"],
+}
+
+
+@pytest.mark.parametrize("name", list(BAD_ARGS))
+@pytest.mark.parametrize("existing_output", [False, True])
+def test_bad_arguments_exit_2(name, existing_output, tmp_path):
+    mesh = (SAMPLES or SHARED_GOOD)[0]
+    out = tmp_path / "out.ply"
+    if existing_output:
+        out.write_bytes(b"precious")
+    r = run(mesh, out, *BAD_ARGS[name])
+    if existing_output:
+        assert out.read_bytes() == b"precious"
+        out.unlink()
+    assert_clean_failure(r, out, status=2)
+
+
+def test_missing_input_and_unwritable_output(tmp_path):
+    out = tmp_path / "out.ply"
+    assert_clean_failure(run(tmp_path / "nope.ply", out), out, status=1)
+    mesh = (SAMPLES or SHARED_GOOD)[0]
+    deep = tmp_path / "no" / "dir" / "out.ply"
+    r = run(mesh, deep, "--quiet")
+    assert r.returncode == 1 and r.stderr.startswith("quasidev: error: ")
+    assert not deep.parent.exists()
+
+
+def test_bad_constraint_file(tmp_path):
+    mesh = (SAMPLES or SHARED_GOOD)[0]
+    cfile = tmp_path / "c.txt"
+    cfile.write_text("0\n99999999\n")
+    out = tmp_path / "out.ply"
+    r = run(mesh, out, "--constraints", cfile)
+    assert_clean_failure(r, out, status=1)
+    assert "line 2" in r.stderr
+
+
+def test_engine_refusal_is_one_line(tmp_path):
+    """A closed sphere-like mesh is far from developable: the engine says so, nothing is written."""
+    mesh = SHARED / "classic_spot_lowres_crane.ply"
+    if not mesh.exists():
+        pytest.skip("shared mesh missing")
+    out = tmp_path / "out.ply"
+    assert_clean_failure(run(mesh, out), out, status=1)

@@ -1,0 +1,198 @@
+"""Helpers of the MeshLab 2020.09 integration tests.
+
+Inputs: PLY files (read with scripts/plyio.py), .mlx filter scripts, the build directory.
+Outputs: meshes as numpy arrays, independent geometry figures (angle defects, boundary and seam
+vertices), the `quasidev` command line equivalent to an .mlx, and runners for the real
+meshlabserver (under xvfb-run) and the quasidev command.
+"""
+from __future__ import annotations
+
+import math
+import os
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(REPO / "scripts"))
+from plyio import PlyData, PlyElement, PlyProperty, read_ply, write_ply  # noqa: E402
+
+FILTER_NAME = "Quasi-Developable Approximation"
+SELECTED = 0x20  # vcg's SELECTED vertex flag, as MeshLab 2020.09 reads/writes PLY "flags"
+XVFB = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24"]
+
+
+def build_dir() -> Path:
+    return Path(os.environ.get("QD_BUILD_DIR", REPO / "build"))
+
+
+@dataclass
+class Mesh:
+    """A triangle mesh with the per-element attributes the tests look at (None = absent)."""
+    v: np.ndarray                        # (n, 3) float64
+    f: np.ndarray                        # (m, 3) int64
+    face_quality: np.ndarray | None = None
+    flags: np.ndarray | None = None      # per-vertex int flags
+    quality: np.ndarray | None = None    # per-vertex quality
+    color: np.ndarray | None = None      # (n, 3) uint8
+
+    @property
+    def selected(self) -> np.ndarray:
+        if self.flags is None:
+            return np.zeros(len(self.v), dtype=bool)
+        return (self.flags & SELECTED) != 0
+
+    def diagonal(self) -> float:
+        return float(np.linalg.norm(self.v.max(axis=0) - self.v.min(axis=0)))
+
+
+def _column(ply: PlyData, element: str, prop: str, dtype) -> np.ndarray | None:
+    return np.asarray(ply.get(element, prop), dtype=dtype) if ply.has(element, prop) else None
+
+
+def load_mesh(path: Path) -> Mesh:
+    ply = read_ply(path)
+    color = None
+    if all(ply.has("vertex", c) for c in ("red", "green", "blue")):
+        color = np.stack([np.asarray(ply.get("vertex", c), np.uint8) for c in ("red", "green", "blue")], 1)
+    return Mesh(v=np.asarray(ply.vertices(), np.float64).reshape(-1, 3),
+                f=np.asarray(ply.faces(), np.int64).reshape(-1, 3),
+                face_quality=_column(ply, "face", "quality", np.float64),
+                flags=_column(ply, "vertex", "flags", np.int64),
+                quality=_column(ply, "vertex", "quality", np.float64),
+                color=color)
+
+
+def save_float_mesh(mesh: Mesh, path: Path, face_quality: bool = True) -> None:
+    """Writes mesh with float32 x y z (what MeshLab 2020.09 stores), vertex flags and face
+    quality when present (face quality dropped when face_quality is False)."""
+    vprops = [PlyProperty(c, "float") for c in "xyz"]
+    vdata = {c: [float(x) for x in np.float32(mesh.v[:, k])] for k, c in enumerate("xyz")}
+    if mesh.flags is not None:
+        vprops.append(PlyProperty("flags", "int"))
+        vdata["flags"] = [int(x) for x in mesh.flags]
+    fprops = [PlyProperty("vertex_indices", "int", "uchar")]
+    fdata = {"vertex_indices": [tuple(int(i) for i in t) for t in mesh.f]}
+    if face_quality and mesh.face_quality is not None:
+        fprops.append(PlyProperty("quality", "float"))
+        fdata["quality"] = [float(q) for q in mesh.face_quality]
+    ply = PlyData(format="binary_little_endian", comments=["written by tests/meshlab"])
+    ply.elements["vertex"] = PlyElement("vertex", len(mesh.v), vprops, vdata)
+    ply.elements["face"] = PlyElement("face", len(mesh.f), fprops, fdata)
+    write_ply(path, ply)
+
+
+def float_rounded(mesh: Mesh) -> Mesh:
+    return Mesh(v=np.float32(mesh.v).astype(np.float64), f=mesh.f.copy(),
+                face_quality=None if mesh.face_quality is None else mesh.face_quality.copy(),
+                flags=None if mesh.flags is None else mesh.flags.copy())
+
+
+# ---- independent geometry -----------------------------------------------------------------------
+
+def _edge_faces(f: np.ndarray) -> dict[tuple[int, int], list[int]]:
+    edges: dict[tuple[int, int], list[int]] = {}
+    for k, (a, b, c) in enumerate(f):
+        for u, w in ((a, b), (b, c), (c, a)):
+            edges.setdefault((min(u, w), max(u, w)), []).append(k)
+    return edges
+
+
+def boundary_vertices(mesh: Mesh) -> np.ndarray:
+    mask = np.zeros(len(mesh.v), dtype=bool)
+    for (u, w), faces in _edge_faces(mesh.f).items():
+        if len(faces) == 1:
+            mask[[u, w]] = True
+    return mask
+
+
+def seam_vertices(mesh: Mesh) -> np.ndarray:
+    """Vertices whose faces carry more than one patch id (rounded face quality)."""
+    mask = np.zeros(len(mesh.v), dtype=bool)
+    if mesh.face_quality is None:
+        return mask
+    patch = np.rint(mesh.face_quality).astype(np.int64)
+    first = np.full(len(mesh.v), np.iinfo(np.int64).min)
+    for k, tri in enumerate(mesh.f):
+        for v in tri:
+            if first[v] == np.iinfo(np.int64).min:
+                first[v] = patch[k]
+            elif first[v] != patch[k]:
+                mask[v] = True
+    return mask
+
+
+def angle_defects(mesh: Mesh) -> np.ndarray:
+    """2π − Σθ per vertex (meaningful at interior vertices)."""
+    p = mesh.v[mesh.f]
+    total = np.zeros(len(mesh.v))
+    for k in range(3):
+        a, b, c = p[:, k], p[:, (k + 1) % 3], p[:, (k + 2) % 3]
+        e1, e2 = b - a, c - a
+        cosine = np.einsum("ij,ij->i", e1, e2) / (np.linalg.norm(e1, axis=1) * np.linalg.norm(e2, axis=1))
+        np.add.at(total, mesh.f[:, k], np.arccos(np.clip(cosine, -1.0, 1.0)))
+    return 2 * math.pi - total
+
+
+def integrated_curvature(mesh: Mesh, vertices: np.ndarray) -> float:
+    """Σ|2π − Σθ| over the given vertex mask (density-independent total curvature)."""
+    return float(np.abs(angle_defects(mesh)[vertices]).sum())
+
+
+# ---- .mlx scripts and the equivalent quasidev command ---------------------------------------------
+
+def mlx_parameters(path: Path) -> dict[str, tuple[str, str, list[str]]]:
+    """name -> (type, value, enum items) of the quasi-developable filter in an .mlx file."""
+    root = ET.parse(path).getroot()
+    for node in root.iter("filter"):
+        if node.get("name") == FILTER_NAME:
+            out = {}
+            for p in node.iter("Param"):
+                n = int(p.get("enum_cardinality", "0"))
+                out[p.get("name")] = (p.get("type"), p.get("value"), [p.get(f"enum_val{i}") for i in range(n)])
+            return out
+    raise AssertionError(f"{path} has no '{FILTER_NAME}' filter")
+
+
+def cli_arguments(params: dict[str, tuple[str, str, list[str]]]) -> tuple[list[str], bool]:
+    """The quasidev options equivalent to an .mlx's parameters, and whether patches are used.
+    The plugin's tolerance is absolute with 0 = 1 AE; the command's is in AE, so only 0 maps."""
+    def item(name):
+        _, value, items = params[name]
+        return items[int(value)]
+
+    def true(name):
+        return params[name][1] == "true"
+    assert float(params["tolerance"][1]) == 0, "tests use tolerance 0 (= 1 AE) so the command matches"
+    args = ["--tolerance", "1", "--tolerance-mode", item("tolerance_mode"),
+            "--max-iter", params["max_iter"][1], "--weight", params["weight"][1],
+            "--anchor", params["anchor"][1], "--seams", item("seam_mode"),
+            "--keep-boundary" if true("keep_boundary") else "--free-boundary",
+            "--targets", item("target_mode"), "--stop-abd", params["stop_abd"][1],
+            "--stop-obd", params["stop_obd"][1], "--quality", item("output_quality")]
+    if not true("colorize"):
+        args.append("--no-color")
+    return args, true("use_patches")
+
+
+# ---- running the binaries -------------------------------------------------------------------------
+
+def run_meshlabserver(prefix: Path, mesh_in: Path, mesh_out: Path, script: Path,
+                      saved: tuple[str, ...] = ("vc", "vq", "vf", "fq"),
+                      timeout: float = 600) -> subprocess.CompletedProcess:
+    """meshlabserver of the private prefix, under Xvfb, saving the `saved` attributes (default:
+    vertex colour, quality, flags and face quality). stdout and stderr are merged into .stdout."""
+    cmd = XVFB + [str(prefix / "bin" / "meshlabserver"), "-i", str(mesh_in), "-o", str(mesh_out),
+                  "-m", *saved, "-s", str(script)]
+    env = dict(os.environ, HOME=str(mesh_out.parent))
+    return subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          timeout=timeout, env=env, check=False)
+
+
+def run_quasidev(mesh_in: Path, mesh_out: Path, args: list[str], timeout: float = 600) -> subprocess.CompletedProcess:
+    cmd = [str(build_dir() / "bin" / "quasidev"), str(mesh_in), str(mesh_out), "--quiet", *args]
+    return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, check=False)

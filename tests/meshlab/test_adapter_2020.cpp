@@ -1,0 +1,245 @@
+// Unit tests of the shared MeshLab adapter (quasidev_adapter) compiled against MeshLab 2020.09's
+// CMeshO: the parameter table against sample_meshes/default.mlx, the settings mapping, and that
+// apply() writes only positions, quality, colour and normals on success and nothing on failure
+// (deleted elements, selection, face quality, face colours and texture coordinates untouched).
+#include <gtest/gtest.h>
+
+#include <QDomDocument>
+#include <QFile>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <common/ml_mesh_type.h>
+#include <vcg/complex/allocate.h>
+
+#include "quasidev_adapter.h"
+
+namespace {
+
+// An open cylinder (radius 1, height 2, `around` x `along` quads split into triangles) with one
+// smooth bump, so the filter has curvature to remove. Face quality = 0 everywhere.
+void make_bumpy_cylinder(CMeshO& m, int around = 24, int along = 12) {
+  m.Clear();
+  m.face.EnableQuality();
+  m.face.EnableColor();
+  m.face.EnableWedgeTexCoord();
+  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, static_cast<size_t>(around * (along + 1)));
+  for (int j = 0; j <= along; ++j)
+    for (int i = 0; i < around; ++i, ++vi) {
+      const double a = 2 * std::acos(-1.0) * i / around;
+      const double h = 2.0 * j / along;
+      const double bump = 0.08 * std::exp(-((a - 1) * (a - 1) + (h - 1) * (h - 1)) / 0.1);
+      vi->P() = CMeshO::CoordType(static_cast<float>((1 + bump) * std::cos(a)),
+                                  static_cast<float>((1 + bump) * std::sin(a)), static_cast<float>(h));
+    }
+  const auto index = [around](int i, int j) { return static_cast<size_t>(j * around + (i % around)); };
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[index(i, j)], &m.vert[index(i + 1, j)],
+                                          &m.vert[index(i + 1, j + 1)]);
+      vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[index(i, j)], &m.vert[index(i + 1, j + 1)],
+                                          &m.vert[index(i, j + 1)]);
+    }
+  for (size_t f = 0; f < m.face.size(); ++f) {
+    m.face[f].Q() = 0;
+    m.face[f].C() = vcg::Color4b(static_cast<unsigned char>(f % 251), 7, 9, 255);
+    for (int k = 0; k < 3; ++k) m.face[f].WT(k).U() = static_cast<float>(f) + 0.25f * static_cast<float>(k);
+  }
+}
+
+struct Snapshot {
+  std::vector<CMeshO::CoordType> positions;
+  std::vector<float> quality;
+  std::vector<vcg::Color4b> colours;
+  std::vector<int> vertex_flags;
+  std::vector<float> face_quality;
+  std::vector<vcg::Color4b> face_colours;
+  std::vector<float> texcoords;
+  std::vector<int> face_flags;
+};
+
+Snapshot snapshot(const CMeshO& m) {
+  Snapshot s;
+  for (const auto& v : m.vert) {
+    s.positions.push_back(v.cP());
+    s.quality.push_back(v.cQ());
+    s.colours.push_back(v.cC());
+    s.vertex_flags.push_back(v.cFlags());
+  }
+  for (const auto& f : m.face) {
+    s.face_quality.push_back(f.cQ());
+    s.face_colours.push_back(f.cC());
+    for (int k = 0; k < 3; ++k) s.texcoords.push_back(f.cWT(k).U());
+    s.face_flags.push_back(f.cFlags());
+  }
+  return s;
+}
+
+std::map<std::string, double> default_values(const CMeshO& m) {
+  std::map<std::string, double> values;
+  for (const qdml::ParamSpec& spec : qdml::parameter_specs(m)) values[spec.name] = spec.value;
+  return values;
+}
+
+}  // namespace
+
+TEST(Adapter2020, DefaultMlxListsEveryParameterAtItsDefault) {
+  CMeshO m;
+  make_bumpy_cylinder(m);
+  QFile file(QD_DEFAULT_MLX);
+  ASSERT_TRUE(file.open(QIODevice::ReadOnly)) << QD_DEFAULT_MLX;
+  QDomDocument doc;
+  ASSERT_TRUE(doc.setContent(&file));
+  const QDomNodeList params = doc.elementsByTagName("Param");
+  const std::vector<qdml::ParamSpec> specs = qdml::parameter_specs(m);
+  ASSERT_EQ(params.size(), static_cast<int>(specs.size()));
+  const std::map<qdml::ParamKind, QString> types = {{qdml::ParamKind::Float, "RichFloat"},
+                                                    {qdml::ParamKind::Int, "RichInt"},
+                                                    {qdml::ParamKind::Bool, "RichBool"},
+                                                    {qdml::ParamKind::Enum, "RichEnum"}};
+  for (int i = 0; i < params.size(); ++i) {
+    const QDomElement p = params.at(i).toElement();
+    const qdml::ParamSpec& spec = specs[static_cast<size_t>(i)];
+    EXPECT_EQ(p.attribute("name").toStdString(), spec.name);
+    EXPECT_EQ(p.attribute("type"), types.at(spec.kind)) << spec.name;
+    const QString value = p.attribute("value");
+    if (spec.kind == qdml::ParamKind::Bool) {
+      EXPECT_EQ(value == "true", spec.value != 0) << spec.name;
+    } else if (spec.name == "tolerance") {
+      EXPECT_EQ(value.toDouble(), 0.0) << "default.mlx must say 0 (= 1 AE of any mesh)";
+    } else {
+      EXPECT_DOUBLE_EQ(value.toDouble(), static_cast<double>(static_cast<float>(spec.value))) << spec.name;
+    }
+    if (spec.kind == qdml::ParamKind::Enum) {
+      ASSERT_EQ(p.attribute("enum_cardinality").toInt(), static_cast<int>(spec.items.size()));
+      for (size_t k = 0; k < spec.items.size(); ++k)
+        EXPECT_EQ(p.attribute(QString("enum_val%1").arg(k)).toStdString(), spec.items[k]);
+    }
+  }
+}
+
+TEST(Adapter2020, ToleranceDefaultIsTheAverageEdgeLength) {
+  CMeshO m;
+  make_bumpy_cylinder(m);
+  const std::vector<qdml::ParamSpec> specs = qdml::parameter_specs(m);
+  ASSERT_EQ(specs.front().name, "tolerance");
+  // Edges of the grid: around-edges 2 sin(pi/24) ~ 0.261, along-edges 1/6, diagonals ~ 0.31.
+  EXPECT_GT(specs.front().value, 1.0 / 6);
+  EXPECT_LT(specs.front().value, 0.32);
+  EXPECT_NE(specs.front().tooltip.find("AE = "), std::string::npos);
+}
+
+TEST(Adapter2020, SettingsFollowTheValues) {
+  CMeshO m;
+  make_bumpy_cylinder(m);
+  std::map<std::string, double> values = default_values(m);
+  const qdml::Settings defaults = qdml::settings_from_values(values);
+  const qd::Params engine_defaults;
+  EXPECT_EQ(defaults.params.max_iter, engine_defaults.max_iter);
+  EXPECT_EQ(defaults.params.seams, engine_defaults.seams);
+  EXPECT_EQ(defaults.params.targets, engine_defaults.targets);
+  EXPECT_EQ(defaults.params.weight, engine_defaults.weight);
+  values["seam_mode"] = 1;
+  values["target_mode"] = 2;
+  values["tolerance_mode"] = 1;
+  values["keep_boundary"] = 0;
+  values["output_quality"] = 1;
+  values["colorize"] = 0;
+  values["use_patches"] = 0;
+  values["max_iter"] = 3;
+  const qdml::Settings s = qdml::settings_from_values(values);
+  EXPECT_EQ(s.params.seams, qd::SeamMode::Free);
+  EXPECT_EQ(s.params.targets, qd::TargetMode::Refit);
+  EXPECT_EQ(s.params.tolerance_mode, qd::ToleranceMode::Total);
+  EXPECT_FALSE(s.params.keep_boundary);
+  EXPECT_TRUE(s.displacement_quality);
+  EXPECT_FALSE(s.colorize);
+  EXPECT_FALSE(s.use_patches);
+  EXPECT_EQ(s.params.max_iter, 3);
+}
+
+TEST(Adapter2020, ApplyWritesOnlyPositionsQualityAndColour) {
+  CMeshO m;
+  make_bumpy_cylinder(m);
+  // A deleted vertex and a deleted face must be skipped and left as they are.
+  auto extra = vcg::tri::Allocator<CMeshO>::AddVertices(m, 1);
+  extra->P() = CMeshO::CoordType(5, 5, 5);
+  vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[0], &m.vert[1], &*extra);
+  vcg::tri::Allocator<CMeshO>::DeleteFace(m, m.face.back());
+  vcg::tri::Allocator<CMeshO>::DeleteVertex(m, m.vert.back());
+  const size_t selected = 24 * 6 + 3;  // a vertex near the bump, selected = must not move
+  m.vert[selected].SetS();
+  const Snapshot before = snapshot(m);
+
+  const qdml::Outcome out = qdml::apply(m, true, qdml::settings_from_values(default_values(m)), nullptr);
+  ASSERT_TRUE(out.ok) << out.error;
+  const Snapshot after = snapshot(m);
+
+  EXPECT_EQ(after.vertex_flags, before.vertex_flags);
+  EXPECT_EQ(after.face_quality, before.face_quality);
+  EXPECT_EQ(after.face_colours, before.face_colours);
+  EXPECT_EQ(after.texcoords, before.texcoords);
+  EXPECT_EQ(after.face_flags, before.face_flags);
+  EXPECT_EQ(after.positions[selected], before.positions[selected]);
+  EXPECT_EQ(after.positions.back(), before.positions.back());  // the deleted vertex
+  EXPECT_EQ(after.colours.back(), before.colours.back());
+  size_t moved = 0;
+  for (size_t i = 0; i + 1 < m.vert.size(); ++i) {
+    moved += after.positions[i] != before.positions[i] ? 1 : 0;
+    EXPECT_FLOAT_EQ(after.quality[i], static_cast<float>(out.result.k_after[i])) << i;
+  }
+  EXPECT_GT(moved, 0u) << testing::PrintToString(out.log);
+  EXPECT_NE(after.colours, before.colours);
+  EXPECT_FALSE(out.log.empty());
+}
+
+TEST(Adapter2020, FailureLeavesTheMeshUntouched) {
+  CMeshO m;
+  make_bumpy_cylinder(m);
+  m.vert[40].P()[1] = std::numeric_limits<float>::quiet_NaN();
+  const Snapshot before = snapshot(m);
+  const qdml::Outcome out = qdml::apply(m, true, qdml::settings_from_values(default_values(m)), nullptr);
+  EXPECT_FALSE(out.ok);
+  EXPECT_NE(out.error.find("NaN"), std::string::npos) << out.error;
+  const Snapshot after = snapshot(m);
+  for (size_t i = 0; i < m.vert.size(); ++i) {
+    if (i == 40) continue;  // the NaN vertex (NaN != NaN)
+    EXPECT_EQ(after.positions[i], before.positions[i]);
+  }
+  EXPECT_EQ(after.quality, before.quality);
+  EXPECT_EQ(after.colours, before.colours);
+  EXPECT_EQ(after.vertex_flags, before.vertex_flags);
+}
+
+TEST(Adapter2020, TooSmallPatchFailsWithItsId) {
+  CMeshO m;
+  make_bumpy_cylinder(m);
+  m.face[10].Q() = 7.2f;  // rounds to patch 7, which has a single face
+  const qdml::Outcome out = qdml::apply(m, true, qdml::settings_from_values(default_values(m)), nullptr);
+  EXPECT_FALSE(out.ok);
+  EXPECT_NE(out.error.find("Patch 7"), std::string::npos) << out.error;
+  const qdml::Outcome ignored =
+      qdml::apply(m, false, qdml::settings_from_values(default_values(m)), nullptr);
+  EXPECT_TRUE(ignored.ok) << "without per-face quality the mesh is one patch: " << ignored.error;
+}
+TEST(Dbg, Tmp) {
+  for (int variant = 0; variant < 3; ++variant) {
+    CMeshO m;
+    make_bumpy_cylinder(m);
+    if (variant >= 1) m.vert[24 * 6 + 3].SetS();
+    if (variant == 2) {
+      auto extra = vcg::tri::Allocator<CMeshO>::AddVertices(m, 1);
+      extra->P() = CMeshO::CoordType(5, 5, 5);
+      vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[0], &m.vert[1], &*extra);
+      vcg::tri::Allocator<CMeshO>::DeleteFace(m, m.face.back());
+      vcg::tri::Allocator<CMeshO>::DeleteVertex(m, m.vert.back());
+    }
+    auto s = qdml::settings_from_values(default_values(m));
+    printf("variant %d max_iter %d tol %g\n", variant, s.params.max_iter, s.params.tolerance);
+    auto out = qdml::apply(m, true, s, nullptr);
+    for (auto& l : out.log) printf("  %s\n", l.c_str());
+  }
+}
