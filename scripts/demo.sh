@@ -12,7 +12,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 MESH="$(realpath "${1:-$ROOT/sample_meshes/lampshade.ply}")"
 SCRIPT="$(realpath "${2:-$ROOT/sample_meshes/default.mlx}")"
 OUT="$ROOT/out"
-BUILD="$ROOT/build"
+BUILD="${QD_BUILD_DIR:-$ROOT/build}"   # build directory (env QD_BUILD_DIR overrides)
 NAME="$(basename "$MESH" .ply)"
 die() { echo "[demo] FAILED: $*" >&2; exit 1; }
 

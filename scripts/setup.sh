@@ -22,9 +22,9 @@ if [ "$(id -u)" -eq 0 ]; then SUDO=(); else
 fi
 
 # ---- 1. Debian packages ---------------------------------------------------------------------
-PACKAGES=(cmake g++ make ninja-build pkg-config qtbase5-dev libqt5opengl5-dev libglew-dev
+PACKAGES=(cmake g++ make ninja-build qtbase5-dev libqt5opengl5-dev libglew-dev
           libeigen3-dev libsuitesparse-dev libgtest-dev libnanoflann-dev
-          meshlab xvfb xauth xdotool imagemagick libgl1-mesa-dri python3-venv python3-pip
+          meshlab xvfb xauth xdotool imagemagick libgl1-mesa-dri python3-venv
           ca-certificates debian-archive-keyring xz-utils)
 missing=()
 for p in "${PACKAGES[@]}"; do
@@ -97,8 +97,9 @@ if [ ! -x "$VENV/bin/python" ]; then
 fi
 shopt -s nullglob
 for req in "$ROOT"/scripts/requirements-*.txt; do
-  if "$VENV/bin/python" -m pip install --disable-pip-version-check -q --dry-run -r "$req" 2>/dev/null \
-       | grep -q "Would install"; then
+  plan=$("$VENV/bin/python" -m pip install --disable-pip-version-check --dry-run -r "$req" 2>&1) \
+    || die "pip cannot resolve ${req#"$ROOT"/}: $(tail -3 <<<"$plan")"
+  if grep -q "Would install" <<<"$plan"; then
     say "pip install -r ${req#"$ROOT"/}"
     "$VENV/bin/python" -m pip install --disable-pip-version-check -q -r "$req" || die "pip install -r $req"
   else

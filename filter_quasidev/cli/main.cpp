@@ -4,20 +4,18 @@
 // line "quasidev: error: REASON" goes to stderr and no OUTPUT (or report) file is written.
 #include <unistd.h>
 
-#include <algorithm>
-#include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <new>
 
 #include "atomic_file.h"
-#include "constraint_file.h"
 #include "mesh_reader.h"
+#include "mesh_problem.h"
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
-#include "quality_range.h"
 #include "quasidev.h"
 #include "report_json.h"
 
@@ -69,61 +67,6 @@ void check_paths(const Options& o) {
     throw qd::cli::UsageError("the --report file must differ from INPUT and OUTPUT");
 }
 
-qd::Problem make_problem(const qd::meshio::MeshFile& mesh, const Options& o) {
-  qd::Problem problem;
-  problem.V.resize(static_cast<Eigen::Index>(mesh.positions.size()), 3);
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      problem.V(static_cast<Eigen::Index>(i), k) = mesh.positions[i][static_cast<std::size_t>(k)];
-  problem.F.resize(static_cast<Eigen::Index>(mesh.triangles.size()), 3);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      problem.F(static_cast<Eigen::Index>(f), k) = mesh.triangles[f][static_cast<std::size_t>(k)];
-  problem.patch = mesh.patch;
-  problem.constrained = mesh.constrained;
-  if (!o.constraints.empty()) {
-    problem.constrained.resize(mesh.positions.size(), 0);
-    for (std::size_t v : qd::meshio::read_constraint_file(o.constraints, mesh.positions.size()))
-      problem.constrained[v] = 1;
-  }
-  const double ae = qd::average_edge_length(problem.V, problem.F);
-  if (!(ae > 0) || !std::isfinite(ae))
-    throw qd::Error("the mesh's average edge length is " + std::to_string(ae) +
-                    " (all vertices coincide?); nothing to approximate");
-  problem.params = o.params;
-  problem.params.tolerance = o.tolerance_ae * ae;
-  for (const auto& [id, x] : o.patch_tolerance_ae) {
-    if (std::find(mesh.patch.begin(), mesh.patch.end(), id) == mesh.patch.end() &&
-        !(mesh.patch.empty() && id == 0))
-      throw qd::cli::UsageError("--patch-tolerance names patch " + std::to_string(id) +
-                                ", which the mesh does not have");
-    problem.params.patch_tolerance[id] = x * ae;
-  }
-  return problem;
-}
-
-qd::meshio::OutputFields output_fields(const qd::Result& result, const Options& o,
-                                       std::size_t vertex_count) {
-  const std::vector<double>& q =
-      o.quality == qd::cli::QualityKind::Curvature ? result.k_after : result.displacement;
-  if (static_cast<std::size_t>(result.V.rows()) != vertex_count || q.size() != vertex_count)
-    throw qd::Error("internal error: the engine returned " + std::to_string(result.V.rows()) +
-                    " positions and " + std::to_string(q.size()) + " quality values for " +
-                    std::to_string(vertex_count) + " vertices");
-  qd::meshio::OutputFields fields;
-  fields.positions.resize(vertex_count);
-  for (std::size_t i = 0; i < vertex_count; ++i)
-    for (int k = 0; k < 3; ++k)
-      fields.positions[i][static_cast<std::size_t>(k)] = result.V(static_cast<Eigen::Index>(i), k);
-  fields.quality = q;
-  if (o.color) {
-    const qd::QualityRange range = qd::robust_quality_range(q);
-    fields.colors.reserve(vertex_count);
-    for (double value : q) fields.colors.push_back(qd::ramp_color(value, range));
-  }
-  return fields;
-}
-
 int count_constrained(const std::vector<char>& constrained) {
   int n = 0;
   for (char c : constrained) n += c ? 1 : 0;
@@ -133,14 +76,14 @@ int count_constrained(const std::vector<char>& constrained) {
 void run(const Options& o) {
   check_paths(o);
   const qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
-  const qd::Problem problem = make_problem(mesh, o);
+  const qd::Problem problem = qd::cli::make_problem(mesh, o);
   if (o.progress == qd::cli::ProgressMode::On ||
       (o.progress == qd::cli::ProgressMode::Auto && !o.quiet && isatty(STDERR_FILENO)))
     progress_line.enable();
   const qd::Result result = qd::approximate(
       problem, [](int percent, const std::string& message) { progress_line.show(percent, message); });
   progress_line.close();
-  const qd::meshio::OutputFields fields = output_fields(result, o, mesh.positions.size());
+  const qd::meshio::OutputFields fields = qd::cli::output_fields(result, o, mesh.positions.size());
   const std::string ply = qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
                                                     qd::meshio::PlyFormat::BinaryLittleEndian);
   qd::meshio::PendingFile output(o.output, ply);
@@ -151,7 +94,8 @@ void run(const Options& o) {
                                          static_cast<int>(mesh.positions.size()),
                                          static_cast<int>(mesh.triangles.size()),
                                          !mesh.patch.empty(),
-                                         count_constrained(problem.constrained)};
+                                         count_constrained(problem.constrained),
+                                         mesh.notes};
     report = std::make_unique<qd::meshio::PendingFile>(o.report, report_json(result, context));
   }
   output.commit();
@@ -173,6 +117,7 @@ int fail(const std::string& reason, int status) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::signal(SIGPIPE, SIG_IGN);  // a closed stdout must not kill the command by a signal
   try {
     const Options o = qd::cli::parse_options(std::vector<std::string>(argv + 1, argv + argc));
     if (o.help) {

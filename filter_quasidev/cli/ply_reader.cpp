@@ -114,10 +114,19 @@ std::size_t parse_header(std::string_view bytes, PlyFile& ply) {
   fail("the header is not terminated by 'end_header' (file truncated?)");
 }
 
-std::string element_place(const PlyElement& e, std::size_t i, const PlyProperty& p) {
-  return "property '" + p.name + "' of " + e.name + " " + std::to_string(i) + " (of " +
-         std::to_string(e.count) + ")";
-}
+// Where a value is read from: formatted only when a message needs it.
+struct Place {
+  const PlyElement& element;
+  std::size_t index;
+  const PlyProperty& property;
+  bool list_length;
+
+  std::string text() const {
+    return std::string(list_length ? "list length of " : "") + "property '" + property.name +
+           "' of " + element.name + " " + std::to_string(index) + " (of " +
+           std::to_string(element.count) + ")";
+  }
+};
 
 // Data source for ascii files: whitespace-separated tokens, line numbers for messages.
 class AsciiSource {
@@ -129,12 +138,12 @@ class AsciiSource {
   std::size_t min_bytes(ScalarType) const { return 1; }
   std::size_t remaining() const { return bytes_.size() - pos_; }
 
-  double read(ScalarType type, const std::string& place) {
+  double read(ScalarType type, const Place& place) {
     const std::string_view token = next_token(place);
     double value = 0;
     if (!parse_number(token, value) || !fits_scalar_type(type, value))
       fail("line " + std::to_string(line_) + ": '" + std::string(token.substr(0, 40)) +
-           "' is not a valid " + scalar_type_name(type) + " for " + place);
+           "' is not a valid " + scalar_type_name(type) + " for " + place.text());
     // A float property holds the nearest float, as a binary file would.
     return type == ScalarType::Float32 ? static_cast<double>(static_cast<float>(value)) : value;
   }
@@ -155,10 +164,10 @@ class AsciiSource {
     }
   }
 
-  std::string_view next_token(const std::string& place) {
+  std::string_view next_token(const Place& place) {
     skip_space();
     if (pos_ >= bytes_.size())
-      fail("the data ends early (line " + std::to_string(line_) + "): missing " + place +
+      fail("the data ends early (line " + std::to_string(line_) + "): missing " + place.text() +
            " (wrong element counts or truncated file)");
     const std::size_t start = pos_;
     while (pos_ < bytes_.size() && !is_space(bytes_[pos_])) ++pos_;
@@ -179,10 +188,10 @@ class BinarySource {
   std::size_t min_bytes(ScalarType type) const { return scalar_type_size(type); }
   std::size_t remaining() const { return bytes_.size() - pos_; }
 
-  double read(ScalarType type, const std::string& place) {
+  double read(ScalarType type, const Place& place) {
     const std::size_t size = scalar_type_size(type);
     if (bytes_.size() - pos_ < size)
-      fail("truncated binary data at byte " + std::to_string(pos_) + ": missing " + place);
+      fail("truncated binary data at byte " + std::to_string(pos_) + ": missing " + place.text());
     unsigned char raw[8];
     std::memcpy(raw, bytes_.data() + pos_, size);
     if (swap_)
@@ -247,17 +256,17 @@ void read_element(PlyElement& e, Source& source) {
   for (std::size_t i = 0; i < e.count; ++i) {
     for (PlyProperty& p : e.properties) {
       if (!p.is_list) {
-        p.values.push_back(source.read(p.type, element_place(e, i, p)));
+        p.values.push_back(source.read(p.type, Place{e, i, p, false}));
         continue;
       }
-      const double n = source.read(p.count_type, "list length of " + element_place(e, i, p));
-      if (n < 0) fail("negative list length for " + element_place(e, i, p));
+      const double n = source.read(p.count_type, Place{e, i, p, true});
+      if (n < 0) fail("negative list length of " + Place{e, i, p, false}.text());
       const auto length = static_cast<std::size_t>(n);
       if (length > source.remaining() / source.min_bytes(p.type))
-        fail("list length " + std::to_string(length) + " of " + element_place(e, i, p) +
+        fail("list length " + std::to_string(length) + " of " + Place{e, i, p, false}.text() +
              " exceeds the remaining data (truncated or corrupt file)");
       for (std::size_t k = 0; k < length; ++k)
-        p.values.push_back(source.read(p.type, element_place(e, i, p)));
+        p.values.push_back(source.read(p.type, Place{e, i, p, false}));
       p.offsets.push_back(p.values.size());
     }
   }

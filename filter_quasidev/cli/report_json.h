@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "options.h"
 #include "result.h"
@@ -17,6 +18,7 @@ struct ReportContext {
   int faces;
   bool has_patch_ids;
   int constrained_vertices;
+  const std::vector<std::string>& notes;  // the reader's remarks (e.g. polygons triangulated)
 };
 
 std::string report_json(const Result& result, const ReportContext& context);

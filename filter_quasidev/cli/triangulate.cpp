@@ -1,5 +1,6 @@
 #include "triangulate.h"
 
+#include <cmath>
 #include <string>
 
 #include "error.h"
@@ -15,6 +16,9 @@ void check_face(const PlyProperty& indices, std::size_t f, std::size_t vertex_co
                 " vertices; a face needs at least 3");
   for (std::size_t k = indices.offsets[f]; k < indices.offsets[f + 1]; ++k) {
     const double v = indices.values[k];
+    if (v != std::floor(v))
+      throw Error("face " + std::to_string(f) + " has vertex index " + std::to_string(v) +
+                  ", which is not a whole number");
     if (v < 0 || v >= static_cast<double>(vertex_count))
       throw Error("face " + std::to_string(f) + " uses vertex index " +
                   std::to_string(static_cast<long long>(v)) + ", out of range (the file has " +

@@ -39,12 +39,23 @@ BSpline2::BSpline2(std::vector<Vec2> control, bool periodic, Vec2 period_shift)
     : control_(std::move(control)), periodic_(periodic), shift_(period_shift) {
   const int n = control_count();
   if (n < kDegree + 1) throw Error("internal: a cubic B-spline needs at least 4 control points");
-  if (periodic_) return;
-  // Clamped knot vector with uniform interior knots on [0, 1] (n + 4 knots).
-  knots_.assign(n + kDegree + 1, 0.0);
-  const int spans = n - kDegree;
-  for (int i = 0; i <= spans; ++i) knots_[i + kDegree] = static_cast<double>(i) / spans;
-  for (int i = n; i < n + kDegree + 1; ++i) knots_[i] = 1.0;
+  const int spans = periodic_ ? n : n - kDegree;
+  if (!periodic_) {  // clamped knot vector with uniform interior knots on [0, 1] (n + 4 knots)
+    knots_.assign(n + kDegree + 1, 0.0);
+    for (int i = 0; i <= spans; ++i) knots_[i + kDegree] = static_cast<double>(i) / spans;
+    for (int i = n; i < n + kDegree + 1; ++i) knots_[i] = 1.0;
+  }
+  // Power form of every span from the value and derivatives at its start (the third
+  // derivative is constant on a span: the change of the second, which is continuous at the
+  // simple interior knots, over it).
+  for (int k = 0; k < spans; ++k) {
+    const double u0 = static_cast<double>(k) / spans, u1 = static_cast<double>(k + 1) / spans;
+    const CurvePoint a = eval_from_basis(u0);
+    const Vec2 d3 = (eval_from_basis(u1).d2 - a.d2) / (u1 - u0);
+    Piece piece{u0, Eigen::Matrix<double, 2, 4>()};
+    piece.coef << a.c, a.d1, 0.5 * a.d2, d3 / 6.0;
+    pieces_.push_back(piece);
+  }
 }
 
 void BSpline2::basis(double u, int& first, double N[4], double dN[4], double ddN[4]) const {
@@ -89,6 +100,26 @@ void BSpline2::basis(double u, int& first, double N[4], double dN[4], double ddN
 }
 
 CurvePoint BSpline2::eval(double u) const {
+  const int spans = span_count();
+  double base = 0;  // periodic: whole periods of u
+  if (periodic_) {
+    base = std::floor(u);
+    u -= base;
+  } else {
+    u = std::clamp(u, 0.0, 1.0);
+  }
+  const Piece& piece = pieces_[std::min(static_cast<int>(u * spans), spans - 1)];
+  const double s = u - piece.start;
+  const auto& C = piece.coef;
+  CurvePoint p;
+  p.c = C.col(0) + s * (C.col(1) + s * (C.col(2) + s * C.col(3)));
+  p.d1 = C.col(1) + s * (2.0 * C.col(2) + 3.0 * s * C.col(3));
+  p.d2 = 2.0 * C.col(2) + 6.0 * s * C.col(3);
+  if (periodic_) p.c += shift_ * base;
+  return p;
+}
+
+CurvePoint BSpline2::eval_from_basis(double u) const {
   int first = 0;
   double N[4], dN[4], ddN[4];
   basis(u, first, N, dN, ddN);

@@ -34,11 +34,22 @@ class BSpline2 {
   // (indices wrap modulo the control count for periodic curves).
   void basis(double u, int& first, double N[4], double dN[4], double ddN[4]) const;
 
+  int span_count() const { return static_cast<int>(pieces_.size()); }
+
  private:
+  // One polynomial piece: c(u) = Σ_k coef.col(k)·(u − start)^k on its knot span (the curve
+  // converted to power form once, so eval costs a few multiply-adds).
+  struct Piece {
+    double start;
+    Eigen::Matrix<double, 2, 4> coef;
+  };
+  CurvePoint eval_from_basis(double u) const;
+
   std::vector<Vec2> control_;
   bool periodic_;
   Vec2 shift_;
   std::vector<double> knots_;  // open curves only: clamped knot vector
+  std::vector<Piece> pieces_;  // uniform spans of [0, 1]
 };
 
 // Normalised cumulative chord length of the points (closed: the closing chord counts too,

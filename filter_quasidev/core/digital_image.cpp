@@ -23,6 +23,8 @@ constexpr int kMargin = kEffectRadius + 2;
 constexpr double kRidgeFloor = 0.01;
 // Largest slope along a ridge, relative to the curvature across it (pixels).
 constexpr double kAlongSlope = 2.0;
+// A pixel is blob-like when the curvature along the ridge is below this share of the one across.
+constexpr double kBlobRatio = 0.5;
 
 }  // namespace
 
@@ -36,32 +38,61 @@ Vec2 DigitalImage::to_theta_phi(const Vec2& px) const {
 
 namespace {
 
-// Weighted quantiles (share/2, 1 − share/2) of φ ∈ [0, π], to a 1/4096 of π (bin edges,
-// outward). Only samples with w > 0 and θ in [theta_lo, theta_hi] count.
+// θ inside [lo, hi] with a tolerance: the samples that bound the seam's gap sit exactly on
+// lo and hi, and must count whatever the round-off.
+bool within(double theta, double lo, double hi) {
+  constexpr double kTolerance = 1e-9;
+  return theta >= lo - kTolerance && theta <= hi + kTolerance;
+}
+
+// Number of cells of size `cell` that cover `length` (at least 1). The ratio is often a whole
+// number up to round-off (cell = length / n): the tolerance keeps the count, and so the whole
+// image, independent of round-off (rotation equivariance).
+int whole_cells(double length, double cell) {
+  return std::max(1, static_cast<int>(std::ceil(length / cell - 1e-9)));
+}
+
+// Weighted quantiles (share/2, 1 − share/2) of φ ∈ [0, π], exact (a data-driven bin edge
+// would break rotation equivariance for noise-free normals lying on a bin edge): a histogram
+// finds the bin that holds each quantile, then that bin's samples are sorted. Only samples
+// with w > 0 and θ in [theta_lo, theta_hi] count.
 Vec2 phi_range(const std::vector<Vec2>& tp, const std::vector<double>& w, double theta_lo,
                double theta_hi, double share) {
-  constexpr int kBins = 4096;
+  constexpr int kBins = 1024;
   std::vector<double> hist(kBins, 0.0);
+  std::vector<int> bin(tp.size(), -1);
   double total = 0;
   for (size_t i = 0; i < tp.size(); ++i) {
-    if (w[i] <= 0 || tp[i].x() < theta_lo || tp[i].x() > theta_hi) continue;
-    hist[std::clamp(static_cast<int>(tp[i].y() / kPi * kBins), 0, kBins - 1)] += w[i];
+    if (w[i] <= 0 || !within(tp[i].x(), theta_lo, theta_hi)) continue;
+    bin[i] = std::clamp(static_cast<int>(tp[i].y() / kPi * kBins), 0, kBins - 1);
+    hist[bin[i]] += w[i];
     total += w[i];
   }
-  int lo = 0, hi = kBins - 1;
-  for (double acc = hist[0]; acc <= 0.5 * share * total && lo + 1 < kBins;) acc += hist[++lo];
-  for (double acc = hist[hi]; acc <= 0.5 * share * total && hi > lo;) acc += hist[--hi];
-  return Vec2(lo * kPi / kBins, (hi + 1) * kPi / kBins);
+  if (!(total > 0)) return Vec2(0.0, kPi);
+  const double target = 0.5 * share * total;
+  auto quantile = [&](int step) {  // step +1: lower quantile, -1: upper quantile
+    double acc = 0;
+    int b = step > 0 ? 0 : kBins - 1;
+    while (acc + hist[b] <= target && b + step >= 0 && b + step < kBins) acc += hist[b], b += step;
+    std::vector<std::pair<double, double>> in_bin;
+    for (size_t i = 0; i < tp.size(); ++i)
+      if (bin[i] == b) in_bin.push_back({step * tp[i].y(), w[i]});
+    std::sort(in_bin.begin(), in_bin.end());
+    for (const auto& [signed_phi, weight] : in_bin)
+      if ((acc += weight) > target) return step * signed_phi;
+    return step * in_bin.back().first;
+  };
+  return Vec2(quantile(1), quantile(-1));
 }
 
 // Thickness of the point distribution across the curve: weighted median over θ-columns of
 // width `column` of the weighted standard deviation of φ in the column.
 double band_sigma(const std::vector<Vec2>& tp, const std::vector<double>& w, double theta_lo,
                   double theta_hi, double phi_lo, double column) {
-  const int columns = static_cast<int>(std::ceil((theta_hi - theta_lo) / column)) + 1;
+  const int columns = whole_cells(theta_hi - theta_lo, column);
   std::vector<Eigen::Vector3d> acc(columns, Eigen::Vector3d::Zero());  // Σw, Σwφ, Σwφ²
   for (size_t i = 0; i < tp.size(); ++i) {
-    if (w[i] <= 0 || tp[i].x() < theta_lo || tp[i].x() > theta_hi) continue;
+    if (w[i] <= 0 || !within(tp[i].x(), theta_lo, theta_hi)) continue;
     const double y = tp[i].y() - phi_lo;
     acc[std::clamp(static_cast<int>((tp[i].x() - theta_lo) / column), 0, columns - 1)] +=
         w[i] * Eigen::Vector3d(1.0, y, y * y);
@@ -99,15 +130,18 @@ DigitalImage rasterise(const std::vector<Vec2>& theta_phi, const std::vector<dou
                                : std::max({extent.x(), extent.y(), 1e-9}) / kInnerPixels;
   im.pixel = std::max(fine, band_sigma(theta_phi, w, theta_lo, theta_hi, phi.x(), fine) / kBandPixels);
   if (periodic) {
-    im.width = static_cast<int>(std::ceil(2 * kPi / im.pixel));
+    im.width = whole_cells(2 * kPi, im.pixel);
     im.pixel = 2 * kPi / im.width;
     im.theta0 = 0;
   } else {
-    im.width = static_cast<int>(std::ceil(extent.x() / im.pixel)) + 1 + 2 * kMargin;
-    im.theta0 = theta_lo - kMargin * im.pixel;
+    im.width = whole_cells(extent.x(), im.pixel) + 2 * kMargin + 1;
+    im.theta0 = theta_lo - (kMargin + 0.5) * im.pixel;
   }
-  im.height = static_cast<int>(std::ceil(extent.y() / im.pixel)) + 1 + 2 * kMargin;
-  im.phi0 = phi.x() - kMargin * im.pixel;
+  // The extreme samples sit on pixel centres (the extra half pixel): noise-free normals then
+  // give a ridge on pixel centres, not halfway between two rows where its detection would
+  // hinge on round-off.
+  im.height = whole_cells(extent.y(), im.pixel) + 2 * kMargin + 1;
+  im.phi0 = phi.x() - (kMargin + 0.5) * im.pixel;
 
   // Eq. 12: r(p) = k·|SP|·Σ_{SP} w with k chosen so that max r = 1 (k only scales the field).
   // Choice: a sample counts in its 4 nearest pixels with bilinear shares (|SP| and Σw become
@@ -139,7 +173,8 @@ DigitalImage rasterise(const std::vector<Vec2>& theta_phi, const std::vector<dou
     im.r[k] = count[k] * weight[k];
     rmax = std::max(rmax, im.r[k]);
   }
-  for (double& r : im.r) r /= rmax;
+  if (rmax > 0)
+    for (double& r : im.r) r /= rmax;
   return im;
 }
 
@@ -213,9 +248,14 @@ std::vector<SkeletonPoint> skeleton_pixels(const DigitalImage& im) {
       if (std::abs(offset.x()) > 0.5 || std::abs(offset.y()) > 0.5) continue;
       // A ridge runs nearly level: the slope along it must be small against the curvature
       // across it. This rejects the flanks of blobs and of a band's end cap, where every point
-      // is a maximum along its own contour line.
+      // is a maximum along its own contour line. Where the field is a blob (curved downwards
+      // along as well: a cluster of identical normals), only its peak counts: the Newton step
+      // along must stay in the pixel too.
       const Vec2 along(-across.y(), across.x());
-      if (std::abs(g.dot(along)) > kAlongSlope * -lambda) continue;
+      const double mu = mean + dev;  // curvature along the ridge
+      if (mu < kBlobRatio * lambda ? std::abs(g.dot(along) / mu) > 0.5
+                                   : std::abs(g.dot(along)) > kAlongSlope * -lambda)
+        continue;
       out.push_back({Vec2(x + 0.5, y + 0.5) + offset, x, y, v});
     }
   return out;

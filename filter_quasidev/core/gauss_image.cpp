@@ -4,7 +4,9 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
+#include <utility>
 
 #include "error.h"
 
@@ -19,6 +21,39 @@ constexpr double kDeg = kPi / 180.0;
 Vec3 smallest_eigenvector(const Eigen::Matrix3d& S) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(S);
   return es.eigenvectors().col(0);
+}
+
+// The pole's sign is chosen from the data, never from the axes: the first odd moment
+// Σ a (n·p)^k (k = 1, else 3) that is not negligible must be >= 0.
+Vec3 with_data_sign(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                    const GaussMoments& m, const Vec3& p) {
+  double first = 0, third = 0;
+  for (size_t i = 0; i < normals.size(); ++i) {
+    const double x = normals[i].dot(p);
+    first += areas[i] * x;
+    third += areas[i] * x * x * x;
+  }
+  const double moment = std::abs(first) > 1e-12 * m.total_area ? first : third;
+  return moment >= 0 ? p : Vec3(-p);
+}
+
+// Sorts (θ, area) pairs, θ ∈ [−π, π], by θ: a bucket pass (one bucket per pair on average)
+// then insertion sort inside the buckets; linear time for the spread-out angles of a DEGI.
+void sort_by_angle(std::vector<std::pair<double, double>>& ta) {
+  const size_t n = ta.size();
+  std::vector<size_t> start(n + 1, 0);
+  auto bucket = [&](double theta) {
+    return std::min(static_cast<size_t>((theta + kPi) / (2 * kPi) * static_cast<double>(n)), n - 1);
+  };
+  for (const auto& p : ta) ++start[bucket(p.first) + 1];
+  for (size_t b = 0; b < n; ++b) start[b + 1] += start[b];
+  std::vector<std::pair<double, double>> sorted(n);
+  std::vector<size_t> fill(start.begin(), start.end() - 1);
+  for (const auto& p : ta) sorted[fill[bucket(p.first)]++] = p;
+  for (size_t b = 0; b < n; ++b)
+    std::sort(sorted.begin() + static_cast<std::ptrdiff_t>(start[b]),
+              sorted.begin() + static_cast<std::ptrdiff_t>(start[b + 1]));
+  ta.swap(sorted);
 }
 
 }  // namespace
@@ -93,25 +128,38 @@ Vec3 best_great_circle_pole(const std::vector<Vec3>& normals, const std::vector<
   const double floor_x = std::sin(0.5 * kDeg);
   Vec3 p = smallest_eigenvector(m.scatter);
   for (int it = 0; it < kIterations; ++it) {
-    Eigen::Matrix3d S = Eigen::Matrix3d::Zero();
+    double xx = 0, xy = 0, xz = 0, yy = 0, yz = 0, zz = 0;  // the 6 entries of Σ w n nᵀ
     for (size_t i = 0; i < normals.size(); ++i) {
       if (areas[i] == 0) continue;
-      const double x = std::min(std::max(std::abs(normals[i].dot(p)), floor_x), 1.0 - 1e-12);
-      S += (areas[i] / (x * std::sqrt(1.0 - x * x))) * normals[i] * normals[i].transpose();
+      const Vec3& n = normals[i];
+      const double x = std::min(std::max(std::abs(n.dot(p)), floor_x), 1.0 - 1e-12);
+      const double w = areas[i] / (x * std::sqrt(1.0 - x * x));
+      const double wx = w * n.x(), wy = w * n.y();
+      xx += wx * n.x(), xy += wx * n.y(), xz += wx * n.z();
+      yy += wy * n.y(), yz += wy * n.z(), zz += w * n.z() * n.z();
     }
+    Eigen::Matrix3d S;
+    S << xx, xy, xz, xy, yy, yz, xz, yz, zz;
     const Vec3 q = smallest_eigenvector(S);
     p = q.dot(p) >= 0 ? q : Vec3(-q);
   }
-  // The pole's sign is chosen from the data, never from the axes: the first odd moment
-  // Σ a (n·p)^k (k = 1, else 3) that is not negligible must be >= 0.
-  double first = 0, third = 0;
-  for (size_t i = 0; i < normals.size(); ++i) {
-    const double x = normals[i].dot(p);
-    first += areas[i] * x;
-    third += areas[i] * x * x * x;
-  }
-  const double moment = std::abs(first) > 1e-12 * m.total_area ? first : third;
-  return moment >= 0 ? p : Vec3(-p);
+  return with_data_sign(normals, areas, m, p);
+}
+
+Vec3 best_small_circle_pole(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                            const GaussMoments& m, double& misfit) {
+  const Vec3 mean = m.resultant / m.total_area;
+  const Eigen::Matrix3d covariance = m.scatter / m.total_area - mean * mean.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(covariance);
+  misfit = std::max(es.eigenvalues()(0), 0.0);
+  return with_data_sign(normals, areas, m, es.eigenvectors().col(0));
+}
+
+double great_circle_misfit(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                           const GaussMoments& m, const Vec3& pole) {
+  double sum = 0;
+  for (size_t i = 0; i < normals.size(); ++i) sum += areas[i] * normals[i].dot(pole) * normals[i].dot(pole);
+  return sum / m.total_area;
 }
 
 GaussFrame gauss_frame(const std::vector<Vec3>& normals, const std::vector<double>& areas,
@@ -128,7 +176,7 @@ GaussFrame gauss_frame(const std::vector<Vec3>& normals, const std::vector<doubl
       ta.push_back({std::atan2(normals[i].dot(e2), normals[i].dot(e1)), areas[i]});
       total += areas[i];
     }
-  std::sort(ta.begin(), ta.end());
+  sort_by_angle(ta);
   // Circular sweep over the sorted θ (doubled with +2π): for each sample i the farthest j such
   // that the samples strictly between them hold at most kGapOutlierShare of the area. The
   // widest such (i, j) is the robust empty gap; it depends on θ differences only.
@@ -159,6 +207,17 @@ GaussFrame gauss_frame(const std::vector<Vec3>& normals, const std::vector<doubl
   // spaced normals).
   frame.closed = widest < 20.0 * kDeg || widest < 1.5 * second;
   return frame;
+}
+
+bool clear_of_poles(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                    const Vec3& pole, double clearance) {
+  const double limit = std::cos(clearance);
+  double near = 0, total = 0;
+  for (size_t i = 0; i < normals.size(); ++i) {
+    total += areas[i];
+    if (std::abs(normals[i].dot(pole)) > limit) near += areas[i];
+  }
+  return near <= kGapOutlierShare * total;
 }
 
 Vec2 theta_phi(const Vec3& m) {

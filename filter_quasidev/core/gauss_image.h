@@ -38,6 +38,17 @@ bool is_point_like(const std::vector<Vec3>& normals, const std::vector<double>& 
 Vec3 best_great_circle_pole(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                             const GaussMoments& m);
 
+// Pole of the best small circle in the least-squares sense: the plane Σ a (n·c − d)² → min
+// cuts the sphere in that circle, so c is the smallest-eigenvalue eigenvector of the
+// area-weighted covariance of the normals; `misfit` is that eigenvalue (mean squared
+// distance to the plane). Sign as for the great circle.
+Vec3 best_small_circle_pole(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                            const GaussMoments& m, double& misfit);
+
+// Mean squared distance Σ a (n·p)² / Σ a of the samples to the plane of the great circle with pole p.
+double great_circle_misfit(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                           const GaussMoments& m, const Vec3& pole);
+
 // The rotation R of Eq. 9 and what the θ coverage says about the curve.
 struct GaussFrame {
   Eigen::Matrix3d R = Eigen::Matrix3d::Identity();  // rows e1, e2, p: maps p to +z
@@ -54,6 +65,11 @@ constexpr double kGapOutlierShare = 0.01;
 // positive-area samples is centred on the θ = 0/2π seam.
 GaussFrame gauss_frame(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                        const Vec3& pole);
+
+// True when at most kGapOutlierShare of the area lies within `clearance` (radians) of the
+// poles ±pole: Eq. 9's θ is ill-conditioned there ("kept away from the north and south points").
+bool clear_of_poles(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                    const Vec3& pole, double clearance);
 
 // Eq. 9: (θ, φ) of a unit vector m given in the rotated frame (θ ∈ [0, 2π), φ ∈ [0, π]),
 // and its inverse.

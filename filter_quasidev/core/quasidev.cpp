@@ -117,19 +117,36 @@ std::string format(const char* fmt, double a, double b = 0, double c = 0, double
   return buf;
 }
 
+// One log line per patch (what adapters show): its size, Step 1 fit, iterations and why they
+// stopped, G_ABD before → after, the last iteration's ratios (Eqs. 19–20), displacement, time.
 std::string patch_log_line(const PatchReport& p, double ae) {
+  if (p.target_kind == "unchanged")
+    return "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
+           p.stop_reason;
+  const IterationReport last = p.history.empty() ? IterationReport{} : p.history.back();
   std::string s = "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
                   p.target_kind + format(" fit residual %.2f°, ", p.fit_residual_deg) +
-                  std::to_string(p.iterations) + " iteration(s), " +
-                  format("G_ABD %.1f%% lower, OBD %.1f%% lower, max displacement %.3g AE, %.1f ms",
-                         p.abd_reduction, p.obd_reduction, p.after.max_disp / ae, p.time_ms) +
-                  " (stop: " + p.stop_reason + ")";
+                  std::to_string(p.iterations) + " iteration(s) (stop: " + p.stop_reason + "), " +
+                  format("G_ABD %.4g → %.4g (−%.1f%%), ", p.before.g_abd, p.after.g_abd,
+                         p.abd_reduction) +
+                  format("last ratio_ABD %.1f%%, ratio_OBD %.1f%%, ", last.ratio_abd,
+                         last.ratio_obd) +
+                  format("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
   if (p.fit_residual_deg > kFarResidualDeg)
     s += format(
-        "; warning: fit residual %.1f° — this patch is far from one developable surface; the "
-        "method assumes near-developable patches: split it into finer patches",
+        "; warning: fit residual %.1f°: this patch is far from one developable surface, which "
+        "the method assumes: split it into finer patches",
         p.fit_residual_deg);
   return s;
+}
+
+std::string total_log_line(const Result& r) {
+  return "total: " + std::to_string(r.patches.size()) + " patch(es), " +
+         format("G_ABD %.4g → %.4g (−%.1f%%), ", r.total_before.g_abd, r.total_after.g_abd,
+                r.abd_reduction) +
+         format("max displacement %.3g AE (AE = %.4g), ", r.total_after.max_disp / r.average_edge,
+                r.average_edge) +
+         std::to_string(r.factorizations) + format(" factorisation(s), %.0f ms", r.time_ms);
 }
 
 }  // namespace
@@ -259,11 +276,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
                                                    r.total_before.g_abd
                                              : 0.0;
   r.time_ms = ms_since(t0);
-  r.log.push_back(format("total: G_ABD %.1f%% lower, max displacement %.3g AE, ", r.abd_reduction,
-                         r.total_after.max_disp / r.average_edge) +
-                  std::to_string(r.patches.size()) + " patch(es), " +
-                  std::to_string(r.factorizations) + " factorisation(s), " +
-                  format("%.1f ms", r.time_ms));
+  r.log.push_back(total_log_line(r));
   if (progress) progress(100, "done");
   return r;
 }

@@ -18,7 +18,9 @@ constexpr int kWindow = 2;
 constexpr double kWeakComponent = 0.05;
 // A periodic path spanning this fraction of the period without a closing loop is still a tube.
 constexpr double kTubeSpan = 0.75;
-// The prolongation of an open curve's end turns by at most this angle.
+// The prolongation of an open curve's end reaches this quantile of the samples beyond the end
+// and turns by at most kMaxTurn.
+constexpr double kEndQuantile = 0.98;
 constexpr double kMaxTurn = 0.25 * 3.14159265358979323846;
 
 struct Edge {
@@ -274,11 +276,19 @@ void extend_ends(std::vector<Vec2>& polyline, const std::vector<Vec2>& samples, 
       kappa = turn / (0.5 * (chord.norm() + previous.norm()));
     }
     const Vec2 d = rotate(chord.normalized(), 0.5 * kappa * chord.norm());
-    double tmax = 0;
+    // How far the samples reach beyond the end: the 98th percentile of their distance along
+    // the tangent (a stray outlier near the line must not stretch the curve).
+    std::vector<double> beyond;
     for (const Vec2& s : samples) {
       const Vec2 v = delta(e, s, period);
       const double t = v.dot(d);
-      if (t > tmax && (v - t * d).norm() <= reach + 0.5 * std::abs(kappa) * t * t) tmax = t;
+      if (t > 0 && (v - t * d).norm() <= reach + 0.5 * std::abs(kappa) * t * t) beyond.push_back(t);
+    }
+    double tmax = 0;
+    if (!beyond.empty()) {
+      const size_t k = static_cast<size_t>(kEndQuantile * static_cast<double>(beyond.size()));
+      std::nth_element(beyond.begin(), beyond.begin() + k, beyond.end());
+      tmax = beyond[k];
     }
     // Follow the circle (turning at most 45°), in steps of one pixel.
     kappa = std::clamp(kappa, -kMaxTurn / std::max(tmax, 1.0), kMaxTurn / std::max(tmax, 1.0));

@@ -24,8 +24,8 @@ OrderedSkeleton order_skeleton(const std::vector<SkeletonPoint>& points, int wid
 // Replaces both ends of an open polyline (the points within `trim` pixels of an end point, where
 // the ridge curls as the point distribution ends; kept when the ends are closer than 3·trim)
 // by prolongations along circular arcs (tangent and curvature from the next 4·trim pixels,
-// turning at most 45°), in steps of one pixel, as far as the farthest sample within `reach`
-// of the arc projects beyond the end, so faces near the ends of the Gauss image are not all
+// turning at most 45°), in steps of one pixel, as far as the samples within `reach` of the
+// arc project beyond the end (98th percentile), so faces near the ends of the Gauss image are not all
 // pulled onto the end point. samples in pixel units; period = image width when periodic, else 0.
 void extend_ends(std::vector<Vec2>& polyline, const std::vector<Vec2>& samples, double reach,
                  double period, double trim);

@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "bspline.h"
 #include "digital_image.h"
@@ -24,7 +27,11 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kPixelsPerControl = 6.0;
 constexpr int kMinControls = 4, kMaxControls = 40;
 constexpr double kSmoothing = 0.01;
-constexpr int kDenseSamplesPerControl = 16;  // c_3D samples in the k-d tree, per control point
+constexpr int kDenseSamplesPerControl = 8;  // c_3D samples in the k-d tree, per control point
+// Small-circle pole: its mean squared misfit must be below this share of the great circle's,
+// and the samples this far from the pole.
+constexpr double kSmallCircleGain = 0.25;
+constexpr double kPoleClearance = 10.0 * kPi / 180.0;
 
 // The Gauss image is a point: every target is the area-weighted mean normal.
 class PlaneModel : public GaussModel {
@@ -161,7 +168,16 @@ TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double
   Eigen::Matrix3d R;
   if (!is_point_like(normals, areas, moments)) {
     // Step 1.2: rotation R of Eq. 9 and the mapped samples.
-    const Vec3 pole = best_great_circle_pole(normals, areas, moments);
+    Vec3 pole = best_great_circle_pole(normals, areas, moments);
+    // Choice beyond Eq. 9: the Gauss image of a cone is a small circle, which no great circle
+    // follows (for a full cone with normals < 55° from the axis the best great circle even
+    // cuts through it). When the best small circle fits far better and the samples stay
+    // clear of its pole (Eq. 9's θ is ill-conditioned there), its pole is used instead.
+    double small_misfit = 0;
+    const Vec3 small_pole = best_small_circle_pole(normals, areas, moments, small_misfit);
+    if (small_misfit < kSmallCircleGain * great_circle_misfit(normals, areas, moments, pole) &&
+        clear_of_poles(normals, areas, small_pole, kPoleClearance))
+      pole = small_pole;
     const GaussFrame frame = gauss_frame(normals, areas, pole);
     R = frame.R;
     std::vector<Vec2> theta_phi_samples(normals.size());

@@ -197,10 +197,10 @@ void check_free_vertices(const Problem& p, const Topology& t) {
 Topology validate(const Problem& problem) {
   check_not_empty(problem);
   check_sizes(problem);
-  check_params(problem.params);
-  check_coordinates(problem.V);
+  check_coordinates(problem.V);  // before the parameters: a NaN mesh makes a NaN tolerance
   check_face_indices(problem.F, static_cast<int>(problem.V.rows()));
   check_zero_area(problem.V, problem.F);
+  check_params(problem.params);
   Topology topology = analyse_topology(problem.F, static_cast<int>(problem.V.rows()), problem.patch);
   check_manifold(topology);
   check_patch_sizes(problem.F, problem.patch);

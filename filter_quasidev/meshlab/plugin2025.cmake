@@ -14,10 +14,15 @@
 
 set(QD_MESHLAB2025_SOURCE_DIR "${PROJECT_SOURCE_DIR}/third_party/meshlab-2025.07"
     CACHE PATH "MeshLab 2025.07 source root (holds src/common and src/vcglib)")
-file(GLOB _qd_wheel_libs "${PROJECT_SOURCE_DIR}/.venv/lib/python3*/site-packages/pymeshlab/lib")
-list(GET _qd_wheel_libs 0 _qd_wheel_lib)  # empty list -> variable unset, checked below
-set(QD_PYMESHLAB_LIB_DIR "${_qd_wheel_lib}"
-    CACHE PATH "pymeshlab/lib of the installed pymeshlab 2025.7.post1 wheel")
+set(QD_PYMESHLAB_LIB_DIR "" CACHE PATH
+    "pymeshlab/lib of the installed pymeshlab 2025.7.post1 wheel (empty: looked up in <repo>/.venv)")
+set(_qd_wheel_lib "${QD_PYMESHLAB_LIB_DIR}")
+if(NOT _qd_wheel_lib)  # looked up at every configure, so a venv made later is found
+  file(GLOB _qd_wheel_libs "${PROJECT_SOURCE_DIR}/.venv/lib/python3*/site-packages/pymeshlab/lib")
+  if(_qd_wheel_libs)
+    list(GET _qd_wheel_libs 0 _qd_wheel_lib)
+  endif()
+endif()
 
 set(_qd_2025_sources ${CMAKE_CURRENT_SOURCE_DIR}/filter_plugin_2025.cpp
                      ${CMAKE_CURRENT_SOURCE_DIR}/filter_plugin_2025.h)
@@ -43,18 +48,18 @@ if(NOT EXISTS "${QD_MESHLAB2025_SOURCE_DIR}/src/common/plugins/interfaces/filter
 endif()
 
 # pymeshlab 2025.7.post1 (double, "2025.07d"), linked against the wheel's libmeshlab-common.so.
-if(EXISTS "${QD_PYMESHLAB_LIB_DIR}/libmeshlab-common.so")
+if(EXISTS "${_qd_wheel_lib}/libmeshlab-common.so")
   qd_add_meshlab_plugin(filter_quasidev_pymeshlab
     SOURCES ${_qd_2025_sources}
     SYSTEM_INCLUDES ${_qd_2025_includes}
     DEFINITIONS MESHLAB_SCALAR=double MESHLAB_VERSION=2025.07d
-    LIBRARIES "${QD_PYMESHLAB_LIB_DIR}/libmeshlab-common.so"
+    LIBRARIES "${_qd_wheel_lib}/libmeshlab-common.so"
     OUTPUT_DIR "${CMAKE_BINARY_DIR}/bin/pymeshlab" OUTPUT_NAME filter_quasidev)
   qd_meshlab2025_link_only_needed(filter_quasidev_pymeshlab)
   message(STATUS "pymeshlab 2025.07d plugin: ${CMAKE_BINARY_DIR}/bin/pymeshlab/libfilter_quasidev.so")
 else()
-  message(STATUS "pymeshlab 2025.07d plugin NOT built: no pymeshlab wheel at QD_PYMESHLAB_LIB_DIR="
-                 "'${QD_PYMESHLAB_LIB_DIR}' (run scripts/setup_pymeshlab.sh)")
+  message(STATUS "pymeshlab 2025.07d plugin NOT built: no pymeshlab wheel found (QD_PYMESHLAB_LIB_DIR="
+                 "'${QD_PYMESHLAB_LIB_DIR}', <repo>/.venv): run scripts/setup_pymeshlab.sh")
 endif()
 
 # MeshLab 2025.07 application (float, "2025.07"), against a soname-only libmeshlab-common stub.

@@ -105,41 +105,6 @@ double average_edge(const EngineMesh& e) {
   return e.F.rows() > 0 ? qd::average_edge_length(e.V, e.F) : 0.0;
 }
 
-// Last entry of a patch's iteration history, or an empty report when it did not iterate.
-qd::IterationReport last_iteration(const qd::PatchReport& p) {
-  return p.history.empty() ? qd::IterationReport{} : p.history.back();
-}
-
-// One log line per patch and a total (issue 3, bullet 2): ratio_ABD, ratio_OBD, max
-// displacement in AE, iterations, time.
-std::vector<std::string> summary_lines(const qd::Result& r) {
-  std::vector<std::string> lines;
-  const double ae = r.average_edge > 0 ? r.average_edge : 1.0;
-  int iterations = 0;
-  for (const qd::PatchReport& p : r.patches) {
-    const qd::IterationReport last = last_iteration(p);
-    lines.push_back(format(
-        "patch %d: %d faces, %s fit residual %.1f deg, %d iterations (%s), G_ABD %.4g -> %.4g "
-        "(-%.1f %%), ratio_ABD %.2f %%, ratio_OBD %.2f %%, max displacement %.3f AE, %.0f ms",
-        p.id, p.faces, p.target_kind.c_str(), p.fit_residual_deg, p.iterations,
-        p.stop_reason.c_str(), p.before.g_abd, p.after.g_abd, p.abd_reduction, last.ratio_abd,
-        last.ratio_obd, p.after.max_disp / ae, p.time_ms));
-    iterations = std::max(iterations, p.iterations);
-  }
-  lines.push_back(format("total: %zu patches, G_ABD %.4g -> %.4g (-%.1f %%), max displacement "
-                         "%.3f AE (AE = %g), up to %d iterations, %d factorisations, %.0f ms",
-                         r.patches.size(), r.total_before.g_abd, r.total_after.g_abd,
-                         r.abd_reduction, r.total_after.max_disp / ae, r.average_edge, iterations,
-                         r.factorizations, r.time_ms));
-  return lines;
-}
-
-// The engine's log holds its own per-patch and total summaries besides its notes; the adapter
-// logs summary_lines() instead (they carry the figures issue 3 asks for), and the notes as they are.
-bool is_summary_line(const std::string& line) {
-  return line.rfind("patch ", 0) == 0 || line.rfind("total:", 0) == 0;
-}
-
 // Writes the engine's positions, per-vertex quality and (optionally) colours into m, then
 // refreshes normals and the bounding box. Touches nothing else.
 void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Settings& s) {
@@ -163,6 +128,34 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Setti
   }
   vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFace(m);
   vcg::tri::UpdateBounding<CMeshO>::Box(m);
+}
+
+// The engine's problem for m: geometry, patch ids (per-face quality when present and wanted),
+// constraints (selection) and parameters, with a tolerance of 0 resolved to 1·AE. Says what it
+// read in `log`. The mesh is validated before the parameters (with a placeholder tolerance): a
+// tolerance derived from a broken mesh (NaN coordinates give a NaN AE, also as the dialog's
+// default) would otherwise hide what is really wrong.
+qd::Problem make_problem(const CMeshO& m, const EngineMesh& e, bool has_face_quality,
+                         const Settings& s, std::vector<std::string>& log) {
+  qd::Problem problem;
+  problem.V = e.V;
+  problem.F = e.F;
+  if (has_face_quality && s.use_patches) {
+    problem.patch = read_patch_ids(m, e);
+    const std::set<int> ids(problem.patch.begin(), problem.patch.end());
+    log.push_back(format("patches from per-face quality: %zu patch(es)", ids.size()));
+  } else {
+    log.push_back(has_face_quality ? "patches from face quality off: the whole mesh is one patch"
+                                   : "no per-face quality: the whole mesh is one patch");
+  }
+  problem.constrained = read_selection(m, e);
+  problem.params = s.params;
+  problem.params.tolerance = 1;
+  qd::validate(problem);
+  problem.params.tolerance = s.params.tolerance == 0 ? average_edge(e) : s.params.tolerance;
+  log.push_back(format("%zu selected vertices kept fixed; tolerance %g model units",
+                       count_selected(problem.constrained), problem.params.tolerance));
+  return problem;
 }
 
 }  // namespace
@@ -282,35 +275,13 @@ Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBack
   Outcome out;
   try {
     const EngineMesh e = read_geometry(m);
-    qd::Problem problem;
-    problem.V = e.V;
-    problem.F = e.F;
-    problem.params = s.params;
-    // The mesh is validated before the parameters, with a placeholder tolerance: a tolerance
-    // derived from a broken mesh (NaN coordinates give a NaN AE, also as the dialog's default)
-    // would otherwise hide what is really wrong. Then 0 = 1·AE.
-    problem.params.tolerance = 1;
-    qd::validate(problem);
-    problem.params.tolerance = s.params.tolerance == 0 ? average_edge(e) : s.params.tolerance;
-    if (has_face_quality && s.use_patches) {
-      problem.patch = read_patch_ids(m, e);
-      const std::set<int> ids(problem.patch.begin(), problem.patch.end());
-      out.log.push_back(format("patches from per-face quality: %zu patch(es)", ids.size()));
-    } else {
-      out.log.push_back(has_face_quality ? "patches from face quality off: the whole mesh is one patch"
-                                         : "no per-face quality: the whole mesh is one patch");
-    }
-    problem.constrained = read_selection(m, e);
-    out.log.push_back(format("%zu selected vertices kept fixed; tolerance %g model units",
-                             count_selected(problem.constrained), problem.params.tolerance));
+    const qd::Problem problem = make_problem(m, e, has_face_quality, s, out.log);
     const qd::Progress progress = [cb](int percent, const std::string& message) {
       if (cb) cb(percent, message.c_str());
     };
     out.result = qd::approximate(problem, progress);
     write_back(m, e, out.result, s);
-    for (const std::string& line : out.result.log)
-      if (!is_summary_line(line)) out.log.push_back(line);
-    for (const std::string& line : summary_lines(out.result)) out.log.push_back(line);
+    out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
     out.ok = true;
   } catch (const qd::Error& error) {
     out.error = error.what();

@@ -3,13 +3,17 @@
 Each case is (name, file bytes, extra arguments, expectation):
   "fail"  — the command must exit 1 (bad input) or 2 (bad arguments) with one stderr line;
   "odd"   — merely odd input: success, or a clean one-line failure; never a crash.
-Usage: python3 make_bad_corpus.py DIR   writes DIR/<name>.ply (or .obj/.off) and DIR/cases.json.
+Usage: python3 make_bad_corpus.py DIR   writes DIR/<name>.ply and DIR/cases.json;
+       python3 make_bad_corpus.py --table QUASIDEV   runs the command on every case and prints a
+       Markdown table (case, exit status, message) for the README's "What happens on bad input".
 """
 import json
 import math
 import pathlib
 import struct
+import subprocess
 import sys
+import tempfile
 
 
 def ply_ascii(V, F, face_quality=None, vertex_flags=None):
@@ -112,7 +116,10 @@ def cases():
         ("nan_weight", good, ["--weight", "nan"], "fail"),
         ("zero_area_faces", ply_ascii(V + [V[0], V[1]], F + [(0, 1, len(V) + 1)]), [], "odd"),
         ("duplicate_faces", ply_ascii(V, F + F[:5]), [], "odd"),
-        ("non_manifold_edge", ply_ascii(V + [(0.5, 0.5, 1.0)], F + [(0, 1, len(V))]), [], "odd"),
+        # the diagonal 0-14 of the first grid cell already has two faces: a third one
+        ("non_manifold_edge", ply_ascii(V + [(0.5, 0.5, 1.0)], F + [(14, 0, len(V))]), [], "odd"),
+        ("inconsistent_orientation", ply_ascii(V + [(0.5, -0.5, 0.1)], F + [(0, 1, len(V))]), [],
+         "odd"),
         ("non_manifold_vertex",
          ply_ascii(V + [(-1, -1, 0.3), (-1, 0, 0.2)], F + [(0, len(V), len(V) + 1)]), [], "odd"),
         ("isolated_vertices", ply_ascii(V + [(5, 5, 5), (6, 6, 6)], F), [], "odd"),
@@ -151,5 +158,22 @@ def main(directory):
     (d / "cases.json").write_text(json.dumps(index, indent=1) + "\n")
 
 
+def table(binary):
+    print("| input | exit | what quasidev says |")
+    print("|---|---|---|")
+    with tempfile.TemporaryDirectory() as d:
+        for name, data, args, _ in cases():
+            src = pathlib.Path(d) / f"{name}.ply"
+            src.write_bytes(data)
+            r = subprocess.run([binary, str(src), str(pathlib.Path(d) / "out.ply"), "--quiet", *args],
+                               capture_output=True, text=True, timeout=600)
+            said = r.stderr.strip().replace(str(src), f"{name}.ply").replace("|", "\\|")
+            label = name.replace("_", " ") + (f" (`{' '.join(args)}`)" if args else "")
+            print(f"| {label} | {r.returncode} | {said or 'success'} |")
+
+
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "bad_corpus")
+    if len(sys.argv) > 2 and sys.argv[1] == "--table":
+        table(sys.argv[2])
+    else:
+        main(sys.argv[1] if len(sys.argv) > 1 else "bad_corpus")

@@ -98,3 +98,37 @@ def prop_type(elements, element_name, prop):
 
 def has(elements, element_name, prop):
     return any(p[0] == prop for p in element(elements, element_name)[2])
+
+
+def write_ply(path, elements, fmt, comments=()):
+    """Writes tables as returned by read_ply in format fmt (ascii / binary_*_endian)."""
+    head = ["ply", f"format {fmt} 1.0"] + [f"comment {c}" for c in comments]
+    for name, count, props in elements:
+        head.append(f"element {name} {count}")
+        for pname, ptype, is_list, _ in props:
+            head.append(f"property list {ptype[0]} {ptype[1]} {pname}" if is_list
+                        else f"property {ptype} {pname}")
+    head.append("end_header")
+    out = ("\n".join(head) + "\n").encode()
+    order = "<" if fmt == "binary_little_endian" else ">"
+    rows = []
+    for _, count, props in elements:
+        for i in range(count):
+            if fmt == "ascii":
+                row = []
+                for _, ptype, is_list, values in props:
+                    vals = values[i] if is_list else [values[i]]
+                    if is_list:
+                        row.append(str(len(vals)))
+                    row += [repr(v) for v in vals]
+                rows.append((" ".join(row) + "\n").encode())
+                continue
+            for _, ptype, is_list, values in props:
+                if is_list:
+                    ct, vt = (_TYPES[t] for t in ptype)
+                    rows.append(struct.pack(order + ct + vt * len(values[i]), len(values[i]),
+                                            *values[i]))
+                else:
+                    rows.append(struct.pack(order + _TYPES[ptype], values[i]))
+    with open(path, "wb") as f:
+        f.write(out + b"".join(rows))

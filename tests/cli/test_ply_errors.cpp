@@ -74,7 +74,7 @@ std::vector<BadCase> bad_cases() {
       {"fractional_index", kHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", "'1.5' is not a valid int"},
       {"negative_list",
        binary_header("element face 1\nproperty list char int vertex_indices\n") + std::string("\xff", 1),
-       "negative list length for property 'vertex_indices' of face 0"},
+       "negative list length of property 'vertex_indices' of face 0"},
       {"list_past_end",
        binary_header("element face 1\nproperty list uint int vertex_indices\n") +
            std::string("\x00\x00\x00\x10", 4) + std::string(8, '\0'),

@@ -14,7 +14,7 @@ import sys
 import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plyfile import column, element, has, prop_type, read_ply  # noqa: E402
+from plyfile import column, element, has, prop_type, read_ply, write_ply  # noqa: E402
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD = pathlib.Path(os.environ.get("QD_BUILD_DIR", REPO / "build"))
@@ -177,11 +177,73 @@ def test_quiet_prints_nothing_and_polygons_are_noted(tmp_path):
     r = run(src, tmp_path / "q.ply", "--quiet")
     assert r.returncode == 0, r.stderr
     assert r.stdout == "" and r.stderr == ""
-    r = run(src, tmp_path / "n.ply")
+    r = run(src, tmp_path / "n.ply", "--report", tmp_path / "n.json")
     assert r.returncode == 0, r.stderr
     assert "fan-triangulated" in r.stderr
+    assert any("fan-triangulated" in n for n in json.loads((tmp_path / "n.json").read_text())["notes"])
     res, _ = read_ply(tmp_path / "n.ply")
     assert element(res, "face")[1] == 2 * 49
+
+
+def test_every_ply_encoding_and_off_give_the_same_result(tmp_path):
+    """The same mesh as binary little/big endian or ascii PLY, or OFF, gives the same output."""
+    mesh = REPO / "sample_meshes" / "bumpy_cylinder.ply"
+    if not mesh.exists():
+        mesh = (SAMPLES or SHARED_GOOD)[0]
+    elements, comments = read_ply(mesh)
+    outputs = {}
+    for fmt in ("binary_little_endian", "binary_big_endian", "ascii"):
+        src = tmp_path / f"in_{fmt}.ply"
+        write_ply(src, elements, fmt, comments)
+        out = tmp_path / f"out_{fmt}.ply"
+        r = run(src, out, "--quiet")
+        assert r.returncode == 0, r.stderr
+        outputs[fmt] = out.read_bytes()
+    assert outputs["binary_big_endian"] == outputs["binary_little_endian"]
+    assert outputs["ascii"] == outputs["binary_little_endian"]
+    out, _ = read_ply(tmp_path / "out_ascii.ply")
+    assert column(out, "vertex", "x") != column(elements, "vertex", "x"), "the mesh should move"
+    if any(len(set(p[3])) > 1 for p in element(elements, "face")[2] if p[0] in ("quality", "patch")):
+        return  # several patches: OFF carries no patch ids
+    xyz = list(zip(*(column(elements, "vertex", c) for c in "xyz")))
+    faces = column(elements, "face", "vertex_indices")
+    off = tmp_path / "in.off"
+    off.write_text(f"OFF\n{len(xyz)} {len(faces)} 0\n" +
+                   "".join(" ".join(map(repr, v)) + "\n" for v in xyz) +
+                   "".join(f"{len(f)} " + " ".join(map(str, f)) + "\n" for f in faces))
+    r = run(off, tmp_path / "off.ply", "--quiet")
+    assert r.returncode == 0, r.stderr
+    a, _ = read_ply(tmp_path / "off.ply")
+    b, _ = read_ply(tmp_path / "out_ascii.ply")
+    for c in ("x", "y", "z", "quality"):
+        assert column(a, "vertex", c) == column(b, "vertex", c)
+
+
+def test_tolerances_are_in_average_edge_units(tmp_path):
+    mesh = REPO / "sample_meshes" / "patches.ply"
+    if not mesh.exists():
+        pytest.skip("sample with patches missing")
+    report = tmp_path / "r.json"
+    r = run(mesh, tmp_path / "o.ply", "--tolerance", "0.5", "--patch-tolerance", "1=0.02",
+            "--report", report, "--quiet")
+    assert r.returncode == 0, r.stderr
+    rep = json.loads(report.read_text())
+    ae = rep["average_edge"]
+    for p in rep["patches"]:
+        expected = 0.02 if p["id"] == 1 else 0.5
+        assert p["tolerance"] == pytest.approx(expected * ae, rel=1e-12), p["id"]
+        assert p["after"]["max_disp"] <= 10 * 0.5 * ae  # at most max_iter steps of δ_err
+
+
+def test_progress_lines_on_request(tmp_path):
+    mesh = (SAMPLES or SHARED_GOOD)[0]
+    r = run(mesh, tmp_path / "o.ply", "--progress")
+    assert r.returncode == 0, r.stderr
+    progress = [l for l in r.stderr.splitlines() if l.startswith("quasidev: ")]
+    assert progress and progress[-1].startswith("quasidev: 100%")
+    percents = [int(l.split()[1].rstrip("%")) for l in progress]
+    assert percents == sorted(percents)
+    assert "quasidev: " not in r.stdout
 
 
 def test_help_and_version():

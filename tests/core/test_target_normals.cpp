@@ -39,8 +39,13 @@ TEST(TargetNormals, CylinderGivesGreatCircleWithSmallResidual) {
   // Noise 1° per tangent component: mean |off-circle angle| ≈ 0.8°; outliers add a little.
   EXPECT_LT(fit.residual_deg, 1.5);
   EXPECT_GT(fit.residual_deg, 0.3);
-  // A target is the nearest point: it keeps the sample's azimuth around the axis.
+  // A target is the nearest point: it keeps the sample's azimuth around the axis (away from
+  // the arc's ends, where noisy samples beyond the end project onto it).
+  const Eigen::Matrix3d F = frame_for(axis);
   for (size_t i = 0; i < 2000; ++i) {
+    const Vec3 local = F.transpose() * s.normals[i];
+    const double azimuth = std::atan2(local.y(), local.x());
+    if (azimuth < 0.2 + 3 * kDeg || azimuth > 0.2 + 97 * kDeg) continue;
     const Vec3 a = (s.normals[i] - s.normals[i].dot(axis) * axis).normalized();
     EXPECT_LT(angle(a, fit.targets[i]), 0.5 * kDeg);
   }
@@ -52,7 +57,7 @@ TEST(TargetNormals, ConeGivesSmallCircleAtTheRightAngle) {
     const Samples s = cone(axis, beta_deg * kDeg, 1.0, 1.0 + 150 * kDeg, 1500, 0.5 * kDeg);
     const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
     for (const Vec3& t : fit.targets)
-      EXPECT_NEAR(angle(t, axis) / kDeg, beta_deg, 0.4) << "beta " << beta_deg;
+      EXPECT_NEAR(angle(t, axis) / kDeg, beta_deg, 0.6) << "beta " << beta_deg;
     EXPECT_LT(fit.residual_deg, 1.0);
   }
 }
@@ -69,13 +74,20 @@ TEST(TargetNormals, SShapedCurveIsFollowed) {
     truth.push_back(F * Vec3(std::sin(phi(t)) * std::cos(t), std::sin(phi(t)) * std::sin(t),
                              std::cos(phi(t))));
   }
+  // Every target lies on the true curve (or its prolongation past the ends, where noisy end
+  // samples may legitimately project): check the targets of samples away from the ends.
   double worst = 0;
   for (size_t i = 0; i < 3000; ++i) {
     double best = 1e9;
+    size_t at = 0;
+    for (size_t k = 0; k < truth.size(); ++k)
+      if (angle(s.normals[i], truth[k]) < best) best = angle(s.normals[i], truth[k]), at = k;
+    if (at < 100 || at + 100 > truth.size()) continue;  // within 2.5° of an end
+    best = 1e9;
     for (const Vec3& c : truth) best = std::min(best, angle(fit.targets[i], c));
     worst = std::max(worst, best);
   }
-  EXPECT_LT(worst / kDeg, 1.0);
+  EXPECT_LT(worst / kDeg, 0.5);
   EXPECT_LT(fit.residual_deg, 1.2);
 }
 
@@ -216,7 +228,7 @@ TEST(TargetNormals, OrientationSignMatters) {
   for (Vec3& n : s.normals) n = -n;
   const qd::TargetFit b = qd::fit_targets(s.normals, s.areas);
   for (size_t i = 0; i < s.normals.size(); ++i) {
-    EXPECT_NEAR(angle(b.targets[i], Vec3(0, 0, 1)) / kDeg, 120.0, 0.4);
+    EXPECT_NEAR(angle(b.targets[i], Vec3(0, 0, 1)) / kDeg, 120.0, 0.6);
     EXPECT_LT(angle(-a.targets[i], b.targets[i]) / kDeg, 0.3);
   }
 }
@@ -246,4 +258,29 @@ TEST(TargetNormals, TimingFor1kAnd100kSamples) {
     // Generous bounds (shared machine); the brief's targets are 2 ms and 100 ms.
     EXPECT_LT(ms, count <= 1000 ? 20.0 : 1000.0);
   }
+}
+
+TEST(TargetNormals, DegenerateInputsGiveUnitTargetsOrClearErrors) {
+  const Vec3 a = Vec3(0.3, 0.4, 0.5).normalized(), b = Vec3(-0.5, 0.1, 0.7).normalized();
+  std::vector<std::vector<Vec3>> cases = {
+      {a, a, a},                        // the minimum: 3 identical normals
+      {a, b, a},                        // 3 samples, two directions
+      {a, a, a, a, b, b, b, b},         // a crease: two flat halves
+      {a, a, a, -a, -a, -a},            // a sheet folded flat onto itself
+      {a, b, a.cross(b).normalized()}};  // 3 orthogonal-ish directions
+  for (size_t c = 0; c < cases.size(); ++c) {
+    const std::vector<double> areas(cases[c].size(), 1.0);
+    try {
+      const qd::TargetFit fit = qd::fit_targets(cases[c], areas);
+      expect_unit(fit.targets);
+      EXPECT_TRUE(std::isfinite(fit.residual_deg)) << "case " << c;
+    } catch (const qd::Error& e) {
+      EXPECT_GT(std::string(e.what()).size(), 20u) << "case " << c;  // a sentence, not a crash
+    }
+  }
+  // A crease: every target lies on the great-circle arc between the two normals.
+  const std::vector<Vec3>& crease = cases[2];
+  const qd::TargetFit fit = qd::fit_targets(crease, std::vector<double>(crease.size(), 1.0));
+  const Vec3 axis = a.cross(b).normalized();
+  for (const Vec3& t : fit.targets) EXPECT_LT(std::abs(t.dot(axis)), std::sin(1.0 * kDeg));
 }

@@ -225,21 +225,3 @@ TEST(Adapter2020, TooSmallPatchFailsWithItsId) {
       qdml::apply(m, false, qdml::settings_from_values(default_values(m)), nullptr);
   EXPECT_TRUE(ignored.ok) << "without per-face quality the mesh is one patch: " << ignored.error;
 }
-TEST(Dbg, Tmp) {
-  for (int variant = 0; variant < 3; ++variant) {
-    CMeshO m;
-    make_bumpy_cylinder(m);
-    if (variant >= 1) m.vert[24 * 6 + 3].SetS();
-    if (variant == 2) {
-      auto extra = vcg::tri::Allocator<CMeshO>::AddVertices(m, 1);
-      extra->P() = CMeshO::CoordType(5, 5, 5);
-      vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[0], &m.vert[1], &*extra);
-      vcg::tri::Allocator<CMeshO>::DeleteFace(m, m.face.back());
-      vcg::tri::Allocator<CMeshO>::DeleteVertex(m, m.vert.back());
-    }
-    auto s = qdml::settings_from_values(default_values(m));
-    printf("variant %d max_iter %d tol %g\n", variant, s.params.max_iter, s.params.tolerance);
-    auto out = qdml::apply(m, true, s, nullptr);
-    for (auto& l : out.log) printf("  %s\n", l.c_str());
-  }
-}

@@ -4,13 +4,14 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from conftest import FILTER, sample
+from pymeshlab_paths import FAILED_MESHSETS, FILTER, sample
 
 
 def expect_failure(pymeshlab, ms, **kwargs) -> str:
     """Applies the filter expecting our error; checks the mesh is untouched; returns the details."""
     m = ms.current_mesh()
     V0, C0 = m.vertex_matrix().copy(), m.vertex_color_matrix().copy()
+    FAILED_MESHSETS.append(ms)
     with pytest.raises(pymeshlab.PyMeshLabException) as info:
         ms.apply_filter(FILTER, **kwargs)
     text = str(info.value)

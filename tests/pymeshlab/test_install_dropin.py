@@ -7,7 +7,7 @@ import shutil
 import subprocess
 import sys
 
-from conftest import FILTER, PLUGIN, require_file, sample
+from pymeshlab_paths import FILTER, PLUGIN, require_file, sample
 
 
 def overlay_package(dest: str) -> str:

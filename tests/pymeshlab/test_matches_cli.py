@@ -9,7 +9,7 @@ import subprocess
 import numpy as np
 import pytest
 
-from conftest import CLI, FILTER, require_file, sample, shared
+from pymeshlab_paths import CLI, FILTER, require_file, sample, shared
 
 # (mesh, plugin keywords, the same as quasidev options)
 CASES = [
@@ -24,6 +24,8 @@ CASES = [
       "--weight", "20", "--anchor", "5", "--free-boundary"]),
     (shared("developable_crumpled_crane.ply"), {}, []),
     (shared("bowl_hemisphere_ipc.ply"), {}, []),
+    (shared("garment_shirt_initial_diffavatar.ply"), {}, []),  # 5 patches
+    (shared("garment_tee4panel_gpg.ply"), {}, []),  # 138 unreferenced vertices
 ]
 
 

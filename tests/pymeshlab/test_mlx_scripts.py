@@ -7,7 +7,7 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from conftest import FILTER, sample
+from pymeshlab_paths import FILTER, sample
 
 # script -> the sample mesh it is written for
 SCRIPTS = {"default.mlx": "bumpy_cylinder.ply", "patches_fixed_seams.mlx": "patches.ply",

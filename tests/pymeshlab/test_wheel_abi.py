@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from conftest import FILTER, FLOAT_PLUGIN, PLUGIN, require_file
+from pymeshlab_paths import FILTER, FLOAT_PLUGIN, PLUGIN, require_file
 
 # Libraries every Linux host has (glibc, libgcc, libstdc++); everything else must be in the wheel.
 BASE_LIBS = {"libc.so.6", "libm.so.6", "libgcc_s.so.1", "libstdc++.so.6", "ld-linux-x86-64.so.2"}
@@ -65,9 +65,16 @@ def test_loading_uses_only_the_wheels_qt_and_libmeshlab_common():
 
 
 def test_float_variant_is_refused_with_the_precision_message():
-    if not os.path.isfile(FLOAT_PLUGIN):
-        pytest.skip("float 2025.07 variant not built")
+    require_file(FLOAT_PLUGIN, "build the filter_quasidev_meshlab2025 target")
     r = run_python(f"import pymeshlab\ntry:\n pymeshlab.load_plugin({FLOAT_PLUGIN!r})\n"
                    f"except pymeshlab.PyMeshLabException as e:\n print('REFUSED', e)\n")
     assert "REFUSED" in r.stdout, r.stdout + r.stderr
     assert "different floating point precision" in r.stdout
+
+
+@pytest.mark.parametrize("path, scalar", [(PLUGIN, "double"), (FLOAT_PLUGIN, "float")])
+def test_each_variant_uses_its_own_scalar_in_meshlab_signatures(path, scalar):
+    require_file(path, "build the filter_quasidev_pymeshlab / filter_quasidev_meshlab2025 targets")
+    undefined = subprocess.run(["nm", "-DC", "--undefined-only", path], check=True,
+                               capture_output=True, text=True).stdout
+    assert f"RichFloat::RichFloat(QString const&, {scalar}, " in undefined

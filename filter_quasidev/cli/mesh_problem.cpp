@@ -1,0 +1,67 @@
+#include "mesh_problem.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "constraint_file.h"
+#include "quality_range.h"
+
+namespace qd::cli {
+
+Problem make_problem(const meshio::MeshFile& mesh, const Options& o) {
+  Problem problem;
+  problem.V.resize(static_cast<Eigen::Index>(mesh.positions.size()), 3);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    for (int k = 0; k < 3; ++k)
+      problem.V(static_cast<Eigen::Index>(i), k) = mesh.positions[i][static_cast<std::size_t>(k)];
+  problem.F.resize(static_cast<Eigen::Index>(mesh.triangles.size()), 3);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      problem.F(static_cast<Eigen::Index>(f), k) = mesh.triangles[f][static_cast<std::size_t>(k)];
+  problem.patch = mesh.patch;
+  problem.constrained = mesh.constrained;
+  if (!o.constraints.empty()) {
+    problem.constrained.resize(mesh.positions.size(), 0);
+    for (std::size_t v : meshio::read_constraint_file(o.constraints, mesh.positions.size()))
+      problem.constrained[v] = 1;
+  }
+  const double ae = average_edge_length(problem.V, problem.F);
+  if (!(ae > 0) || !std::isfinite(ae))
+    throw Error("the mesh's average edge length is " + std::to_string(ae) +
+                    " (all vertices coincide?); nothing to approximate");
+  problem.params = o.params;
+  problem.params.tolerance = o.tolerance_ae * ae;
+  for (const auto& [id, x] : o.patch_tolerance_ae) {
+    if (std::find(mesh.patch.begin(), mesh.patch.end(), id) == mesh.patch.end() &&
+        !(mesh.patch.empty() && id == 0))
+      throw UsageError("--patch-tolerance names patch " + std::to_string(id) +
+                                ", which the mesh does not have");
+    problem.params.patch_tolerance[id] = x * ae;
+  }
+  return problem;
+}
+
+meshio::OutputFields output_fields(const Result& result, const Options& o,
+                                   std::size_t vertex_count) {
+  const std::vector<double>& q =
+      o.quality == QualityKind::Curvature ? result.k_after : result.displacement;
+  if (static_cast<std::size_t>(result.V.rows()) != vertex_count || q.size() != vertex_count)
+    throw Error("internal error: the engine returned " + std::to_string(result.V.rows()) +
+                    " positions and " + std::to_string(q.size()) + " quality values for " +
+                    std::to_string(vertex_count) + " vertices");
+  meshio::OutputFields fields;
+  fields.positions.resize(vertex_count);
+  for (std::size_t i = 0; i < vertex_count; ++i)
+    for (int k = 0; k < 3; ++k)
+      fields.positions[i][static_cast<std::size_t>(k)] = result.V(static_cast<Eigen::Index>(i), k);
+  fields.quality = q;
+  if (o.color) {
+    const QualityRange range = robust_quality_range(q);
+    fields.colors.reserve(vertex_count);
+    for (double value : q) fields.colors.push_back(ramp_color(value, range));
+  }
+  return fields;
+}
+
+}  // namespace qd::cli

@@ -1,0 +1,81 @@
+// The bridge between mesh tables and the engine: AE-unit tolerances, patches, constraints,
+// and the output fields taken from a Result.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "mesh_problem.h"
+#include "ply_test_util.h"
+
+using namespace qd;
+using qd::meshio::test::error_of;
+
+namespace {
+
+// Unit square split along its diagonal: 5 edges, 4 of length 1 and one of √2.
+meshio::MeshFile square() {
+  meshio::MeshFile m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  m.triangles = {{0, 1, 2}, {0, 2, 3}};
+  m.patch = {4, 9};
+  m.constrained = {0, 1, 0, 0};
+  return m;
+}
+
+TEST(MeshProblem, TolerancesAreInUnitsOfTheAverageEdge) {
+  cli::Options o = cli::parse_options({"a.ply", "b.ply", "--tolerance", "0.5", "--patch-tolerance",
+                                       "9=2", "--max-iter", "4"});
+  const Problem p = cli::make_problem(square(), o);
+  const double ae = (4 + std::sqrt(2.0)) / 5;
+  EXPECT_NEAR(p.params.tolerance, 0.5 * ae, 1e-15);
+  ASSERT_EQ(p.params.patch_tolerance.size(), 1u);
+  EXPECT_NEAR(p.params.patch_tolerance.at(9), 2 * ae, 1e-15);
+  EXPECT_EQ(p.params.max_iter, 4);
+  EXPECT_EQ(p.V.rows(), 4);
+  EXPECT_EQ(p.F(1, 2), 3);
+  EXPECT_EQ(p.patch, (std::vector<int>{4, 9}));
+  EXPECT_EQ(p.constrained, (std::vector<char>{0, 1, 0, 0}));
+  o.patch_tolerance_ae = {{5, 1.0}};
+  EXPECT_NE(error_of([&] { cli::make_problem(square(), o); }).find("names patch 5"),
+            std::string::npos);
+}
+
+TEST(MeshProblem, ConstraintFileAddsToTheSelection) {
+  const auto path = std::filesystem::temp_directory_path() / "qd_cli_test_constraints.txt";
+  std::ofstream(path) << "3\n";
+  const cli::Options o = cli::parse_options({"a.ply", "b.ply", "--constraints", path.string()});
+  EXPECT_EQ(cli::make_problem(square(), o).constrained, (std::vector<char>{0, 1, 0, 1}));
+  std::filesystem::remove(path);
+}
+
+TEST(MeshProblem, DegenerateMeshIsRefused) {
+  meshio::MeshFile m = square();
+  for (auto& p : m.positions) p = {1, 2, 3};
+  const cli::Options o = cli::parse_options({"a.ply", "b.ply"});
+  EXPECT_NE(error_of([&] { cli::make_problem(m, o); }).find("average edge length is 0"),
+            std::string::npos);
+}
+
+TEST(MeshProblem, OutputFieldsFollowTheQualityChoice) {
+  Result r;
+  r.V = Positions::Zero(3, 3);
+  r.V(2, 1) = 7;
+  r.k_after = {-1, 0, 1};
+  r.displacement = {0, 0.5, 2};
+  cli::Options o = cli::parse_options({"a.ply", "b.ply"});
+  meshio::OutputFields f = cli::output_fields(r, o, 3);
+  EXPECT_EQ(f.quality, r.k_after);
+  EXPECT_EQ(f.positions[2][1], 7);
+  ASSERT_EQ(f.colors.size(), 3u);
+  EXPECT_EQ(f.colors[0], (std::array<unsigned char, 3>{255, 0, 0}));   // lowest K: red
+  EXPECT_EQ(f.colors[2], (std::array<unsigned char, 3>{0, 0, 255}));   // highest K: blue
+  o = cli::parse_options({"a.ply", "b.ply", "--quality", "displacement", "--no-color"});
+  f = cli::output_fields(r, o, 3);
+  EXPECT_EQ(f.quality, r.displacement);
+  EXPECT_TRUE(f.colors.empty());
+  EXPECT_NE(error_of([&] { cli::output_fields(r, o, 4); }).find("internal error"), std::string::npos);
+}
+
+}  // namespace
