@@ -101,8 +101,8 @@ def revolution(radius, height: float):
 def lampshade_radius(u: float, v: float) -> float:
     """Curved cone-like lampshade (paper Fig. 4): radius 1 -> 0.5, bulging generators and a
     small 5-fold wave that makes it non-developable."""
-    bulge = 0.12 * math.sin(math.pi * v)
-    wave = 0.02 * math.sin(10.0 * math.pi * u) * math.sin(2.0 * math.pi * v)
+    bulge = 0.04 * math.sin(math.pi * v)
+    wave = 0.01 * math.sin(10.0 * math.pi * u) * math.sin(2.0 * math.pi * v)
     return 1.0 - 0.5 * v + bulge + wave
 
 
@@ -148,7 +148,7 @@ def make_lampshade() -> tuple[PlyData, str]:
     pts = sample_grid(revolution(lampshade_radius, 1.0), n_around, n_along)
     faces = tube_faces(n_around, n_along)
     what = ("curved cone-like lampshade (paper Fig. 4): open band between two circles, radius 1 -> 0.5 "
-            "over height 1 with bulging generators (+0.12 sin(pi v)) and a small 5-fold wave (0.02); "
+            "over height 1 with bulging generators (+0.04 sin(pi v)) and a small 5-fold wave (0.01); "
             "near a cone but not developable; 1 patch")
     return mesh_ply(pts, faces, one_patch, ["lampshade: " + what]), what
 

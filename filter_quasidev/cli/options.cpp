@@ -75,6 +75,11 @@ const std::map<std::string, Setter>& valued_options() {
          o.params.tolerance_mode = choice<ToleranceMode>(
              "--tolerance-mode", v, {{"step", ToleranceMode::Step}, {"total", ToleranceMode::Total}});
        }},
+      {"--clamp",
+       [](Options& o, const std::string& v) {
+         o.params.clamp = choice<ClampMode>("--clamp", v,
+                                            {{"scale", ClampMode::Scale}, {"vertex", ClampMode::Vertex}});
+       }},
       {"--max-iter", [](Options& o, const std::string& v) { o.params.max_iter = iterations("--max-iter", v); }},
       {"--weight", [](Options& o, const std::string& v) { o.params.weight = positive("--weight", v); }},
       {"--anchor", [](Options& o, const std::string& v) { o.params.anchor = non_negative("--anchor", v); }},
@@ -184,6 +189,10 @@ std::string help_text() {
     << "  --tolerance-mode M     step: δ_err caps each iteration's move (paper); total: caps the\n"
        "                         total move from the input (default "
     << (d.tolerance_mode == ToleranceMode::Step ? "step" : "total") << ")\n"
+    << "  --clamp C              step mode: scale the whole step so no vertex moves more than\n"
+       "                         δ_err (scale), or clamp each vertex's step (vertex, paper §5.2)\n"
+       "                         (default "
+    << (d.clamp == ClampMode::Scale ? "scale" : "vertex") << ")\n"
     << "  --patch-tolerance ID=X δ_err for patch ID, overrides --tolerance (repeatable)\n"
     << "  --max-iter N           at most N iterations per patch, N >= 1 (default " << d.max_iter << ")\n"
     << "  --stop-abd P           stop when G_ABD falls by less than P percent in an iteration\n"

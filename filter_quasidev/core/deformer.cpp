@@ -114,7 +114,9 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
       out.stop_reason = "ratio_ABD below δ_ABD";
       break;
     }
-    if (report.ratio_obd < params.stop_obd) {
+    // D(P) is comparable between iterations only while the targets stay put (the paper's
+    // mode); with re-projected or re-fitted targets only ratio_ABD stops the iteration.
+    if (params.targets == TargetMode::Fixed && report.ratio_obd < params.stop_obd) {
       out.stop_reason = "ratio_OBD below δ_OBD";
       break;
     }

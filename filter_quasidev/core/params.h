@@ -19,7 +19,7 @@ struct Params {
   ClampMode clamp = ClampMode::Scale;        // Step mode only; Total mode clamps per vertex
   int max_iter = 10;                         // stop criterion 1
   double weight = 30.0;                      // w of Eq. (8): developability vs shape rows
-  double anchor = 10.0;                      // α of the MLS soft anchor rows (Eq. 15)
+  double anchor = 3.0;                       // α of the MLS soft anchor rows (Eq. 15)
   SeamMode seams = SeamMode::Fixed;
   bool keep_boundary = true;                 // open mesh boundary vertices are constrained
   TargetMode targets = TargetMode::Reproject;

@@ -141,12 +141,15 @@ std::string patch_log_line(const PatchReport& p, double ae) {
 }
 
 std::string total_log_line(const Result& r) {
+  int iterations = 0;
+  for (const PatchReport& p : r.patches) iterations = std::max(iterations, p.iterations);
   return "total: " + std::to_string(r.patches.size()) + " patch(es), " +
          format("G_ABD %.4g → %.4g (−%.1f%%), ", r.total_before.g_abd, r.total_after.g_abd,
                 r.abd_reduction) +
          format("max displacement %.3g AE (AE = %.4g), ", r.total_after.max_disp / r.average_edge,
                 r.average_edge) +
-         std::to_string(r.factorizations) + format(" factorisation(s), %.0f ms", r.time_ms);
+         "up to " + std::to_string(iterations) + " iterations, " + std::to_string(r.factorizations) +
+         format(" factorisation(s), %.0f ms", r.time_ms);
 }
 
 }  // namespace
