@@ -82,31 +82,40 @@ void dense_system(const Fixture& s, double w, double alpha, double ae, Eigen::Ma
   for (size_t k = 0; k < free_cols.size(); ++k) A_free.col(static_cast<Eigen::Index>(k)) = A.col(free_cols[k]);
 }
 
-TEST(DeformationSystem, SparseEqualsDenseAssembly) {
+// The sparse system and its dense twin for one set of weights.
+struct Both {
   Fixture s;
-  const double w = 7.0, alpha = 3.0, ae = 0.4;
-  DeformationSystem sys(s.g, w, alpha, ae);
-  sys.set_targets(s.targets);
+  DeformationSystem sys;
   Eigen::MatrixXd A;
   Eigen::VectorXd c;
-  dense_system(s, w, alpha, ae, A, c);
+  Both(double w, double alpha, double ae) : sys(s.g, w, alpha, ae) {
+    sys.set_targets(s.targets);
+    dense_system(s, w, alpha, ae, A, c);
+  }
+};
+
+TEST(DeformationSystem, SparseEqualsDenseAssembly) {
+  Both b(7.0, 3.0, 0.4);
+  const Fixture& s = b.s;
+  const DeformationSystem& sys = b.sys;
+  const Eigen::MatrixXd& A = b.A;
+  const Eigen::VectorXd& c = b.c;
 
   const Eigen::MatrixXd lower = Eigen::MatrixXd(sys.matrix());
   const Eigen::MatrixXd M = lower + lower.transpose() - Eigen::MatrixXd(lower.diagonal().asDiagonal());
   const Eigen::MatrixXd expected = A.transpose() * A;
   ASSERT_EQ(M.rows(), expected.rows());
   EXPECT_LT((M - expected).norm(), 1e-9 * expected.norm());
-  const Eigen::VectorXd b = sys.rhs(s.ref), eb = A.transpose() * c;
-  EXPECT_LT((b - eb).norm(), 1e-9 * eb.norm());
+  const Eigen::VectorXd rhs = sys.rhs(s.ref), eb = A.transpose() * c;
+  EXPECT_LT((rhs - eb).norm(), 1e-9 * eb.norm());
 }
 
 TEST(DeformationSystem, SolveIsTheLeastSquaresMinimiser) {
-  Fixture s;
-  DeformationSystem sys(s.g, 30.0, 10.0, 0.4);
-  sys.set_targets(s.targets);
-  Eigen::MatrixXd A;
-  Eigen::VectorXd c;
-  dense_system(s, 30.0, 10.0, 0.4, A, c);
+  Both b(30.0, 10.0, 0.4);
+  const Fixture& s = b.s;
+  const DeformationSystem& sys = b.sys;
+  const Eigen::MatrixXd& A = b.A;
+  const Eigen::VectorXd& c = b.c;
   const Eigen::VectorXd x = A.colPivHouseholderQr().solve(c);
   const Positions X = sys.solve(s.ref);
   Eigen::Index k = 0;
@@ -121,12 +130,11 @@ TEST(DeformationSystem, SolveIsTheLeastSquaresMinimiser) {
 }
 
 TEST(DeformationSystem, SolveLowersTheObjectiveOfEq14) {
-  Fixture s;
-  DeformationSystem sys(s.g, 30.0, 10.0, 0.4);
-  sys.set_targets(s.targets);
-  Eigen::MatrixXd A;
-  Eigen::VectorXd c;
-  dense_system(s, 30.0, 10.0, 0.4, A, c);
+  Both b(30.0, 10.0, 0.4);
+  const Fixture& s = b.s;
+  const DeformationSystem& sys = b.sys;
+  const Eigen::MatrixXd& A = b.A;
+  const Eigen::VectorXd& c = b.c;
   auto free_vector = [&](const Positions& X) {
     Eigen::VectorXd x(A.cols());
     Eigen::Index k = 0;
