@@ -1,5 +1,7 @@
 #include "mesh_file.h"
 
+#include <utility>
+
 #include "ply_file.h"
 
 namespace qd::meshio {
@@ -30,6 +32,14 @@ std::size_t scalar_type_size(ScalarType type) {
     case ScalarType::Float64: return 8;
   }
   return 0;
+}
+
+PlyProperty scalar_property(const std::string& name, ScalarType type, std::vector<double> values) {
+  PlyProperty p;
+  p.name = name;
+  p.type = type;
+  p.values = std::move(values);
+  return p;
 }
 
 int PlyElement::find(const std::string& property_name) const {

@@ -31,6 +31,9 @@ struct PlyProperty {
   std::size_t list_size(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
 };
 
+// A scalar column called `name` of the given type holding `values`.
+PlyProperty scalar_property(const std::string& name, ScalarType type, std::vector<double> values);
+
 struct PlyElement {
   std::string name;
   std::size_t count = 0;

@@ -9,14 +9,6 @@ namespace qd::meshio {
 
 namespace {
 
-PlyProperty scalar_column(const std::string& name, ScalarType type, std::vector<double> values) {
-  PlyProperty p;
-  p.name = name;
-  p.type = type;
-  p.values = std::move(values);
-  return p;
-}
-
 bool is_color(const std::string& name) {
   return name == "red" || name == "green" || name == "blue" || name == "alpha";
 }
@@ -63,7 +55,7 @@ PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
   for (std::size_t k = 0; k < 3; ++k) {
     std::vector<double> c(nv);
     for (std::size_t i = 0; i < nv; ++i) c[i] = fields.positions[i][k];
-    e.properties.push_back(scalar_column(std::string(1, "xyz"[k]), ScalarType::Float64, c));
+    e.properties.push_back(scalar_property(std::string(1, "xyz"[k]), ScalarType::Float64, c));
   }
   const bool normals = has_normals(mesh.vertex_extra);
   std::vector<std::array<double, 3>> n;
@@ -79,15 +71,15 @@ PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
       e.properties.back().values[i] = n[i][static_cast<std::size_t>(axis)];
   }
   if (!fields.quality.empty())
-    e.properties.push_back(scalar_column("quality", ScalarType::Float64, fields.quality));
+    e.properties.push_back(scalar_property("quality", ScalarType::Float64, fields.quality));
   if (!fields.colors.empty()) {
     for (std::size_t k = 0; k < 3; ++k) {
       std::vector<double> c(nv);
       for (std::size_t i = 0; i < nv; ++i) c[i] = fields.colors[i][k];
       const char* names[] = {"red", "green", "blue"};
-      e.properties.push_back(scalar_column(names[k], ScalarType::UInt8, c));
+      e.properties.push_back(scalar_property(names[k], ScalarType::UInt8, c));
     }
-    e.properties.push_back(scalar_column("alpha", ScalarType::UInt8, std::vector<double>(nv, 255)));
+    e.properties.push_back(scalar_property("alpha", ScalarType::UInt8, std::vector<double>(nv, 255)));
   }
   return e;
 }

@@ -9,7 +9,6 @@
 
 namespace qd::meshio::test {
 
-PlyProperty scalar(const std::string& name, ScalarType type, std::vector<double> values);
 PlyProperty list(const std::string& name, ScalarType count_type, ScalarType type,
                  const std::vector<std::vector<double>>& lists);
 

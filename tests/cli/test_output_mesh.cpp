@@ -30,8 +30,8 @@ OutputFields shifted(const MeshFile& m, bool colors) {
 
 TEST(OutputMesh, PassesThroughEverythingItDoesNotOwn) {
   PlyFile in = sample_ply();
-  in.elements[0].properties.push_back(scalar("quality", ScalarType::Float32, {9, 9, 9, 9, 9}));
-  in.elements[0].properties.push_back(scalar("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
+  in.elements[0].properties.push_back(scalar_property("quality", ScalarType::Float32, {9, 9, 9, 9, 9}));
+  in.elements[0].properties.push_back(scalar_property("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
   const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::BinaryBigEndian));
   const PlyFile out = parse_ply(serialize_ply(output_ply(mesh, shifted(mesh, true)),
                                               PlyFormat::BinaryLittleEndian));
@@ -58,7 +58,7 @@ TEST(OutputMesh, PassesThroughEverythingItDoesNotOwn) {
 
 TEST(OutputMesh, WithoutColoursTheInputColoursStay) {
   PlyFile in = sample_ply();
-  in.elements[0].properties.push_back(scalar("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
+  in.elements[0].properties.push_back(scalar_property("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
   const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::Ascii));
   const PlyFile out = output_ply(mesh, shifted(mesh, false));
   const PlyElement& v = out.elements[0];

@@ -36,14 +36,14 @@ PlyFile every_scalar_type() {
   PlyElement e;
   e.name = "thing";
   e.count = 3;
-  e.properties = {scalar("a", ScalarType::Int8, {-128, 0, 127}),
-                  scalar("b", ScalarType::UInt8, {0, 1, 255}),
-                  scalar("c", ScalarType::Int16, {-32768, 5, 32767}),
-                  scalar("d", ScalarType::UInt16, {0, 6, 65535}),
-                  scalar("e", ScalarType::Int32, {-2147483648.0, 7, 2147483647.0}),
-                  scalar("f", ScalarType::UInt32, {0, 8, 4294967295.0}),
-                  scalar("g", ScalarType::Float32, {-1.5f, 0.1f, 3.4e38f}),
-                  scalar("h", ScalarType::Float64, {-1e-300, 0.1, 1.0 / 3.0}),
+  e.properties = {scalar_property("a", ScalarType::Int8, {-128, 0, 127}),
+                  scalar_property("b", ScalarType::UInt8, {0, 1, 255}),
+                  scalar_property("c", ScalarType::Int16, {-32768, 5, 32767}),
+                  scalar_property("d", ScalarType::UInt16, {0, 6, 65535}),
+                  scalar_property("e", ScalarType::Int32, {-2147483648.0, 7, 2147483647.0}),
+                  scalar_property("f", ScalarType::UInt32, {0, 8, 4294967295.0}),
+                  scalar_property("g", ScalarType::Float32, {-1.5f, 0.1f, 3.4e38f}),
+                  scalar_property("h", ScalarType::Float64, {-1e-300, 0.1, 1.0 / 3.0}),
                   list("l", ScalarType::UInt16, ScalarType::Int16, {{}, {1, -2}, {3, 4, 5, 6}})};
   ply.elements = {e};
   return ply;
@@ -72,7 +72,7 @@ TEST(PlyBigEndian, BytesAreInNetworkOrder) {
   PlyElement e;
   e.name = "n";
   e.count = 1;
-  e.properties = {scalar("v", ScalarType::UInt32, {0x01020304})};
+  e.properties = {scalar_property("v", ScalarType::UInt32, {0x01020304})};
   ply.elements = {e};
   const std::string bytes = serialize_ply(ply, PlyFormat::BinaryBigEndian);
   EXPECT_EQ(bytes.substr(bytes.size() - 4), std::string("\x01\x02\x03\x04", 4));

@@ -96,10 +96,7 @@ struct Both {
 
 TEST(DeformationSystem, SparseEqualsDenseAssembly) {
   Both b(7.0, 3.0, 0.4);
-  const Fixture& s = b.s;
-  const DeformationSystem& sys = b.sys;
-  const Eigen::MatrixXd& A = b.A;
-  const Eigen::VectorXd& c = b.c;
+  const auto& [s, sys, A, c] = b;
 
   const Eigen::MatrixXd lower = Eigen::MatrixXd(sys.matrix());
   const Eigen::MatrixXd M = lower + lower.transpose() - Eigen::MatrixXd(lower.diagonal().asDiagonal());
@@ -112,10 +109,7 @@ TEST(DeformationSystem, SparseEqualsDenseAssembly) {
 
 TEST(DeformationSystem, SolveIsTheLeastSquaresMinimiser) {
   Both b(30.0, 10.0, 0.4);
-  const Fixture& s = b.s;
-  const DeformationSystem& sys = b.sys;
-  const Eigen::MatrixXd& A = b.A;
-  const Eigen::VectorXd& c = b.c;
+  const auto& [s, sys, A, c] = b;
   const Eigen::VectorXd x = A.colPivHouseholderQr().solve(c);
   const Positions X = sys.solve(s.ref);
   Eigen::Index k = 0;
@@ -131,15 +125,12 @@ TEST(DeformationSystem, SolveIsTheLeastSquaresMinimiser) {
 
 TEST(DeformationSystem, SolveLowersTheObjectiveOfEq14) {
   Both b(30.0, 10.0, 0.4);
-  const Fixture& s = b.s;
-  const DeformationSystem& sys = b.sys;
-  const Eigen::MatrixXd& A = b.A;
-  const Eigen::VectorXd& c = b.c;
+  const auto& [s, sys, A, c] = b;
   auto free_vector = [&](const Positions& X) {
-    Eigen::VectorXd x(A.cols());
+    Eigen::VectorXd x(b.A.cols());
     Eigen::Index k = 0;
     for (Eigen::Index v = 0; v < X.rows(); ++v)
-      if (!s.g.fixed[static_cast<size_t>(v)]) x.segment<3>(3 * k++) = X.row(v).transpose();
+      if (!b.s.g.fixed[static_cast<size_t>(v)]) x.segment<3>(3 * k++) = X.row(v).transpose();
     return x;
   };
   const double at_ref = (A * free_vector(s.ref) - c).squaredNorm();
