@@ -138,6 +138,47 @@ def cases():
     return out
 
 
+# What the MeshLab filter does with each case (meshlabserver 2020.09 and pymeshlab 2025.07):
+# LOADER = MeshLab's own PLY importer refuses the file, so the filter never runs; None = the
+# filter succeeds; otherwise a regular expression its one-line failure reason must match.
+LOADER = "loader"
+PLUGIN_OUTCOMES = {
+    "empty": LOADER, "header_only": LOADER, "truncated_binary": LOADER,
+    "wrong_vertex_count": LOADER, "index_out_of_range": LOADER,
+    "nan_coordinates": r"1 vertex with NaN or infinite coordinates \(first: vertex 0\)",
+    "inf_coordinates": r"1 vertex with NaN or infinite coordinates \(first: vertex 168\)",
+    "negative_tolerance": r"deformation tolerance is -1: use a positive distance",
+    "zero_iterations": r"maximum number of iterations is 0: use a value from 1",
+    "nan_weight": r"developability weight w is nan: use a positive value",
+    "zero_area_faces": r"1 zero-area face .*Remove Zero Area Faces",
+    "duplicate_faces": r"8 non-manifold edges .*Repair non Manifold Edges",
+    "non_manifold_edge": r"1 non-manifold edge .*Repair non Manifold Edges",
+    "inconsistent_orientation": r"Patch 0 is not consistently oriented .*Re-Orient",
+    "non_manifold_vertex": None, "isolated_vertices": None,
+    "single_triangle": r"Patch 0 has only 1 face \(1 patch has fewer than 4\)",
+    "every_face_own_patch": r"Patch 0 has only 1 face \(288 patches have fewer than 4\)",
+    "patch_all_selected": r"All 312 vertices are constrained",
+    "closed_sphere": r"normals fill the sphere",
+    "flat_patch": None, "huge_coordinates": None, "tiny_coordinates": None,
+    "bumpy_cylinder": None,
+    "hundred_thousand_patches": r"Patch 0 has only 1 face \(100000 patches have fewer than 4\)",
+}
+
+# The command's options of the corpus -> the filter's parameters (same meaning; the filter's
+# tolerance is in model units, the command's in AE, which only matters for positive values).
+_PLUGIN_PARAMETER = {"--tolerance": ("tolerance", float), "--max-iter": ("max_iter", int),
+                     "--weight": ("weight", float)}
+
+
+def plugin_parameters(args):
+    """{filter parameter name: value} for a case's command-line arguments."""
+    out = {}
+    for option, value in zip(args[::2], args[1::2]):
+        name, kind = _PLUGIN_PARAMETER[option]
+        out[name] = kind(value)
+    return out
+
+
 def ply_binary_quality(V, F):
     head = (f"ply\nformat binary_little_endian 1.0\nelement vertex {len(V)}\n"
             "property double x\nproperty double y\nproperty double z\n"

@@ -40,3 +40,9 @@ def test_corpus_case(case, tmp_path):
         if inp_faces is not None:
             assert element(res, "face")[1] == inp_faces
     assert not list(tmp_path.glob("*quasidev-tmp*"))
+
+
+def test_every_case_says_what_the_plugin_does():
+    """make_bad_corpus.PLUGIN_OUTCOMES (used by the meshlabserver and pymeshlab corpus tests)
+    covers exactly the corpus' cases."""
+    assert set(make_bad_corpus.PLUGIN_OUTCOMES) == {c[0] for c in CASES}

@@ -24,6 +24,7 @@ from plyio import PlyData, PlyElement, PlyProperty, read_ply, write_ply  # noqa:
 FILTER_NAME = "Quasi-Developable Approximation"
 SELECTED = 0x20  # vcg's SELECTED vertex flag, as MeshLab 2020.09 reads/writes PLY "flags"
 XVFB = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24"]
+XVFB_CLEANUP_ERROR = "xvfb-run: error: problem while cleaning up temporary directory"
 
 
 def build_dir() -> Path:
@@ -158,6 +159,21 @@ def mlx_parameters(path: Path) -> dict[str, tuple[str, str, list[str]]]:
     raise AssertionError(f"{path} has no '{FILTER_NAME}' filter")
 
 
+def write_mlx(path: Path, values: dict[str, object], base: Path = REPO / "sample_meshes" / "default.mlx",
+              before: str = "", after: str = "") -> Path:
+    """Writes base's quasi-developable filter to path with the given parameter values (Python
+    bools become true/false), preceded and followed by the raw <filter> XML in before/after."""
+    root = ET.parse(base).getroot()
+    node = next(n for n in root.iter("filter") if n.get("name") == FILTER_NAME)
+    for p in node.iter("Param"):
+        if p.get("name") in values:
+            v = values[p.get("name")]
+            p.set("value", str(v).lower() if isinstance(v, bool) else str(v))
+    ours = ET.tostring(node, encoding="unicode")
+    path.write_text(f"<!DOCTYPE FilterScript>\n<FilterScript>\n{before}{ours}{after}</FilterScript>\n")
+    return path
+
+
 def cli_arguments(params: dict[str, tuple[str, str, list[str]]]) -> tuple[list[str], bool]:
     """The quasidev options equivalent to an .mlx's parameters, and whether patches are used.
     The plugin's tolerance is absolute with 0 = 1 AE; the command's is in AE, so only 0 maps."""
@@ -189,8 +205,14 @@ def run_meshlabserver(prefix: Path, mesh_in: Path, mesh_out: Path, script: Path,
     cmd = XVFB + [str(prefix / "bin" / "meshlabserver"), "-i", str(mesh_in), "-o", str(mesh_out),
                   "-m", *saved, "-s", str(script)]
     env = dict(os.environ, HOME=str(mesh_out.parent))
-    return subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                          timeout=timeout, env=env, check=False)
+    for _ in range(3):
+        run = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                             timeout=timeout, env=env, check=False)
+        # xvfb-run sometimes fails to remove its temporary directory when the program ends at
+        # once; it then exits 5 and meshlabserver's status is lost: run the job again.
+        if not (run.returncode == 5 and XVFB_CLEANUP_ERROR in run.stdout):
+            break
+    return run
 
 
 def run_quasidev(mesh_in: Path, mesh_out: Path, args: list[str], timeout: float = 600) -> subprocess.CompletedProcess:

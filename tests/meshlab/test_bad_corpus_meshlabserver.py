@@ -1,0 +1,54 @@
+"""The bad-input corpus of issue 6 (tests/cli/make_bad_corpus.py) through the real meshlabserver
+2020.09 with our plugin.
+
+For every case: meshlabserver ends by exit status, never by a signal; when MeshLab's importer
+refuses the file it says so; when our filter refuses the mesh, the log carries our one-line
+reason and the output file keeps its previous bytes; when the input is merely odd the filter
+succeeds and writes the whole mesh (same faces, finite positions).
+"""
+from __future__ import annotations
+
+import re
+import sys
+
+import numpy as np
+import pytest
+
+from ml2020_support import REPO, load_mesh, run_meshlabserver, write_mlx
+
+sys.path.insert(0, str(REPO / "tests" / "cli"))
+import make_bad_corpus  # noqa: E402
+
+CASES = make_bad_corpus.cases()
+PREVIOUS = b"previous result\n"
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c[0] for c in CASES])
+def test_corpus_case_through_meshlabserver(case, meshlab_prefix, tmp_path):
+    name, data, args, _ = case
+    expected = make_bad_corpus.PLUGIN_OUTCOMES[name]
+    source = tmp_path / f"{name}.ply"
+    source.write_bytes(data)
+    script = write_mlx(tmp_path / "job.mlx", make_bad_corpus.plugin_parameters(args))
+    out = tmp_path / "out.ply"
+    out.write_bytes(PREVIOUS)
+    run = run_meshlabserver(meshlab_prefix, source, out, script)
+    log = run.stdout
+    # meshlabserver exits 0 or 255 (-1); xvfb-run reports a signal as 128 + its number.
+    assert run.returncode in (0, 255), f"meshlabserver ended with {run.returncode}:\n{log[-3000:]}"
+    if expected == make_bad_corpus.LOADER:
+        assert "Failed loading of" in log, log[-3000:]
+        assert out.read_bytes() == PREVIOUS
+    elif expected is not None:
+        assert run.returncode == 255 and "Problem with filter" in log, log[-3000:]
+        reasons = re.findall(r"LOG: \d+ Quasi-Developable Approximation failed: (.*)", log)
+        assert len(reasons) == 1, f"expected one logged reason:\n{log[-3000:]}"
+        assert re.search(expected, reasons[0]), reasons[0]
+        assert out.read_bytes() == PREVIOUS
+    else:
+        assert run.returncode == 0, log[-3000:]
+        result = load_mesh(out)
+        faces_in = data.count(b"\n3 ") if data.startswith(b"ply\nformat ascii") else None
+        if faces_in is not None:
+            assert len(result.f) == faces_in
+        assert np.isfinite(result.v).all()

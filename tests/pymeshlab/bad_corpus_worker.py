@@ -1,0 +1,73 @@
+"""Runs the filter on one mesh in a fresh pymeshlab process and prints one JSON line saying what
+happened, so a crash of pymeshlab or of the plugin shows as a signal to the caller
+(test_bad_corpus_pymeshlab.py) instead of ending the whole test session.
+
+Usage: python bad_corpus_worker.py PLUGIN MESH.ply PARAMETERS_JSON {file|arrays}
+  file   = load MESH.ply with pymeshlab's own importer;
+  arrays = read it with scripts/plyio.py and hand pymeshlab the raw vertex and face arrays
+           (pymeshlab's importer drops non-finite vertices, so NaN/inf reach the filter only so).
+Output: {"stage": "load" | "filter" | "done", "message": str, "unchanged": bool,
+         "faces_in": int, "faces_out": int, "finite": bool}
+"""
+from __future__ import annotations
+
+import json
+import os
+import sys
+from pathlib import Path
+
+import numpy as np
+import pymeshlab
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+from plyio import read_ply  # noqa: E402
+
+FILTER = "apply_coord_quasi_developable_approximation"
+
+
+def snapshot(mesh) -> list[np.ndarray]:
+    """Every per-vertex and per-face array pymeshlab exposes for a plain loaded mesh."""
+    arrays = [mesh.vertex_matrix(), mesh.face_matrix(), mesh.vertex_selection_array(),
+              mesh.face_selection_array()]
+    if mesh.has_vertex_color():
+        arrays.append(mesh.vertex_color_matrix())
+    if mesh.has_vertex_scalar():
+        arrays.append(mesh.vertex_scalar_array())
+    if mesh.has_face_scalar():
+        arrays.append(mesh.face_scalar_array())
+    return [a.copy() for a in arrays]
+
+
+def main(plugin: str, path: str, parameters: str, mode: str) -> dict:
+    pymeshlab.load_plugin(plugin)
+    ms = pymeshlab.MeshSet()
+    try:
+        if mode == "file":
+            ms.load_new_mesh(path)
+        else:
+            ply = read_ply(path)
+            ms.add_mesh(pymeshlab.Mesh(vertex_matrix=np.asarray(ply.vertices(), float).reshape(-1, 3),
+                                       face_matrix=np.asarray(ply.faces(), np.int32).reshape(-1, 3)))
+    except pymeshlab.PyMeshLabException as e:
+        return {"stage": "load", "message": str(e)}
+    before = snapshot(ms.current_mesh())
+    try:
+        ms.apply_filter(FILTER, **json.loads(parameters))
+        stage, message = "done", ""
+    except pymeshlab.PyMeshLabException as e:
+        stage, message = "filter", str(e)
+    mesh = ms.current_mesh()
+    after = snapshot(mesh)
+    unchanged = len(before) == len(after) and all(
+        a.shape == b.shape and np.array_equal(a, b, equal_nan=a.dtype.kind == "f")
+        for a, b in zip(before, after))
+    return {"stage": stage, "message": message, "unchanged": unchanged,
+            "faces_in": int(len(before[1])), "faces_out": int(mesh.face_number()),
+            "finite": bool(np.isfinite(mesh.vertex_matrix()).all())}
+
+
+if __name__ == "__main__":
+    print(json.dumps(main(*sys.argv[1:5])), flush=True)
+    # Skip the MeshSet destructors: after a failed filter, pymeshlab 2025.7.post1 corrupts the
+    # heap when that MeshSet is destroyed (see pymeshlab_paths.FAILED_MESHSETS).
+    os._exit(0)
