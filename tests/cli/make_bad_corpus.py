@@ -200,7 +200,9 @@ def main(directory):
 
 
 def table(binary):
-    print("| input | exit | what quasidev says |")
+    """Prints the README's table: each case, quasidev's exit status and its message (without
+    the "quasidev: error: " prefix and the file name)."""
+    print("| input | exit | what `quasidev` says |")
     print("|---|---|---|")
     with tempfile.TemporaryDirectory() as d:
         for name, data, args, _ in cases():
@@ -208,7 +210,8 @@ def table(binary):
             src.write_bytes(data)
             r = subprocess.run([binary, str(src), str(pathlib.Path(d) / "out.ply"), "--quiet", *args],
                                capture_output=True, text=True, timeout=600)
-            said = r.stderr.strip().replace(str(src), f"{name}.ply").replace("|", "\\|")
+            said = r.stderr.strip().removeprefix("quasidev: error: ")
+            said = said.removeprefix(f"'{src}': ").replace(str(src), f"{name}.ply").replace("|", "\\|")
             label = name.replace("_", " ") + (f" (`{' '.join(args)}`)" if args else "")
             print(f"| {label} | {r.returncode} | {said or 'success'} |")
 
