@@ -4,6 +4,7 @@
 #include <functional>
 #include <sstream>
 
+#include "sparse_cholesky.h"
 #include "text_scan.h"
 
 namespace qd::cli {
@@ -37,6 +38,13 @@ int iterations(const std::string& option, const std::string& text) {
   long long v = 0;
   if (!meshio::parse_integer(text, v) || v < 1 || v > 100000)
     usage(option + " expects a whole number from 1 to 100000, got '" + text + "'");
+  return static_cast<int>(v);
+}
+
+int threads(const std::string& option, const std::string& text) {
+  long long v = 0;
+  if (!meshio::parse_integer(text, v) || v < 0 || v > 1024)
+    usage(option + " expects a whole number from 0 (all cores) to 1024, got '" + text + "'");
   return static_cast<int>(v);
 }
 
@@ -93,6 +101,15 @@ const std::map<std::string, Setter>& valued_options() {
              "--targets", v,
              {{"fixed", TargetMode::Fixed}, {"reproject", TargetMode::Reproject}, {"refit", TargetMode::Refit}});
        }},
+      {"--solver",
+       [](Options& o, const std::string& v) {
+         o.params.solver = choice<SolverKind>("--solver", v,
+                                              {{"auto", SolverKind::Auto},
+                                               {"cholmod", SolverKind::Cholmod},
+                                               {"eigen-llt", SolverKind::EigenLLT},
+                                               {"eigen-ldlt", SolverKind::EigenLDLT}});
+       }},
+      {"--threads", [](Options& o, const std::string& v) { o.params.threads = threads("--threads", v); }},
       {"--stop-abd", [](Options& o, const std::string& v) { o.params.stop_abd = non_negative("--stop-abd", v); }},
       {"--stop-obd", [](Options& o, const std::string& v) { o.params.stop_obd = non_negative("--stop-obd", v); }},
       {"--quality",
@@ -212,6 +229,11 @@ std::string help_text() {
        "                         free: all patches solved jointly, seams move and stay closed\n"
        "                         (default "
     << (d.seams == SeamMode::Fixed ? "fixed" : "free") << ")\n"
+    << "  --solver S             sparse Cholesky: cholmod (SuiteSparse supernodal), eigen-llt,\n"
+       "                         eigen-ldlt (Eigen's simplicial) or auto (eigen-ldlt below\n"
+       "                         " << kCholmodFromUnknowns << " unknowns per patch, else cholmod); same result (default auto)\n"
+    << "  --threads N            patches solved at once (fixed seams); 0 = all cores; the\n"
+       "                         result does not depend on it (default " << d.threads << ")\n"
     << "  --keep-boundary        open-boundary vertices do not move" << on_off(d.keep_boundary) << "\n"
     << "  --free-boundary        open-boundary vertices may move" << on_off(!d.keep_boundary) << "\n"
     << "  --constraints FILE     vertices that must not move: 0-based indices, one per line,\n"

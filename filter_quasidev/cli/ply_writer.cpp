@@ -70,11 +70,12 @@ void append_text(ScalarType type, double v, std::string& out) {
   out += buffer;
 }
 
-void append_value(ScalarType type, double v, PlyFormat format, const std::string& what,
-                  std::string& out) {
+// Appends value v of property p of element e's item i (named in the error, built only then).
+void append_value(ScalarType type, double v, PlyFormat format, const PlyElement& e,
+                  const PlyProperty& p, std::size_t i, std::string& out) {
   if (!fits_scalar_type(type, v))
-    throw Error("cannot write " + what + ": value " + std::to_string(v) + " does not fit type " +
-                scalar_type_name(type));
+    throw Error("cannot write property '" + p.name + "' of " + e.name + " " + std::to_string(i) +
+                ": value " + std::to_string(v) + " does not fit type " + scalar_type_name(type));
   if (format == PlyFormat::Ascii) {
     append_text(type, v, out);
     out += ' ';
@@ -92,14 +93,13 @@ void append_element(const PlyElement& e, PlyFormat format, std::string& out) {
   }
   for (std::size_t i = 0; i < e.count; ++i) {
     for (const PlyProperty& p : e.properties) {
-      const std::string what = "property '" + p.name + "' of " + e.name + " " + std::to_string(i);
       if (!p.is_list) {
-        append_value(p.type, p.values[i], format, what, out);
+        append_value(p.type, p.values[i], format, e, p, i, out);
         continue;
       }
-      append_value(p.count_type, static_cast<double>(p.list_size(i)), format, what, out);
+      append_value(p.count_type, static_cast<double>(p.list_size(i)), format, e, p, i, out);
       for (std::size_t k = p.offsets[i]; k < p.offsets[i + 1]; ++k)
-        append_value(p.type, p.values[k], format, what, out);
+        append_value(p.type, p.values[k], format, e, p, i, out);
     }
     if (format == PlyFormat::Ascii && !e.properties.empty()) out.back() = '\n';
   }

@@ -29,6 +29,19 @@ void write_iteration(JsonWriter& j, const IterationReport& it) {
   j.end_object();
 }
 
+// Milliseconds per stage, summed over patches and threads (time_ms is the wall clock).
+void write_times(JsonWriter& j, const StageTimes& t) {
+  j.begin_object("stage_ms");
+  j.value("step1", t.step1);
+  j.value("assembly", t.assembly);
+  j.value("factorization", t.factorization);
+  j.value("solve", t.solve);
+  j.value("metrics", t.metrics);
+  j.value("factorizations", t.factorizations);
+  j.value("solves", t.solves);
+  j.end_object();
+}
+
 void write_patch(JsonWriter& j, const PatchReport& p, double average_edge) {
   j.begin_object();
   j.value("id", p.id);
@@ -104,6 +117,7 @@ std::string report_json(const Result& result, const ReportContext& c) {
   j.value("abd_reduction", result.abd_reduction);
   j.value("factorizations", result.factorizations);
   j.value("time_ms", result.time_ms);
+  write_times(j, result.times);
   j.begin_array("patches");
   for (const PatchReport& p : result.patches) write_patch(j, p, result.average_edge);
   j.end_array();

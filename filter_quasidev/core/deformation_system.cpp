@@ -1,8 +1,11 @@
 #include "deformation_system.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 
 #include "anchor_weights.h"
+#include "stage_timer.h"
+#include "vertex_order.h"
 
 namespace qd {
 namespace {
@@ -21,53 +24,122 @@ Eigen::Matrix3d corner_block(const Eigen::Matrix3d& L, const Eigen::Matrix3d& N,
   return L(p, q) * Eigen::Matrix3d::Identity() + (p == q ? 2.0 : -1.0) * N;
 }
 
+constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+
 }  // namespace
 
 DeformationSystem::DeformationSystem(const GroupMesh& group, double weight, double anchor,
-                                     double ae)
-    : g_(group), w_(weight) {
+                                     double ae, SolverKind solver)
+    : g_(group), w_(weight), cholesky_(solver) {
   const size_t n = g_.fixed.size();
+  std::vector<int> free_index(n, -1);
+  int free_count = 0;
+  for (size_t v = 0; v < n; ++v)
+    if (!g_.fixed[v]) free_index[v] = free_count++;
+  std::vector<std::pair<int, int>> edges;
+  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
+    for (const auto& pq : kPairs) {
+      const int a = free_index[static_cast<size_t>(g_.F(f, pq[0]))];
+      const int b = free_index[static_cast<size_t>(g_.F(f, pq[1]))];
+      if (a >= 0 && b >= 0) edges.emplace_back(a, b);
+    }
+  const std::vector<int> rank = fill_reducing_rank(free_count, edges);
   unknown_.assign(n, -1);
   for (size_t v = 0; v < n; ++v)
-    if (!g_.fixed[v]) unknown_[v] = unknowns_++;
+    if (free_index[v] >= 0) unknown_[v] = rank[static_cast<size_t>(free_index[v])];
+  blocks_ = free_count;
   const std::vector<double> mls = mls_weights(g_.V0, g_.fixed, ae);
   anchor2_.resize(n);
   for (size_t v = 0; v < n; ++v) anchor2_[v] = anchor * anchor * mls[v] * mls[v];
+  build_pattern();
+}
+
+// The lower-triangle pattern of M: per block column k, the diagonal block (lower part) then
+// each neighbouring block row r > k; column 3k+j holds rows 3k+j..3k+2, then 3r..3r+2 per r.
+void DeformationSystem::build_pattern() {
+  std::vector<std::pair<int, int>> lower;  // (block column, block row), row > column
+  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
+    for (const auto& pq : kPairs) {
+      const int a = unknown_[static_cast<size_t>(g_.F(f, pq[0]))];
+      const int b = unknown_[static_cast<size_t>(g_.F(f, pq[1]))];
+      if (a >= 0 && b >= 0 && a != b) lower.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(lower.begin(), lower.end());
+  lower.erase(std::unique(lower.begin(), lower.end()), lower.end());
+  column_start_.assign(static_cast<size_t>(blocks_) + 1, 0);
+  block_row_.resize(lower.size());
+  for (size_t s = 0; s < lower.size(); ++s) {
+    ++column_start_[static_cast<size_t>(lower[s].first) + 1];
+    block_row_[s] = lower[s].second;
+  }
+  for (int k = 0; k < blocks_; ++k) column_start_[static_cast<size_t>(k) + 1] += column_start_[static_cast<size_t>(k)];
+
+  face_slot_.assign(static_cast<size_t>(g_.solve_faces) * 3, -1);
+  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
+    for (int e = 0; e < 3; ++e) {
+      const int a = unknown_[static_cast<size_t>(g_.F(f, kPairs[e][0]))];
+      const int b = unknown_[static_cast<size_t>(g_.F(f, kPairs[e][1]))];
+      if (a < 0 || b < 0 || a == b) continue;
+      const auto first = block_row_.begin() + column_start_[static_cast<size_t>(std::min(a, b))];
+      const auto last = block_row_.begin() + column_start_[static_cast<size_t>(std::min(a, b)) + 1];
+      face_slot_[static_cast<size_t>(3 * f + e)] =
+          static_cast<int>(std::lower_bound(first, last, std::max(a, b)) - block_row_.begin());
+    }
+
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(blocks_);
+  M_.resize(size, size);
+  M_.resizeNonZeros(6 * blocks_ + 9 * static_cast<Eigen::Index>(block_row_.size()));
+  int* outer = M_.outerIndexPtr();
+  int* inner = M_.innerIndexPtr();
+  int at = 0;
+  for (int k = 0; k < blocks_; ++k)
+    for (int j = 0; j < 3; ++j) {
+      outer[3 * k + j] = at;
+      for (int i = j; i < 3; ++i) inner[at++] = 3 * k + i;
+      for (int s = column_start_[static_cast<size_t>(k)]; s < column_start_[static_cast<size_t>(k) + 1]; ++s)
+        for (int i = 0; i < 3; ++i) inner[at++] = 3 * block_row_[static_cast<size_t>(s)] + i;
+    }
+  outer[size] = at;
 }
 
 void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
+  StageTimer timer(times_.assembly);
   targets_ = targets;
   const Eigen::Matrix3d L = shape_block();
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<size_t>(g_.solve_faces) * 81 + static_cast<size_t>(unknowns_) * 3);
+  double* value = M_.valuePtr();
+  const int* outer = M_.outerIndexPtr();
+  std::fill(value, value + M_.nonZeros(), 0.0);
+  // Adds the lower part of a diagonal block of block column k.
+  const auto add_diagonal = [&](int k, const Eigen::Matrix3d& B) {
+    for (int j = 0; j < 3; ++j)
+      for (int i = j; i < 3; ++i) value[outer[3 * k + j] + (i - j)] += B(i, j);
+  };
   for (Eigen::Index f = 0; f < g_.solve_faces; ++f) {
     const Vec3& n = targets_[static_cast<size_t>(f)];
     const Eigen::Matrix3d N = w_ * w_ * n * n.transpose();
     for (int p = 0; p < 3; ++p) {
-      const int bp = unknown_[static_cast<size_t>(g_.F(f, p))];
-      if (bp < 0) continue;
-      for (int q = 0; q < 3; ++q) {
-        const int bq = unknown_[static_cast<size_t>(g_.F(f, q))];
-        if (bq < 0 || bq > bp) continue;  // lower triangle only
-        const Eigen::Matrix3d B = corner_block(L, N, p, q);
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j)
-            if (3 * bq + j <= 3 * bp + i) entries.emplace_back(3 * bp + i, 3 * bq + j, B(i, j));
-      }
+      const int k = unknown_[static_cast<size_t>(g_.F(f, p))];
+      if (k >= 0) add_diagonal(k, corner_block(L, N, p, p));
+    }
+    for (int e = 0; e < 3; ++e) {
+      const int s = face_slot_[static_cast<size_t>(3 * f + e)];
+      if (s < 0) continue;
+      const int k = std::min(unknown_[static_cast<size_t>(g_.F(f, kPairs[e][0]))],
+                             unknown_[static_cast<size_t>(g_.F(f, kPairs[e][1]))]);
+      const int offset = 3 * (s - column_start_[static_cast<size_t>(k)]);
+      const Eigen::Matrix3d B = corner_block(L, N, kPairs[e][0], kPairs[e][1]);  // symmetric
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) value[outer[3 * k + j] + (3 - j) + offset + i] += B(i, j);
     }
   }
   for (size_t v = 0; v < unknown_.size(); ++v)
-    if (unknown_[v] >= 0)
-      for (int i = 0; i < 3; ++i)
-        entries.emplace_back(3 * unknown_[v] + i, 3 * unknown_[v] + i, anchor2_[v]);
-  M_.resize(3 * unknowns_, 3 * unknowns_);
-  M_.setFromTriplets(entries.begin(), entries.end());
-  cholesky_.factorize(M_);
+    if (unknown_[v] >= 0) add_diagonal(unknown_[v], anchor2_[v] * Eigen::Matrix3d::Identity());
+  factor_current_ = false;
 }
 
 Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
   const Eigen::Matrix3d L = shape_block();
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * unknowns_);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(blocks_));
   for (Eigen::Index f = 0; f < g_.solve_faces; ++f) {
     Vec3 x[3];
     for (int c = 0; c < 3; ++c) x[c] = ref.row(g_.F(f, c)).transpose();
@@ -92,12 +164,28 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
   return b;
 }
 
-Positions DeformationSystem::solve(const Positions& ref) const {
-  const Eigen::VectorXd x = cholesky_.solve(rhs(ref));
+Positions DeformationSystem::solve(const Positions& ref) {
+  if (blocks_ == 0) return ref;
+  Eigen::VectorXd b;
+  {
+    StageTimer timer(times_.assembly);
+    b = rhs(ref);
+  }
+  if (!factor_current_) {  // new targets: a numeric factorisation (the analysis is reused)
+    StageTimer timer(times_.factorization);
+    cholesky_.factorize(M_);
+    factor_current_ = true;
+    times_.factorizations = cholesky_.factorizations();
+  }
+  Eigen::VectorXd x;
+  {
+    StageTimer timer(times_.solve);
+    x = cholesky_.solve(b);
+    ++times_.solves;
+  }
   Positions out = ref;
   for (size_t v = 0; v < unknown_.size(); ++v)
-    if (unknown_[v] >= 0)
-      out.row(static_cast<Eigen::Index>(v)) = x.segment<3>(3 * unknown_[v]).transpose();
+    if (unknown_[v] >= 0) out.row(static_cast<Eigen::Index>(v)) = x.segment<3>(3 * unknown_[v]).transpose();
   return out;
 }
 

@@ -10,14 +10,22 @@
 // exactly (moved to the right-hand side). Every free vertex gets the soft anchor rows
 // α·w(v)·(v' − v0) = 0 with the MLS weight w(v) of Eq. (15): stiffness fades away from the
 // constraints. The paper's ‖AWx − c‖ (Eq. 16) rescales the unknowns and constrains nothing, so
-// it is not used as written. The normal matrix M = AᵀA + anchors (Eq. 17) depends only on the
-// targets and weights: it is factorised once per set of targets and reused for every solve.
+// it is not used as written.
+//
+// The normal matrix M = AᵀA + anchors (Eq. 17) depends only on the targets and weights. Its
+// unknowns are numbered in 3×3 vertex blocks in a fill-reducing order of the vertex graph, and
+// it is assembled in place into a sparsity pattern built once. With fixed targets it is
+// factorised once and every iteration is one back substitution (Algorithm 1, steps 2.3–2.4);
+// re-projected or re-fitted targets change M, which is then factorised again numerically (the
+// analysis is reused). Conjugate gradients preconditioned by the previous factor were measured
+// as the alternative and cost more instructions at every size tried (README, Performance).
 #pragma once
 
 #include <Eigen/SparseCore>
 #include <vector>
 
 #include "group_mesh.h"
+#include "result.h"
 #include "sparse_cholesky.h"
 
 namespace qd {
@@ -25,31 +33,40 @@ namespace qd {
 class DeformationSystem {
  public:
   // weight: w of Eq. (8); anchor: α; ae: average edge length for Eq. (15).
-  DeformationSystem(const GroupMesh& group, double weight, double anchor, double ae);
+  DeformationSystem(const GroupMesh& group, double weight, double anchor, double ae,
+                    SolverKind solver);
 
-  // Assembles M for one target normal per group face and factorises it.
+  // Assembles M for one target normal per group face (Eq. 17).
   void set_targets(const std::vector<Vec3>& targets);
 
   // Right-hand side Aᵀc − M_fc·x_c + anchor terms for reference positions `ref`.
   Eigen::VectorXd rhs(const Positions& ref) const;
 
   // Least-squares positions for reference `ref`: free vertices solved, fixed ones kept.
-  Positions solve(const Positions& ref) const;
+  Positions solve(const Positions& ref);
 
+  // Lower triangle of M; unknown 3k+d is coordinate d of block k.
   const Eigen::SparseMatrix<double>& matrix() const { return M_; }
-  // Unknown block of each local vertex (-1 when fixed); unknown 3k+d is coordinate d of block k.
+  // Unknown block of each local vertex (-1 when fixed).
   const std::vector<int>& unknown() const { return unknown_; }
-  int factorizations() const { return cholesky_.factorizations(); }
+  const StageTimes& times() const { return times_; }
 
  private:
+  void build_pattern();
+
   const GroupMesh& g_;
   double w_;
   std::vector<double> anchor2_;  // α²·w(v)² per local vertex
   std::vector<int> unknown_;
-  int unknowns_ = 0;
+  int blocks_ = 0;
+  std::vector<int> column_start_;  // off-diagonal blocks of block column k: [start[k], start[k+1])
+  std::vector<int> block_row_;     // their block rows, ascending
+  std::vector<int> face_slot_;     // per face and corner pair (0,1),(0,2),(1,2): off-diag block
   std::vector<Vec3> targets_;
   Eigen::SparseMatrix<double> M_;
   SparseCholesky cholesky_;
+  bool factor_current_ = false;  // the factor belongs to the current M
+  StageTimes times_;
 };
 
 }  // namespace qd

@@ -6,6 +6,7 @@
 
 #include "deformation_system.h"
 #include "metrics.h"
+#include "stage_timer.h"
 
 namespace qd {
 namespace {
@@ -62,23 +63,34 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
                      const std::function<void(double)>& progress) {
   const std::vector<int> faces = all_indices(group.solve_faces);
   const std::vector<int> vertices = all_indices(group.solve_vertices);
+  DeformOutcome out;
+  Figures last;  // figures after the last accepted step
   auto figures = [&](const Positions& X, const std::vector<Vec3>& t) {
+    StageTimer timer(out.times.metrics);
     return measure(group.V0, X, group.F, group.owned, faces, t, vertices);
   };
 
-  DeformationSystem system(group, params.weight, params.anchor, ae);
+  DeformationSystem system(group, params.weight, params.anchor, ae, params.solver);
   std::vector<Vec3> current_targets = targets;
   system.set_targets(current_targets);  // Algorithm 1, steps 2.1–2.3
 
-  DeformOutcome out;
   out.V = group.V0;
   out.stop_reason = "maxIter reached";
   for (int it = 1; it <= params.max_iter; ++it) {
     if (it > 1 && params.targets != TargetMode::Fixed) {
-      current_targets = retarget(out.V);
+      {
+        StageTimer timer(out.times.step1);
+        current_targets = retarget(out.V);
+      }
       system.set_targets(current_targets);
     }
-    const Figures before = figures(out.V, current_targets);
+    // The figures of the current positions: all but the OBD carry over from the last accepted
+    // step; the OBD is taken against the current targets.
+    Figures before = it == 1 ? figures(out.V, current_targets) : last;
+    if (it > 1) {
+      StageTimer timer(out.times.metrics);
+      before.obd = orientation_developability(out.V, group.F, faces, current_targets);
+    }
     // Steps 2.4.1–2.4.3: new right-hand side, back substitution, tolerance check.
     const Positions step = clamp_step(group, out.V, system.solve(out.V), params.tolerance_mode,
                                       params.clamp);
@@ -88,10 +100,14 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
     bool accepted = false;
     for (double scale = 1.0; scale >= 0.25; scale *= 0.5) {
       const Positions candidate = out.V + scale * (step - out.V);
-      const int flips = flipped_faces(group.F, group.V0, candidate);
+      int flips = 0;
+      {
+        StageTimer timer(out.times.metrics);
+        flips = flipped_faces(group.F, group.V0, candidate);
+      }
       const Figures after = figures(candidate, current_targets);
       if (flips == 0 && after.g_abd <= before.g_abd) {
-        report.figures = after;
+        report.figures = last = after;
         report.step_scale = scale;
         out.V = candidate;
         accepted = true;
@@ -121,7 +137,7 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
       break;
     }
   }
-  out.factorizations = system.factorizations();
+  out.times += system.times();
   return out;
 }
 

@@ -22,7 +22,7 @@ struct DeformOutcome {
   Positions V;                        // final local positions
   std::vector<IterationReport> history;
   std::string stop_reason;
-  int factorizations = 0;
+  StageTimes times;                   // assembly, factorisation, solve, re-targeting, metrics
 };
 
 // targets: initial target per group face; retarget: used between iterations unless

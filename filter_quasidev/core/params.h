@@ -11,6 +11,7 @@ enum class ToleranceMode { Step, Total };    // δ_err caps each step (paper) or
 enum class ClampMode { Scale, Vertex };     // δ_err in Step mode: scale the whole step, or
                                             // clamp each vertex's step (paper §5.2)
 enum class TargetMode { Fixed, Reproject, Refit };  // targets once (paper), re-projected, re-fitted
+enum class SolverKind { Auto, Cholmod, EigenLLT, EigenLDLT };  // sparse Cholesky (§5.4)
 
 struct Params {
   double tolerance = 0.0;                    // δ_err in model units (> 0)
@@ -25,6 +26,8 @@ struct Params {
   TargetMode targets = TargetMode::Reproject;
   double stop_abd = 1.0;                     // δ_ABD, percent (Eq. 19); stop when ratio below
   double stop_obd = 1.0;                     // δ_OBD, percent (Eq. 20)
+  SolverKind solver = SolverKind::Auto;      // Auto: by size, as measured (sparse_cholesky.h)
+  int threads = 0;                           // patches solved at once; 0 = all cores
 };
 
 }  // namespace qd

@@ -3,17 +3,21 @@
 #include "quasidev.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
 #include <numeric>
+#include <thread>
 
 #include "deformer.h"
 #include "error.h"
 #include "group_mesh.h"
 #include "metrics.h"
+#include "solve_rounds.h"
+#include "stage_timer.h"
 #include "target_normals.h"
 #include "topology.h"
 #include "validate.h"
@@ -152,6 +156,52 @@ std::string total_log_line(const Result& r) {
          format(" factorisation(s), %.0f ms", r.time_ms);
 }
 
+// Step 1 and Step 2 of one solve group, from the input positions.
+struct GroupRun {
+  GroupMesh group;
+  std::vector<PatchFit> fits;
+  std::vector<Vec3> targets;  // initial target per group face
+  DeformOutcome outcome;
+  double time_ms = 0;
+  std::exception_ptr error;
+};
+
+GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int>& faces,
+                   const std::vector<int>& patch, const std::vector<char>& constrained,
+                   const std::vector<char>& interior, const VertexFaces& incident,
+                   const Params& params, double ae, const std::function<void(double)>& progress) {
+  const auto t0 = Clock::now();
+  GroupRun run;
+  run.group = extract_group(V, F, faces, patch, constrained, interior, incident, params);
+  const GroupMesh& g = run.group;
+  double step1_ms = 0;
+  {
+    StageTimer timer(step1_ms);
+    run.fits = fit_patches(g, g.V0);
+    run.targets = group_targets(g, run.fits);
+  }
+  bool all_idle = true;
+  for (const PatchFit& p : run.fits) all_idle = all_idle && p.idle();
+  if (all_idle) {
+    run.outcome.V = g.V0;
+    run.outcome.stop_reason = run.fits.front().skipped.empty()
+                                  ? "planar: the Gauss image is a point, nothing to do"
+                                  : "left unchanged: " + run.fits.front().skipped;
+  } else {
+    run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets), params, ae,
+                         progress);
+  }
+  run.outcome.times.step1 += step1_ms;
+  run.time_ms = ms_since(t0);
+  return run;
+}
+
+// Threads to use: the parameter, or every core when it is 0.
+size_t thread_count(int requested) {
+  if (requested > 0) return static_cast<size_t>(requested);
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
 }  // namespace
 
 Result approximate(const Problem& problem, const Progress& progress) {
@@ -186,98 +236,113 @@ Result approximate(const Problem& problem, const Progress& progress) {
     groups.push_back(indices(nf));
   }
 
+  // Step 1 and Step 2 per group, round by round (solve_rounds.h); the groups of a round share
+  // no vertex and run in parallel from the positions the earlier rounds left.
+  std::vector<GroupRun> runs(groups.size());
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<size_t> done{0};
+  for (const std::vector<size_t>& round : solve_rounds(groups, F, V.rows())) {
+    std::atomic<size_t> next{0};
+    const auto work = [&] {
+      for (size_t k = next++; k < round.size(); k = next++) {
+        GroupRun& run = runs[round[k]];
+        try {
+          const auto group_progress = [&](double fraction) {  // only the caller's thread reports
+            if (progress && std::this_thread::get_id() == caller)
+              progress(static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
+                                        static_cast<double>(groups.size())),
+                       "deforming");
+          };
+          run = run_group(r.V, F, groups[round[k]], patch, constrained, interior, incident,
+                          params, r.average_edge, group_progress);
+        } catch (...) {
+          run.error = std::current_exception();
+        }
+        ++done;
+      }
+    };
+    std::vector<std::thread> helpers;
+    for (size_t t = 1; t < std::min(round.size(), thread_count(params.threads)); ++t)
+      helpers.emplace_back(work);
+    work();
+    for (std::thread& h : helpers) h.join();
+    for (size_t gi : round) {
+      const GroupRun& run = runs[gi];
+      if (run.error) std::rethrow_exception(run.error);
+      for (size_t l = 0; l < run.group.global_vertex.size(); ++l)
+        if (!run.group.fixed[l])
+          r.V.row(run.group.global_vertex[l]) = run.outcome.V.row(static_cast<Eigen::Index>(l));
+    }
+  }
+
   std::vector<Vec3> initial_target(nf);
   size_t skipped_patches = 0;
   std::string first_skip;  // the reason of the first patch Step 1 could not fit
   std::map<int, PatchReport> reports;
-  for (size_t gi = 0; gi < groups.size(); ++gi) {
-    const auto tg = Clock::now();
-    const GroupMesh g =
-        extract_group(r.V, F, groups[gi], patch, constrained, interior, incident, params);
-    const std::vector<PatchFit> fits = fit_patches(g, g.V0);
-    const std::vector<Vec3> targets = group_targets(g, fits);
-    for (size_t f = 0; f < targets.size(); ++f)
-      initial_target[static_cast<size_t>(g.global_face[f])] = targets[f];
-
-    bool all_idle = true;
-    for (const PatchFit& p : fits) all_idle = all_idle && p.idle();
-    DeformOutcome outcome;
-    if (all_idle) {
-      outcome.V = g.V0;
-      outcome.stop_reason = fits.front().skipped.empty()
-                                ? "planar: the Gauss image is a point, nothing to do"
-                                : "left unchanged: " + fits.front().skipped;
-    } else {
-      const auto group_progress = [&](double fraction) {
-        if (progress)
-          progress(static_cast<int>(100.0 * (static_cast<double>(gi) + fraction) /
-                                    static_cast<double>(groups.size())),
-                   "deforming");
-      };
-      outcome = deform(g, targets, make_retarget(g, fits, params.targets), params,
-                       r.average_edge, group_progress);
-    }
-    r.factorizations += outcome.factorizations;
-    for (size_t l = 0; l < g.global_vertex.size(); ++l)
-      r.V.row(g.global_vertex[l]) = outcome.V.row(static_cast<Eigen::Index>(l));
-
-    const double group_ms = ms_since(tg);
-    for (const PatchFit& p : fits) {
+  for (const GroupRun& run : runs) {
+    r.times += run.outcome.times;
+    for (size_t f = 0; f < run.targets.size(); ++f)
+      initial_target[static_cast<size_t>(run.group.global_face[f])] = run.targets[f];
+    for (const PatchFit& p : run.fits) {
       PatchReport& rep = reports[p.id];
       rep.id = p.id;
       rep.target_kind = p.fit.model->kind();
       rep.fit_residual_deg = p.fit.residual_deg;
       rep.tolerance = patch_tolerance(params, p.id);
-      rep.iterations = static_cast<int>(outcome.history.size());
-      rep.stop_reason = p.skipped.empty() ? outcome.stop_reason : "left unchanged: " + p.skipped;
+      rep.iterations = static_cast<int>(run.outcome.history.size());
+      rep.stop_reason = p.skipped.empty() ? run.outcome.stop_reason : "left unchanged: " + p.skipped;
       if (!p.skipped.empty() && skipped_patches++ == 0) first_skip = "patch " + std::to_string(p.id) + ": " + p.skipped;
-      rep.history = outcome.history;
-      rep.time_ms = group_ms / static_cast<double>(fits.size());
+      rep.history = run.outcome.history;
+      rep.time_ms = run.time_ms / static_cast<double>(run.fits.size());
     }
   }
+  r.factorizations = r.times.factorizations;
 
   if (skipped_patches == faces_of_patch.size())
     throw Error(faces_of_patch.size() == 1 ? first_skip.substr(first_skip.find(": ") + 2)
                                            : "no patch can be made developable; " + first_skip);
 
-  // Per-patch figures, each patch measured on its own faces and interior vertices.
-  for (auto& [id, faces] : faces_of_patch) {
-    const GroupMesh pm = extract_group(V, F, faces, patch, constrained, interior, incident, params);
-    Positions after(pm.V0.rows(), 3);
-    for (size_t l = 0; l < pm.global_vertex.size(); ++l)
-      after.row(static_cast<Eigen::Index>(l)) = r.V.row(pm.global_vertex[l]);
-    std::vector<Vec3> t;
-    for (int f : faces) t.push_back(initial_target[static_cast<size_t>(f)]);
-    const std::vector<int> local_faces = indices(faces.size());
-    const std::vector<int> local_vertices = indices(static_cast<size_t>(pm.solve_vertices));
-    PatchReport& rep = reports[id];
-    rep.faces = static_cast<int>(faces.size());
-    rep.vertices = static_cast<int>(pm.solve_vertices);
-    rep.free_vertices = static_cast<int>(std::count(pm.fixed.begin(), pm.fixed.begin() + pm.solve_vertices, 0));
-    rep.before = measure(pm.V0, pm.V0, pm.F, pm.owned, local_faces, t, local_vertices);
-    rep.after = measure(pm.V0, after, pm.F, pm.owned, local_faces, t, local_vertices);
-    rep.abd_reduction = rep.before.g_abd > 0
-                            ? 100.0 * (rep.before.g_abd - rep.after.g_abd) / rep.before.g_abd
-                            : 0.0;
-    rep.obd_reduction =
-        rep.before.obd > 0 ? 100.0 * (rep.before.obd - rep.after.obd) / rep.before.obd : 0.0;
-    r.patches.push_back(rep);
-    r.log.push_back(patch_log_line(rep, r.average_edge));
-  }
+  {  // the reports' figures
+    StageTimer timer(r.times.metrics);
+    // Per-patch figures, each patch measured on its own faces and interior vertices.
+    for (auto& [id, faces] : faces_of_patch) {
+      const GroupMesh pm = extract_group(V, F, faces, patch, constrained, interior, incident, params);
+      Positions after(pm.V0.rows(), 3);
+      for (size_t l = 0; l < pm.global_vertex.size(); ++l)
+        after.row(static_cast<Eigen::Index>(l)) = r.V.row(pm.global_vertex[l]);
+      std::vector<Vec3> t;
+      for (int f : faces) t.push_back(initial_target[static_cast<size_t>(f)]);
+      const std::vector<int> local_faces = indices(faces.size());
+      const std::vector<int> local_vertices = indices(static_cast<size_t>(pm.solve_vertices));
+      PatchReport& rep = reports[id];
+      rep.faces = static_cast<int>(faces.size());
+      rep.vertices = static_cast<int>(pm.solve_vertices);
+      rep.free_vertices = static_cast<int>(std::count(pm.fixed.begin(), pm.fixed.begin() + pm.solve_vertices, 0));
+      rep.before = measure(pm.V0, pm.V0, pm.F, pm.owned, local_faces, t, local_vertices);
+      rep.after = measure(pm.V0, after, pm.F, pm.owned, local_faces, t, local_vertices);
+      rep.abd_reduction = rep.before.g_abd > 0
+                              ? 100.0 * (rep.before.g_abd - rep.after.g_abd) / rep.before.g_abd
+                              : 0.0;
+      rep.obd_reduction =
+          rep.before.obd > 0 ? 100.0 * (rep.before.obd - rep.after.obd) / rep.before.obd : 0.0;
+      r.patches.push_back(rep);
+      r.log.push_back(patch_log_line(rep, r.average_edge));
+    }
 
-  std::vector<int> interior_list;
-  for (size_t v = 0; v < nv; ++v)
-    if (interior[v]) interior_list.push_back(static_cast<int>(v));
-  const std::vector<int> all_faces = indices(nf), all_vertices = indices(nv);
-  r.k_after = gaussian_curvature(r.V, F, interior);
-  r.displacement.resize(nv);
-  for (size_t v = 0; v < nv; ++v)
-    r.displacement[v] = (r.V.row(static_cast<Eigen::Index>(v)) - V.row(static_cast<Eigen::Index>(v))).norm();
-  r.total_before = measure(V, V, F, interior_list, all_faces, initial_target, all_vertices);
-  r.total_after = measure(V, r.V, F, interior_list, all_faces, initial_target, all_vertices);
-  r.abd_reduction = r.total_before.g_abd > 0 ? 100.0 * (r.total_before.g_abd - r.total_after.g_abd) /
-                                                   r.total_before.g_abd
-                                             : 0.0;
+    std::vector<int> interior_list;
+    for (size_t v = 0; v < nv; ++v)
+      if (interior[v]) interior_list.push_back(static_cast<int>(v));
+    const std::vector<int> all_faces = indices(nf), all_vertices = indices(nv);
+    r.k_after = gaussian_curvature(r.V, F, interior);
+    r.displacement.resize(nv);
+    for (size_t v = 0; v < nv; ++v)
+      r.displacement[v] = (r.V.row(static_cast<Eigen::Index>(v)) - V.row(static_cast<Eigen::Index>(v))).norm();
+    r.total_before = measure(V, V, F, interior_list, all_faces, initial_target, all_vertices);
+    r.total_after = measure(V, r.V, F, interior_list, all_faces, initial_target, all_vertices);
+    r.abd_reduction = r.total_before.g_abd > 0 ? 100.0 * (r.total_before.g_abd - r.total_after.g_abd) /
+                                                     r.total_before.g_abd
+                                               : 0.0;
+  }
   r.time_ms = ms_since(t0);
   r.log.push_back(total_log_line(r));
   if (progress) progress(100, "done");

@@ -46,6 +46,23 @@ struct PatchReport {
   std::vector<IterationReport> history;
 };
 
+// Where the time went, in milliseconds summed over groups (and threads), and solver counts.
+struct StageTimes {
+  double step1 = 0;          // DEGI, skeleton curve, target normals and their re-projection
+  double assembly = 0;       // the matrix M and the right-hand sides
+  double factorization = 0;  // symbolic analysis and numeric factorisations
+  double solve = 0;          // forward and back substitutions
+  double metrics = 0;        // figures for the stop criteria, the never-worse rule, the reports
+  int factorizations = 0;
+  int solves = 0;            // linear solves, one per iteration
+  StageTimes& operator+=(const StageTimes& o) {
+    step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
+    solve += o.solve, metrics += o.metrics;
+    factorizations += o.factorizations, solves += o.solves;
+    return *this;
+  }
+};
+
 struct Result {
   Positions V;                       // new positions, same order as the input
   double average_edge = 0;           // AE of the input
@@ -57,6 +74,7 @@ struct Result {
   Figures total_after;
   double abd_reduction = 0;          // whole mesh, percent
   int factorizations = 0;            // sparse Cholesky numeric factorisations performed
+  StageTimes times;                  // per stage; time_ms is the wall-clock total
   double time_ms = 0;
   std::vector<std::string> log;      // human-readable lines, one per patch plus notes
 };

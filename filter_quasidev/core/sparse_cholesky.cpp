@@ -1,22 +1,82 @@
 #include "sparse_cholesky.h"
 
+#include <Eigen/SparseCholesky>
+#ifdef QD_WITH_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
 #include "error.h"
 
 namespace qd {
 
-void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& M) {
-  if (!analysed_) {
-    llt_.analyzePattern(M);
-    analysed_ = true;
+struct SparseCholesky::Backend {
+  virtual ~Backend() = default;
+  virtual bool analyse_and_factorize(const Eigen::SparseMatrix<double>& M, bool analyse) = 0;
+  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+};
+
+namespace {
+
+// Any of Eigen's sparse Cholesky classes (its own or its CHOLMOD wrappers).
+template <typename Solver>
+struct EigenApiBackend : SparseCholesky::Backend {
+  Solver solver;
+  bool analyse_and_factorize(const Eigen::SparseMatrix<double>& M, bool analyse) override {
+    if (analyse) solver.analyzePattern(M);
+    solver.factorize(M);
+    return solver.info() == Eigen::Success;
   }
-  llt_.factorize(M);
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const override { return solver.solve(b); }
+};
+
+using Matrix = Eigen::SparseMatrix<double>;
+using Natural = Eigen::NaturalOrdering<int>;
+
+#ifdef QD_WITH_CHOLMOD
+struct CholmodBackend : EigenApiBackend<Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower>> {
+  CholmodBackend() {
+    cholmod_common& c = solver.cholmod();
+    c.nmethods = 1;  // the given (already fill-reducing) order, no AMD/METIS trials
+    c.method[0].ordering = CHOLMOD_NATURAL;
+    c.postorder = 1;
+  }
+};
+#endif
+
+std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unknowns) {
+  if (kind == SolverKind::Auto)
+    kind = unknowns < kCholmodFromUnknowns || !kHaveCholmod ? SolverKind::EigenLDLT : SolverKind::Cholmod;
+  switch (kind) {
+    case SolverKind::EigenLLT:
+      return std::make_unique<EigenApiBackend<Eigen::SimplicialLLT<Matrix, Eigen::Lower, Natural>>>();
+    case SolverKind::EigenLDLT:
+      return std::make_unique<EigenApiBackend<Eigen::SimplicialLDLT<Matrix, Eigen::Lower, Natural>>>();
+    case SolverKind::Auto:
+    case SolverKind::Cholmod:
+      break;
+  }
+#ifdef QD_WITH_CHOLMOD
+  return std::make_unique<CholmodBackend>();
+#else
+  throw Error("this build of the engine has no CHOLMOD: choose the eigen-llt or eigen-ldlt solver");
+#endif
+}
+
+}  // namespace
+
+SparseCholesky::SparseCholesky(SolverKind kind) : kind_(kind) {}
+SparseCholesky::~SparseCholesky() = default;
+
+void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& M) {
+  if (!backend_) backend_ = make_backend(kind_, M.rows());
+  const bool ok = backend_->analyse_and_factorize(M, factorizations_ == 0);
   ++factorizations_;
-  if (llt_.info() != Eigen::Success)
+  if (!ok)
     throw Error(
         "the deformation system is not positive definite (degenerate faces?): remove zero-area "
         "and duplicate faces, then try again");
 }
 
-Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const { return llt_.solve(b); }
+Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const { return backend_->solve(b); }
 
 }  // namespace qd

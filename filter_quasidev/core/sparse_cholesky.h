@@ -1,24 +1,45 @@
-// Sparse Cholesky factorisation of the SPD normal matrix (paper §5.4, Eq. 17): the fill-reducing
-// ordering and symbolic analysis are done on the first factorisation and reused afterwards,
-// since the sparsity pattern of a group's matrix never changes.
+// Sparse Cholesky factorisation of the SPD normal matrix (paper §5.4, Eq. 17). The matrix
+// arrives already in a fill-reducing order (vertex_order.h), so no back end reorders it; the
+// symbolic analysis is done on the first factorisation and reused, since a group's sparsity
+// pattern never changes. Back ends: CHOLMOD supernodal LLᵀ (SuiteSparse), Eigen's SimplicialLLT
+// and SimplicialLDLT. SolverKind::Auto takes SimplicialLDLT below kCholmodFromUnknowns unknowns
+// and CHOLMOD from there on (the crossover measured by bench/qd_bench, README, Performance), or
+// SimplicialLDLT always in a build without CHOLMOD.
 #pragma once
 
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <memory>
+
+#include "params.h"
 
 namespace qd {
 
+constexpr long kCholmodFromUnknowns = 6000;
+#ifdef QD_WITH_CHOLMOD
+constexpr bool kHaveCholmod = true;
+#else
+constexpr bool kHaveCholmod = false;  // the build for plugins whose host ships no SuiteSparse
+#endif
+
 class SparseCholesky {
  public:
+  explicit SparseCholesky(SolverKind kind);
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
   // Factorises M (lower triangle used); throws qd::Error if M is not positive definite.
   void factorize(const Eigen::SparseMatrix<double>& M);
   // Solves M x = b by forward and back substitution with the current factor.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  bool factorized() const { return factorizations_ > 0; }
   int factorizations() const { return factorizations_; }
 
+  struct Backend;
+
  private:
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> llt_;
-  bool analysed_ = false;
+  SolverKind kind_;
+  std::unique_ptr<Backend> backend_;  // chosen on the first factorisation
   int factorizations_ = 0;
 };
 

@@ -9,7 +9,8 @@
 #    gives the DT_NEEDED entry the application resolves at load time -> bin/meshlab2025/.
 # What the wheel needs from a plugin (verified, see tests/pymeshlab/test_wheel_abi.py):
 #  DT_NEEDED libmeshlab-common.so (the host dlopens extensions RTLD_LOCAL), no other library the
-#  wheel lacks (so no libGLEW: the wheel ships libexternal-glew.so instead), no RUNPATH into the
+#  wheel lacks (so no libGLEW: the wheel ships libexternal-glew.so instead, and no libcholmod:
+#  both link qd_core_eigen, the engine without CHOLMOD), no RUNPATH into the
 #  venv, Qt 5.15 (the wheel bundles qt.io Qt 5.15.2; plugins built with Debian's 5.15.8 load).
 
 set(QD_MESHLAB2025_SOURCE_DIR "${PROJECT_SOURCE_DIR}/third_party/meshlab-2025.07"
@@ -49,7 +50,7 @@ endif()
 
 # pymeshlab 2025.7.post1 (double, "2025.07d"), linked against the wheel's libmeshlab-common.so.
 if(EXISTS "${_qd_wheel_lib}/libmeshlab-common.so")
-  qd_add_meshlab_plugin(filter_quasidev_pymeshlab
+  qd_add_meshlab_plugin(filter_quasidev_pymeshlab CORE qd_core_eigen
     SOURCES ${_qd_2025_sources}
     SYSTEM_INCLUDES ${_qd_2025_includes}
     DEFINITIONS MESHLAB_SCALAR=double MESHLAB_VERSION=2025.07d
@@ -71,7 +72,7 @@ add_library(qd_meshlab2025_common_stub SHARED "${_qd_stub_source}")
 set_target_properties(qd_meshlab2025_common_stub PROPERTIES
   OUTPUT_NAME meshlab-common
   LIBRARY_OUTPUT_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}/meshlab2025_stub")
-qd_add_meshlab_plugin(filter_quasidev_meshlab2025 ALLOW_UNDEFINED
+qd_add_meshlab_plugin(filter_quasidev_meshlab2025 ALLOW_UNDEFINED CORE qd_core_eigen
   SOURCES ${_qd_2025_sources}
   SYSTEM_INCLUDES ${_qd_2025_includes}
   DEFINITIONS MESHLAB_SCALAR=float MESHLAB_VERSION=2025.07

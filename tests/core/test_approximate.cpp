@@ -138,5 +138,36 @@ TEST(Approximate, BadParametersAreRejectedWithoutTouchingTheInput) {
   EXPECT_THROW(approximate(p), Error);
 }
 
+// Sectors with fixed seams run in parallel rounds; neither the thread count nor the solver
+// back end changes a single bit (solvers: to 1e-9 of the model size).
+TEST(Approximate, ResultDoesNotDependOnThreadsOrSolver) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 6);
+  p.params.tolerance = 0.2;
+  p.params.threads = 1;
+  const Result one = approximate(p);
+  p.params.threads = 2;
+  const Result two = approximate(p);
+  EXPECT_TRUE(one.V == two.V) << "positions differ between 1 and 2 threads";
+  EXPECT_GT(one.abd_reduction, 10.0);
+  for (SolverKind solver : {SolverKind::Cholmod, SolverKind::EigenLLT, SolverKind::EigenLDLT}) {
+    p.params.solver = solver;
+    EXPECT_LT((approximate(p).V - one.V).cwiseAbs().maxCoeff(), 1e-9) << static_cast<int>(solver);
+  }
+}
+
+TEST(Approximate, StageTimesCountTheSolverWork) {
+  Problem p = bumpy();
+  p.params.max_iter = 3;
+  p.params.stop_abd = p.params.stop_obd = 0;
+  const Result r = approximate(p);
+  EXPECT_EQ(r.times.factorizations, r.factorizations);
+  EXPECT_GE(r.times.solves, r.patches[0].iterations);
+  EXPECT_GT(r.times.factorization, 0.0);
+  EXPECT_GT(r.times.step1, 0.0);
+  EXPECT_GT(r.times.metrics, 0.0);
+  EXPECT_LE(r.times.step1 + r.times.assembly + r.times.factorization + r.times.solve + r.times.metrics,
+            r.time_ms * 1.01);  // one thread: the stages fit in the wall clock
+}
+
 }  // namespace
 }  // namespace qd

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <random>
 
 #include "anchor_weights.h"
@@ -82,21 +83,38 @@ void dense_system(const Fixture& s, double w, double alpha, double ae, Eigen::Ma
   for (size_t k = 0; k < free_cols.size(); ++k) A_free.col(static_cast<Eigen::Index>(k)) = A.col(free_cols[k]);
 }
 
-// The sparse system and its dense twin for one set of weights.
+// The sparse system and its dense twin for one set of weights, the twin's columns put in the
+// system's unknown order (free vertices numbered in a fill-reducing order, 3 coordinates each).
 struct Both {
   Fixture s;
   DeformationSystem sys;
   Eigen::MatrixXd A;
   Eigen::VectorXd c;
-  Both(double w, double alpha, double ae) : sys(s.g, w, alpha, ae) {
+  Both(double w, double alpha, double ae, SolverKind solver = SolverKind::Auto)
+      : sys(s.g, w, alpha, ae, solver) {
     sys.set_targets(s.targets);
-    dense_system(s, w, alpha, ae, A, c);
+    Eigen::MatrixXd by_vertex;
+    dense_system(s, w, alpha, ae, by_vertex, c);
+    A.resize(by_vertex.rows(), by_vertex.cols());
+    Eigen::Index k = 0;
+    for (size_t v = 0; v < sys.unknown().size(); ++v) {
+      if (sys.unknown()[v] < 0) continue;
+      for (int d = 0; d < 3; ++d) A.col(3 * sys.unknown()[v] + d) = by_vertex.col(3 * k + d);
+      ++k;
+    }
+  }
+  // Unknown vector of positions X, in the system's order.
+  Eigen::VectorXd free_vector(const Positions& X) const {
+    Eigen::VectorXd x(A.cols());
+    for (size_t v = 0; v < sys.unknown().size(); ++v)
+      if (sys.unknown()[v] >= 0) x.segment<3>(3 * sys.unknown()[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
+    return x;
   }
 };
 
 TEST(DeformationSystem, SparseEqualsDenseAssembly) {
   Both b(7.0, 3.0, 0.4);
-  const auto& [s, sys, A, c] = b;
+  auto& [s, sys, A, c] = b;
 
   const Eigen::MatrixXd lower = Eigen::MatrixXd(sys.matrix());
   const Eigen::MatrixXd M = lower + lower.transpose() - Eigen::MatrixXd(lower.diagonal().asDiagonal());
@@ -107,34 +125,44 @@ TEST(DeformationSystem, SparseEqualsDenseAssembly) {
   EXPECT_LT((rhs - eb).norm(), 1e-9 * eb.norm());
 }
 
-TEST(DeformationSystem, SolveIsTheLeastSquaresMinimiser) {
-  Both b(30.0, 10.0, 0.4);
-  const auto& [s, sys, A, c] = b;
+class EverySolver : public ::testing::TestWithParam<SolverKind> {};
+
+TEST_P(EverySolver, SolveIsTheLeastSquaresMinimiser) {
+  Both b(30.0, 10.0, 0.4, GetParam());
+  auto& [s, sys, A, c] = b;
   const Eigen::VectorXd x = A.colPivHouseholderQr().solve(c);
   const Positions X = sys.solve(s.ref);
-  Eigen::Index k = 0;
   for (Eigen::Index v = 0; v < X.rows(); ++v) {
-    if (s.g.fixed[static_cast<size_t>(v)]) {
+    const int k = sys.unknown()[static_cast<size_t>(v)];
+    if (k < 0) {
       EXPECT_EQ(X.row(v), s.g.V0.row(v)) << "constrained vertex " << v << " moved";
       continue;
     }
     EXPECT_LT((X.row(v).transpose() - x.segment<3>(3 * k)).norm(), 1e-8);
-    ++k;
   }
+}
+
+INSTANTIATE_TEST_SUITE_P(Solvers, EverySolver,
+                         ::testing::Values(SolverKind::Auto, SolverKind::Cholmod,
+                                           SolverKind::EigenLLT, SolverKind::EigenLDLT));
+
+// The unknowns are numbered in a fill-reducing order: a permutation of the free vertices.
+TEST(DeformationSystem, UnknownsArePermutedFreeVertices) {
+  Both b(30.0, 10.0, 0.4);
+  std::vector<int> seen;
+  for (size_t v = 0; v < b.sys.unknown().size(); ++v) {
+    EXPECT_EQ(b.sys.unknown()[v] < 0, static_cast<bool>(b.s.g.fixed[v])) << "vertex " << v;
+    if (b.sys.unknown()[v] >= 0) seen.push_back(b.sys.unknown()[v]);
+  }
+  std::sort(seen.begin(), seen.end());
+  for (size_t k = 0; k < seen.size(); ++k) EXPECT_EQ(seen[k], static_cast<int>(k));
 }
 
 TEST(DeformationSystem, SolveLowersTheObjectiveOfEq14) {
   Both b(30.0, 10.0, 0.4);
-  const auto& [s, sys, A, c] = b;
-  auto free_vector = [&](const Positions& X) {
-    Eigen::VectorXd x(b.A.cols());
-    Eigen::Index k = 0;
-    for (Eigen::Index v = 0; v < X.rows(); ++v)
-      if (!b.s.g.fixed[static_cast<size_t>(v)]) x.segment<3>(3 * k++) = X.row(v).transpose();
-    return x;
-  };
-  const double at_ref = (A * free_vector(s.ref) - c).squaredNorm();
-  const double at_solution = (A * free_vector(sys.solve(s.ref)) - c).squaredNorm();
+  auto& [s, sys, A, c] = b;
+  const double at_ref = (A * b.free_vector(s.ref) - c).squaredNorm();
+  const double at_solution = (A * b.free_vector(sys.solve(s.ref)) - c).squaredNorm();
   EXPECT_LT(at_solution, 0.5 * at_ref);
 }
 

@@ -1,0 +1,34 @@
+#include "bench_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace qd::bench {
+
+meshio::MeshFile curved_sheet(long triangles, int patches) {
+  const double quads = static_cast<double>(triangles) / 2.0;
+  const int columns = std::max(2, static_cast<int>(std::lround(std::sqrt(quads))));
+  const int rows = std::max(2, static_cast<int>(std::ceil(quads / columns)));
+  const double pi = std::acos(-1.0), angle = pi / 2, height = angle;  // arc length = height
+  const double edge = height / rows, bump = 0.3 * edge;
+  meshio::MeshFile mesh;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i <= columns; ++i) {
+      const double u = static_cast<double>(i) / columns, v = static_cast<double>(j) / rows;
+      const double r = 1.0 + bump * std::sin(6 * pi * u) * std::sin(6 * pi * v);
+      mesh.positions.push_back({r * std::cos(angle * u), r * std::sin(angle * u), height * v});
+    }
+  const auto at = [&](int i, int j) { return j * (columns + 1) + i; };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < columns; ++i) {
+      const int band = std::min(patches - 1, j * patches / rows);
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      mesh.patch.push_back(band);
+      mesh.patch.push_back(band);
+    }
+  if (patches <= 1) mesh.patch.clear();
+  return mesh;
+}
+
+}  // namespace qd::bench

@@ -1,0 +1,188 @@
+// qd_bench: times the quasi-developable approximation stage by stage on one mesh and prints one
+// JSON object: per-stage medians over several runs, peak memory, the bare solver floor and the
+// overhead ratios of issue 5. scripts/bench.py runs it over the suite and draws the scaling plot.
+//
+// Usage: qd_bench (--grid TRIANGLES [--patches P] [--save FILE] | --mesh FILE) [--runs R]
+//                 [-- QUASIDEV OPTIONS]
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "atomic_file.h"
+#include "bare_solver.h"
+#include "bench_mesh.h"
+#include "error.h"
+#include "mesh_problem.h"
+#include "mesh_reader.h"
+#include "options.h"
+#include "output_mesh.h"
+#include "ply_writer.h"
+#include "quasidev.h"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+double peak_rss_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+struct Args {
+  long grid = 0;
+  int patches = 1;
+  std::string mesh;
+  int runs = 5;
+  std::string save;                   // keep the generated mesh here
+  std::vector<std::string> quasidev;  // options passed to the engine as quasidev would
+};
+
+Args parse(int argc, char** argv) {
+  Args a;
+  for (int i = 1; i < argc; ++i) {
+    const std::string s = argv[i];
+    const auto next = [&]() -> std::string {
+      if (i + 1 >= argc) throw qd::Error(s + " needs a value");
+      return argv[++i];
+    };
+    if (s == "--grid") a.grid = std::stol(next());
+    else if (s == "--patches") a.patches = std::stoi(next());
+    else if (s == "--mesh") a.mesh = next();
+    else if (s == "--runs") a.runs = std::max(1, std::stoi(next()));
+    else if (s == "--save") a.save = next();
+    else if (s == "--") a.quasidev.assign(argv + i + 1, argv + argc), i = argc;
+    else throw qd::Error("unknown argument " + s);
+  }
+  if (a.grid <= 0 && a.mesh.empty()) throw qd::Error("give --grid TRIANGLES or --mesh FILE");
+  return a;
+}
+
+std::string serialize(const qd::meshio::MeshFile& mesh, const std::vector<std::array<double, 3>>& positions) {
+  qd::meshio::OutputFields fields;
+  fields.positions = positions;
+  return qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
+                                   qd::meshio::PlyFormat::BinaryLittleEndian);
+}
+
+void run(const Args& a) {
+  const std::string scratch = "/tmp/qd_bench_" + std::to_string(getpid());
+  const std::string input = !a.mesh.empty() ? a.mesh : !a.save.empty() ? a.save : scratch + "_in.ply";
+  const std::string output = scratch + "_out.ply";
+  if (a.mesh.empty()) {
+    qd::meshio::MeshFile generated = qd::bench::curved_sheet(a.grid, a.patches);
+    if (!generated.patch.empty())  // patch ids travel as face quality, as MeshLab writes them
+      generated.face_extra.push_back(qd::meshio::scalar_property(
+          "quality", qd::meshio::ScalarType::Float32,
+          std::vector<double>(generated.patch.begin(), generated.patch.end())));
+    qd::meshio::PendingFile file(input, serialize(generated, generated.positions));
+    file.commit();
+  }
+  std::vector<std::string> args = {input, output};
+  args.insert(args.end(), a.quasidev.begin(), a.quasidev.end());
+  const qd::cli::Options options = qd::cli::parse_options(args);
+
+  std::vector<double> read_ms, write_ms, wall_ms, step1, assembly, factor, solve, metrics;
+  qd::Result result;
+  qd::meshio::MeshFile mesh;
+  for (int r = 0; r < a.runs; ++r) {
+    auto t0 = Clock::now();
+    mesh = qd::meshio::read_mesh(input);
+    const qd::Problem problem = qd::cli::make_problem(mesh, options);
+    read_ms.push_back(ms_since(t0));
+
+    t0 = Clock::now();
+    result = qd::approximate(problem, [](int, const std::string&) {});
+    wall_ms.push_back(ms_since(t0));
+    step1.push_back(result.times.step1);
+    assembly.push_back(result.times.assembly);
+    factor.push_back(result.times.factorization);
+    solve.push_back(result.times.solve);
+    metrics.push_back(result.times.metrics);
+
+    t0 = Clock::now();
+    const qd::meshio::OutputFields fields = qd::cli::output_fields(result, options, mesh.positions.size());
+    qd::meshio::PendingFile file(output, qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
+                                                                   qd::meshio::PlyFormat::BinaryLittleEndian));
+    file.commit();
+    write_ms.push_back(ms_since(t0));
+  }
+  const double peak_mb = peak_rss_mb();
+
+  const qd::Problem problem = qd::cli::make_problem(mesh, options);
+  const std::vector<qd::bench::BareGroup> bare = qd::bench::bare_solver_times(problem, a.runs);
+  // The floor: per group, the factorisations and solves the method needs (one factorisation
+  // with fixed targets, one per solve when the targets change) at the bare solver's speed.
+  double bare_factor = 0, floor = 0, bare_solve_sum = 0;
+  long unknowns = 0;
+  const bool fixed_targets = options.params.targets == qd::TargetMode::Fixed;
+  for (const auto& g : bare) {
+    bare_factor += g.factor_ms;
+    bare_solve_sum += g.solve_ms;
+    unknowns = std::max(unknowns, g.unknowns);
+    for (const qd::PatchReport& p : result.patches) {
+      if (p.id != g.patch && g.patch >= 0) continue;
+      const int solves = p.iterations + (p.stop_reason.rfind("never-worse", 0) == 0 ? 1 : 0);
+      floor += (fixed_targets ? 1 : solves) * g.factor_ms + solves * g.solve_ms;
+      if (g.patch < 0) break;  // one joint group: count it once
+    }
+  }
+  const int solves = std::max(1, result.times.solves);
+  const double engine = median(wall_ms), io = median(read_ms) + median(write_ms);
+  const double per_iteration_solve = median(solve) / solves;
+  const double mean_bare_solve = bare.empty() ? 0 : bare_solve_sum / static_cast<double>(bare.size());
+
+  std::printf(
+      "{\"mesh\": \"%s\", \"faces\": %ld, \"vertices\": %ld, \"patches\": %zu, \"runs\": %d, "
+      "\"iterations\": %d, \"solves\": %d, \"factorizations\": %d, "
+      "\"largest_unknowns\": %ld, "
+      "\"ms\": {\"read\": %.3f, \"step1\": %.3f, \"assembly\": %.3f, \"factorization\": %.3f, "
+      "\"solve\": %.3f, \"metrics\": %.3f, \"engine\": %.3f, \"write\": %.3f, \"end_to_end\": %.3f}, "
+      "\"bare_ms\": {\"factorization\": %.3f, \"solve\": %.3f, \"floor\": %.3f}, "
+      "\"overhead\": %.3f, \"solve_ratio\": %.3f, \"peak_mb\": %.1f, "
+      "\"abd_reduction\": %.2f}\n",
+      a.mesh.empty() ? ("grid" + std::to_string(a.grid) + "x" + std::to_string(a.patches)).c_str()
+                     : a.mesh.c_str(),
+      static_cast<long>(mesh.triangles.size()), static_cast<long>(mesh.positions.size()),
+      result.patches.size(), a.runs, [&] {
+        int it = 0;
+        for (const auto& p : result.patches) it = std::max(it, p.iterations);
+        return it;
+      }(),
+      result.times.solves, result.times.factorizations, unknowns,
+      median(read_ms), median(step1), median(assembly), median(factor), median(solve),
+      median(metrics), engine, median(write_ms), engine + io, bare_factor,
+      mean_bare_solve, floor, engine / std::max(1e-9, floor),
+      mean_bare_solve > 0 ? per_iteration_solve / mean_bare_solve : 0.0, peak_mb,
+      result.abd_reduction);
+  std::remove(output.c_str());
+  if (a.mesh.empty() && a.save.empty()) std::remove(input.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    run(parse(argc, argv));
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "qd_bench: " << e.what() << '\n';
+    return 1;
+  }
+}

@@ -1,0 +1,89 @@
+#include "vertex_order.h"
+
+#include <algorithm>
+#include <numeric>
+
+#include "error.h"
+#ifdef QD_WITH_CHOLMOD
+#include <cholmod.h>
+#else
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCore>
+#endif
+
+namespace qd {
+namespace {
+
+// The lower triangle of the graph's pattern with the diagonal, as sorted (column, row) pairs.
+std::vector<std::pair<int, int>> lower_pattern(int nodes, const std::vector<std::pair<int, int>>& edges) {
+  std::vector<std::pair<int, int>> lower;
+  lower.reserve(edges.size() + static_cast<size_t>(nodes));
+  for (int v = 0; v < nodes; ++v) lower.emplace_back(v, v);
+  for (const auto& [i, j] : edges) lower.emplace_back(std::min(i, j), std::max(i, j));
+  std::sort(lower.begin(), lower.end());
+  lower.erase(std::unique(lower.begin(), lower.end()), lower.end());
+  return lower;
+}
+
+#ifdef QD_WITH_CHOLMOD
+// perm[k]: the node eliminated k-th, as CHOLMOD chooses it.
+void elimination_order(int nodes, const std::vector<std::pair<int, int>>& lower, std::vector<int>& perm) {
+  cholmod_common common;
+  cholmod_start(&common);
+  // CHOLMOD keeps the better (least fill) of minimum degree and, on large graphs where it can
+  // pay off, METIS nested dissection.
+  common.nmethods = nodes < kNestedDissectionFrom ? 1 : 2;
+  common.method[0].ordering = CHOLMOD_AMD;
+  common.method[1].ordering = CHOLMOD_METIS;
+  common.supernodal = CHOLMOD_SIMPLICIAL;
+  cholmod_sparse* pattern = cholmod_allocate_sparse(static_cast<size_t>(nodes), static_cast<size_t>(nodes),
+                                                    lower.size(), 1, 1, -1, CHOLMOD_PATTERN, &common);
+  cholmod_factor* symbolic = nullptr;
+  if (pattern) {
+    int* p = static_cast<int*>(pattern->p);
+    int* i = static_cast<int*>(pattern->i);
+    std::fill(p, p + nodes + 1, 0);
+    for (size_t k = 0; k < lower.size(); ++k) {
+      ++p[lower[k].first + 1];
+      i[k] = lower[k].second;
+    }
+    for (int c = 0; c < nodes; ++c) p[c + 1] += p[c];
+    symbolic = cholmod_analyze(pattern, &common);
+  }
+  if (symbolic) {
+    const int* order = static_cast<const int*>(symbolic->Perm);
+    perm.assign(order, order + nodes);
+  }
+  const bool ok = symbolic != nullptr;
+  cholmod_free_factor(&symbolic, &common);
+  cholmod_free_sparse(&pattern, &common);
+  cholmod_finish(&common);
+  if (!ok) throw Error("out of memory while ordering the deformation system");
+}
+#else
+// perm[k]: the node eliminated k-th by Eigen's minimum degree (AMD).
+void elimination_order(int nodes, const std::vector<std::pair<int, int>>& lower, std::vector<int>& perm) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(lower.size());
+  for (const auto& [c, r] : lower) entries.emplace_back(r, c, 1.0);
+  Eigen::SparseMatrix<double> graph(nodes, nodes);
+  graph.setFromTriplets(entries.begin(), entries.end());
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
+  Eigen::AMDOrdering<int>()(graph.selfadjointView<Eigen::Lower>(), order);
+  perm.assign(order.indices().data(), order.indices().data() + nodes);
+}
+#endif
+
+}  // namespace
+
+std::vector<int> fill_reducing_rank(int nodes, const std::vector<std::pair<int, int>>& edges) {
+  std::vector<int> rank(static_cast<size_t>(nodes));
+  std::iota(rank.begin(), rank.end(), 0);
+  if (nodes < 2) return rank;
+  std::vector<int> perm;
+  elimination_order(nodes, lower_pattern(nodes, edges), perm);
+  for (int k = 0; k < nodes; ++k) rank[static_cast<size_t>(perm[static_cast<size_t>(k)])] = k;
+  return rank;
+}
+
+}  // namespace qd

@@ -1,0 +1,162 @@
+#!/usr/bin/env python3
+"""The performance benchmark of issue 5: runs bench/qd_bench (build/bin/qd_bench) over generated
+meshes of 1k to 1M triangles (one patch, and 16 patches with fixed seams), the 5,450-triangle
+7-patch target mesh and the shared meshes; prints per-stage medians, peak memory, the overhead
+ratios and the scaling exponent of every stage, the solver table, and writes docs/benchmark.md
+and the scaling plot docs/scaling.png.
+
+Usage: scripts/bench.py [--build DIR] [--quick] [--runs R] [--no-plot]
+  --quick   sizes up to 100k triangles (a few minutes); the default goes to 1M (about 15 min).
+Every run uses the quasidev defaults except --max-iter 5 (the issue's 1M target).
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+SHARED = os.path.join(os.path.dirname(ROOT), "shared", "meshes")
+STAGES = ["read", "step1", "assembly", "factorization", "solve", "metrics", "write"]
+SOLVERS = ["cholmod", "eigen-llt", "eigen-ldlt"]
+
+
+def bench(build, args, runs, options=()):
+    cmd = [os.path.join(build, "bin", "qd_bench"), *args, "--runs", str(runs), "--",
+           "--max-iter", "5", *options]
+    out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+def exponent(rows, key):
+    """Least-squares slope of log(time) against log(faces)."""
+    pts = [(math.log(r["faces"]), math.log(key(r))) for r in rows if key(r) > 0]
+    if len(pts) < 2:
+        return float("nan")
+    mx = sum(x for x, _ in pts) / len(pts)
+    my = sum(y for _, y in pts) / len(pts)
+    sxx = sum((x - mx) ** 2 for x, _ in pts)
+    return sum((x - mx) * (y - my) for x, y in pts) / sxx
+
+
+def stage_table(rows):
+    head = ("| mesh | faces | patches | iters | " + " | ".join(STAGES) +
+            " | engine | end to end | bare factor | bare solve | overhead | solve ratio | peak MB |")
+    lines = [head, "|" + "---|" * (head.count("|") - 1)]
+    for r in rows:
+        ms = r["ms"]
+        lines.append(
+            f"| {os.path.basename(r['mesh'])} | {r['faces']} | {r['patches']} | {r['iterations']} | "
+            + " | ".join(f"{ms[s]:.1f}" for s in STAGES)
+            + f" | {ms['engine']:.1f} | {ms['end_to_end']:.1f} | {r['bare_ms']['factorization']:.1f}"
+            f" | {r['bare_ms']['solve']:.2f} | {r['overhead']:.2f} | {r['solve_ratio']:.2f}"
+            f" | {r['peak_mb']:.0f} |")
+    return "\n".join(lines)
+
+
+def exponent_table(rows):
+    lines = ["| stage | scaling exponent (time ∝ faces^k) |", "|---|---|"]
+    for s in STAGES + ["engine", "end_to_end"]:
+        lines.append(f"| {s} | {exponent(rows, lambda r, s=s: r['ms'][s]):.2f} |")
+    lines.append(f"| bare factorisation | {exponent(rows, lambda r: r['bare_ms']['factorization']):.2f} |")
+    lines.append(f"| bare solve | {exponent(rows, lambda r: r['bare_ms']['solve']):.2f} |")
+    lines.append(f"| peak memory | {exponent(rows, lambda r: r['peak_mb']):.2f} |")
+    return "\n".join(lines)
+
+
+def solver_table(results):
+    lines = ["| faces | unknowns | solver | bare factor ms | bare solve ms | engine ms |",
+             "|---|---|---|---|---|---|"]
+    for r in results:
+        lines.append(f"| {r['faces']} | {r['largest_unknowns']} | {r['solver']} | "
+                     f"{r['bare_ms']['factorization']:.1f} | {r['bare_ms']['solve']:.2f} | "
+                     f"{r['ms']['engine']:.1f} |")
+    return "\n".join(lines)
+
+
+def plot(single, many, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
+    faces = [r["faces"] for r in single]
+    for stage in ["step1", "assembly", "factorization", "solve", "metrics"]:
+        ax.loglog(faces, [max(r["ms"][stage], 1e-3) for r in single], "o-", label=stage)
+    ax.loglog(faces, [r["ms"]["end_to_end"] for r in single], "k-", lw=2.5,
+              label="end to end, 1 patch")
+    ax.loglog([r["faces"] for r in many], [r["ms"]["end_to_end"] for r in many], "k--", lw=2,
+              label="end to end, 16 patches")
+    ax.loglog(faces, [r["bare_ms"]["floor"] for r in single], "k:", lw=2,
+              label="floor: bare factor + iterations × bare solve")
+    ax.set_xlabel("triangles")
+    ax.set_ylabel("milliseconds (median)")
+    ax.set_title("quasidev, 5 iterations, defaults, 2-core machine")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--runs", type=int, default=5)
+    ap.add_argument("--no-plot", action="store_true")
+    a = ap.parse_args()
+    sizes = [1000, 10000, 100000] if a.quick else [1000, 10000, 100000, 1000000]
+    runs_for = lambda n: a.runs if n <= 100000 else max(1, min(a.runs, 3))  # noqa: E731
+
+    def say(r):
+        print(f"  {os.path.basename(r['mesh'])}: {r['faces']} faces, end to end "
+              f"{r['ms']['end_to_end']:.1f} ms, overhead {r['overhead']:.2f}, peak {r['peak_mb']:.0f} MB",
+              file=sys.stderr, flush=True)
+        return r
+
+    print("target mesh (5,450 triangles, 7 patches)", file=sys.stderr)
+    target = [say(bench(a.build, ["--grid", "5450", "--patches", "7"], a.runs))]
+    print("generated meshes, one patch and 16 patches", file=sys.stderr)
+    single = [say(bench(a.build, ["--grid", str(n)], runs_for(n))) for n in sizes]
+    many = [say(bench(a.build, ["--grid", str(n), "--patches", "16"], runs_for(n))) for n in sizes]
+    print("shared meshes", file=sys.stderr)
+    shared = []
+    if os.path.isdir(SHARED):
+        for name in sorted(os.listdir(SHARED)):
+            if name.endswith(".ply"):
+                try:
+                    shared.append(say(bench(a.build, ["--mesh", os.path.join(SHARED, name)], a.runs)))
+                except subprocess.CalledProcessError as e:
+                    print(f"  {name}: refused ({e.stderr.strip()})", file=sys.stderr)
+    print("solvers", file=sys.stderr)
+    solvers = []
+    for n in [1000, 10000, 100000]:
+        for s in SOLVERS:
+            r = bench(a.build, ["--grid", str(n)], 3, ["--solver", s])
+            r["solver"] = s
+            solvers.append(say(r))
+
+    report = "\n\n".join([
+        "# Benchmark (scripts/bench.py" + (" --quick" if a.quick else "") + ")",
+        "Milliseconds, median of the runs; stage times are summed over patches and threads; "
+        "overhead = engine / (bare factorisation + iterations × bare solve); solve ratio = "
+        "per-iteration solve / bare solve.",
+        "## Target mesh\n\n" + stage_table(target),
+        "## Generated meshes, one patch\n\n" + stage_table(single),
+        "## Generated meshes, 16 patches (fixed seams, solved in parallel)\n\n" + stage_table(many),
+        "## Scaling exponents, one patch, 10k triangles and up\n\n" +
+        exponent_table([r for r in single if r["faces"] >= 10000]),
+        "## Shared meshes\n\n" + stage_table(shared),
+        "## Solvers (one patch)\n\n" + solver_table(solvers),
+    ]) + "\n"
+    print(report)
+    os.makedirs(os.path.join(ROOT, "docs"), exist_ok=True)
+    with open(os.path.join(ROOT, "docs", "benchmark.md"), "w") as f:
+        f.write(report)
+    if not a.no_plot:
+        plot(single, many, os.path.join(ROOT, "docs", "scaling.png"))
+
+
+if __name__ == "__main__":
+    main()
