@@ -39,13 +39,12 @@ __attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
 // The live (not deleted) part of a CMeshO in engine form, and where each engine vertex lives in
 // m.vert, so results can be written back in place.
 struct EngineMesh {
-  qd::Positions V;
-  qd::Triangles F;
   std::vector<std::size_t> vertex_slot;  // engine vertex i -> index into m.vert
   std::vector<std::size_t> face_slot;    // engine face f -> index into m.face
 };
 
-EngineMesh read_geometry(const CMeshO& m) {
+// The one CMeshO -> engine copy: the live vertices and faces straight into the problem's V, F.
+EngineMesh read_geometry(const CMeshO& m, qd::Problem& problem) {
   EngineMesh e;
   std::vector<int> compact(m.vert.size(), -1);
   for (std::size_t i = 0; i < m.vert.size(); ++i)
@@ -55,14 +54,14 @@ EngineMesh read_geometry(const CMeshO& m) {
     }
   for (std::size_t f = 0; f < m.face.size(); ++f)
     if (!m.face[f].IsD()) e.face_slot.push_back(f);
-  e.V.resize(static_cast<Eigen::Index>(e.vertex_slot.size()), 3);
+  problem.V.resize(static_cast<Eigen::Index>(e.vertex_slot.size()), 3);
   for (std::size_t i = 0; i < e.vertex_slot.size(); ++i)
     for (int a = 0; a < 3; ++a)
-      e.V(static_cast<Eigen::Index>(i), a) = static_cast<double>(m.vert[e.vertex_slot[i]].cP()[a]);
-  e.F.resize(static_cast<Eigen::Index>(e.face_slot.size()), 3);
+      problem.V(static_cast<Eigen::Index>(i), a) = static_cast<double>(m.vert[e.vertex_slot[i]].cP()[a]);
+  problem.F.resize(static_cast<Eigen::Index>(e.face_slot.size()), 3);
   for (std::size_t f = 0; f < e.face_slot.size(); ++f)
     for (int k = 0; k < 3; ++k)
-      e.F(static_cast<Eigen::Index>(f), k) =
+      problem.F(static_cast<Eigen::Index>(f), k) =
           compact[static_cast<std::size_t>(vcg::tri::Index(m, m.face[e.face_slot[f]].cV(k)))];
   return e;
 }
@@ -101,8 +100,8 @@ std::size_t count_selected(const std::vector<char>& constrained) {
 }
 
 // Average edge length AE of the live mesh (0 for a mesh without faces).
-double average_edge(const EngineMesh& e) {
-  return e.F.rows() > 0 ? qd::average_edge_length(e.V, e.F) : 0.0;
+double average_edge(const qd::Problem& p) {
+  return p.F.rows() > 0 ? qd::average_edge_length(p.V, p.F) : 0.0;
 }
 
 // Writes the engine's positions, per-vertex quality and (optionally) colours into m, then
@@ -135,11 +134,10 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Setti
 // read in `log`. The mesh is validated before the parameters (with a placeholder tolerance): a
 // tolerance derived from a broken mesh (NaN coordinates give a NaN AE, also as the dialog's
 // default) would otherwise hide what is really wrong.
-qd::Problem make_problem(const CMeshO& m, const EngineMesh& e, bool has_face_quality,
-                         const Settings& s, std::vector<std::string>& log) {
+qd::Problem make_problem(const CMeshO& m, bool has_face_quality, const Settings& s,
+                         std::vector<std::string>& log, EngineMesh& e) {
   qd::Problem problem;
-  problem.V = e.V;
-  problem.F = e.F;
+  e = read_geometry(m, problem);
   if (has_face_quality && s.use_patches) {
     problem.patch = read_patch_ids(m, e);
     const std::set<int> ids(problem.patch.begin(), problem.patch.end());
@@ -152,7 +150,7 @@ qd::Problem make_problem(const CMeshO& m, const EngineMesh& e, bool has_face_qua
   problem.params = s.params;
   problem.params.tolerance = 1;
   qd::validate(problem);
-  problem.params.tolerance = s.params.tolerance == 0 ? average_edge(e) : s.params.tolerance;
+  problem.params.tolerance = s.params.tolerance == 0 ? average_edge(problem) : s.params.tolerance;
   log.push_back(format("%zu selected vertices kept fixed; tolerance %g model units",
                        count_selected(problem.constrained), problem.params.tolerance));
   return problem;
@@ -188,7 +186,9 @@ std::string filter_info() {
 std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
   const qd::Params d;
   const Settings ds;
-  const double ae = average_edge(read_geometry(m));
+  qd::Problem geometry;
+  read_geometry(m, geometry);
+  const double ae = average_edge(geometry);
   const auto flag = [](bool b) { return b ? 1.0 : 0.0; };
   const auto index = [](auto e) { return static_cast<double>(static_cast<int>(e)); };
   return {
@@ -274,8 +274,8 @@ Settings settings_from_values(const std::map<std::string, double>& values) {
 Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBackPos* cb) {
   Outcome out;
   try {
-    const EngineMesh e = read_geometry(m);
-    const qd::Problem problem = make_problem(m, e, has_face_quality, s, out.log);
+    EngineMesh e;
+    const qd::Problem problem = make_problem(m, has_face_quality, s, out.log, e);
     const qd::Progress progress = [cb](int percent, const std::string& message) {
       if (cb) cb(percent, message.c_str());
     };
