@@ -10,12 +10,14 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <thread>
 
 #include "deformer.h"
 #include "error.h"
 #include "group_mesh.h"
 #include "metrics.h"
+#include "serial_blas.h"
 #include "solve_rounds.h"
 #include "stage_timer.h"
 #include "target_normals.h"
@@ -261,9 +263,11 @@ Result approximate(const Problem& problem, const Progress& progress) {
         ++done;
       }
     };
+    const size_t threads = std::min(round.size(), thread_count(params.threads));
+    std::optional<SerialBlas> serial_blas;  // one patch per core: BLAS threads would contend
+    if (threads > 1) serial_blas.emplace();
     std::vector<std::thread> helpers;
-    for (size_t t = 1; t < std::min(round.size(), thread_count(params.threads)); ++t)
-      helpers.emplace_back(work);
+    for (size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
     work();
     for (std::thread& h : helpers) h.join();
     for (size_t gi : round) {
