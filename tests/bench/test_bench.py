@@ -1,0 +1,47 @@
+"""The benchmark program (bench/qd_bench) runs and its figures hang together: stage times fit in
+the engine's wall clock (one thread), the floor is what the solver alone needs, memory is
+reported, the progress callback stays rare. Timings themselves are not asserted (benchmarks,
+not timed tests)."""
+import json
+import os
+import subprocess
+
+import pytest
+
+BUILD = os.environ.get("QD_BUILD_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "build"))
+BENCH = os.path.join(BUILD, "bin", "qd_bench")
+
+
+def run(*args):
+    if not os.path.exists(BENCH):
+        pytest.fail(f"{BENCH} is missing: build the project first")
+    out = subprocess.run([BENCH, *args], check=True, capture_output=True, text=True, timeout=300)
+    return json.loads(out.stdout)
+
+
+def test_one_patch_figures_hang_together():
+    r = run("--grid", "2000", "--runs", "3", "--", "--threads", "1", "--max-iter", "3")
+    assert r["faces"] >= 2000 and r["patches"] == 1
+    ms = r["ms"]
+    stages = sum(ms[s] for s in ["step1", "assembly", "factorization", "solve", "metrics"])
+    assert 0 < stages <= ms["engine"] * 1.05
+    assert ms["end_to_end"] >= ms["engine"] + ms["read"] + ms["write"] - 1e-6
+    # reprojected targets: one factorisation per solve, and the floor counts them all
+    assert r["factorizations"] == r["solves"] >= r["iterations"] >= 1
+    floor = r["bare_ms"]["floor"]
+    assert floor >= r["factorizations"] * r["bare_ms"]["factorization"] * 0.999
+    assert r["overhead"] == pytest.approx(ms["engine"] / floor, rel=1e-2)
+    assert r["peak_mb"] > 1
+    assert r["abd_reduction"] > 20  # the bumpy sheet does get more developable
+    assert r["progress_calls"] <= 2 * r["iterations"] + 2
+
+
+def test_patches_come_from_face_quality_and_fixed_targets_factor_once():
+    r = run("--grid", "3000", "--patches", "4", "--runs", "1", "--", "--targets", "fixed")
+    assert r["patches"] == 4
+    assert r["factorizations"] <= 4  # one per patch
+
+
+def test_bad_arguments_fail_with_a_reason():
+    out = subprocess.run([BENCH, "--runs", "2"], capture_output=True, text=True)
+    assert out.returncode == 1 and "--grid" in out.stderr
