@@ -33,15 +33,9 @@ double time_ms(F&& f) {
 std::vector<BareGroup> bare_solver_times(const Problem& problem, int runs) {
   const Topology topo = validate(problem);
   const Params& params = problem.params;
-  const size_t nv = static_cast<size_t>(problem.V.rows()), nf = static_cast<size_t>(problem.F.rows());
+  const size_t nf = static_cast<size_t>(problem.F.rows());
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
-  std::vector<char> interior(nv), constrained(nv);
-  for (size_t v = 0; v < nv; ++v) {
-    interior[v] = topo.used[v] && !topo.boundary[v];
-    constrained[v] = (!problem.constrained.empty() && problem.constrained[v]) ||
-                     (params.keep_boundary && topo.boundary[v]) ||
-                     (params.seams == SeamMode::Fixed && topo.seam[v]);
-  }
+  const VertexRoles roles = vertex_roles(problem, topo);
   std::map<int, std::vector<int>> groups;
   for (size_t f = 0; f < nf; ++f)
     groups[params.seams == SeamMode::Fixed ? patch[f] : -1].push_back(static_cast<int>(f));
@@ -50,7 +44,7 @@ std::vector<BareGroup> bare_solver_times(const Problem& problem, int runs) {
 
   std::vector<BareGroup> out;
   for (const auto& [id, faces] : groups) {
-    const GroupMesh g = extract_group(problem.V, problem.F, faces, patch, constrained, interior,
+    const GroupMesh g = extract_group(problem.V, problem.F, faces, patch, roles.constrained, roles.interior,
                                       incident, params);
     std::vector<Vec3> normals;
     std::vector<double> areas;

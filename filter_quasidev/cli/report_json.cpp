@@ -32,6 +32,7 @@ void write_iteration(JsonWriter& j, const IterationReport& it) {
 // Milliseconds per stage, summed over patches and threads (time_ms is the wall clock).
 void write_times(JsonWriter& j, const StageTimes& t) {
   j.begin_object("stage_ms");
+  j.value("setup", t.setup);
   j.value("step1", t.step1);
   j.value("assembly", t.assembly);
   j.value("factorization", t.factorization);

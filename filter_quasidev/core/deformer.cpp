@@ -70,7 +70,10 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
     return measure(group.V0, X, group.F, group.owned, faces, t, vertices);
   };
 
-  DeformationSystem system(group, params.weight, params.anchor, ae, params.solver);
+  DeformationSystem system = [&] {  // MLS weights, ordering, sparsity pattern
+    StageTimer timer(out.times.setup);
+    return DeformationSystem(group, params.weight, params.anchor, ae, params.solver);
+  }();
   std::vector<Vec3> current_targets = targets;
   system.set_targets(current_targets);  // Algorithm 1, steps 2.1–2.3
 

@@ -16,6 +16,19 @@ VertexFaces::VertexFaces(const Triangles& F, Eigen::Index vertex_count)
       faces[static_cast<size_t>(next[static_cast<size_t>(F(f, c))]++)] = static_cast<int>(f);
 }
 
+VertexRoles vertex_roles(const Problem& problem, const Topology& topo) {
+  const Params& params = problem.params;
+  const size_t n = static_cast<size_t>(problem.V.rows());
+  VertexRoles roles{std::vector<char>(n), std::vector<char>(n)};
+  for (size_t v = 0; v < n; ++v) {
+    roles.interior[v] = topo.used[v] && !topo.boundary[v];
+    roles.constrained[v] = (!problem.constrained.empty() && problem.constrained[v]) ||
+                           (params.keep_boundary && topo.boundary[v]) ||
+                           (params.seams == SeamMode::Fixed && topo.seam[v]);
+  }
+  return roles;
+}
+
 double patch_tolerance(const Params& params, int patch_id) {
   const auto it = params.patch_tolerance.find(patch_id);
   return it == params.patch_tolerance.end() ? params.tolerance : it->second;

@@ -8,6 +8,8 @@
 
 #include "mesh.h"
 #include "params.h"
+#include "problem.h"
+#include "topology.h"
 
 namespace qd {
 
@@ -30,6 +32,14 @@ struct GroupMesh {
   std::vector<double> tolerance;    // δ_err of each local vertex (min over its group patches)
   std::vector<int> owned;           // interior vertices of the group faces: their K counts
 };
+
+// What each input vertex is: interior (not on an open boundary, its curvature counts) and
+// constrained (selected, on the kept boundary, or on a fixed seam: it never moves).
+struct VertexRoles {
+  std::vector<char> interior;
+  std::vector<char> constrained;
+};
+VertexRoles vertex_roles(const Problem& problem, const Topology& topo);
 
 // δ_err of a patch: its own tolerance if given, else the global one.
 double patch_tolerance(const Params& params, int patch_id);

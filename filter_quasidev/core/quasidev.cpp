@@ -174,7 +174,10 @@ GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int
                    const Params& params, double ae, const std::function<void(double)>& progress) {
   const auto t0 = Clock::now();
   GroupRun run;
-  run.group = extract_group(V, F, faces, patch, constrained, interior, incident, params);
+  {
+    StageTimer timer(run.outcome.times.setup);
+    run.group = extract_group(V, F, faces, patch, constrained, interior, incident, params);
+  }
   const GroupMesh& g = run.group;
   double step1_ms = 0;
   {
@@ -190,8 +193,10 @@ GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int
                                   ? "planar: the Gauss image is a point, nothing to do"
                                   : "left unchanged: " + run.fits.front().skipped;
   } else {
+    const StageTimes extraction = run.outcome.times;
     run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets), params, ae,
                          progress);
+    run.outcome.times += extraction;
   }
   run.outcome.times.step1 += step1_ms;
   run.time_ms = ms_since(t0);
@@ -214,20 +219,16 @@ Result approximate(const Problem& problem, const Progress& progress) {
   const Triangles& F = problem.F;
   const size_t nv = static_cast<size_t>(V.rows()), nf = static_cast<size_t>(F.rows());
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
-
-  std::vector<char> interior(nv), constrained(nv);
+  const VertexRoles roles = vertex_roles(problem, topo);
+  const std::vector<char>& interior = roles.interior;
+  const std::vector<char>& constrained = roles.constrained;
   const VertexFaces incident(F, V.rows());
-  for (size_t v = 0; v < nv; ++v) {
-    interior[v] = topo.used[v] && !topo.boundary[v];
-    constrained[v] = (!problem.constrained.empty() && problem.constrained[v]) ||
-                     (params.keep_boundary && topo.boundary[v]) ||
-                     (params.seams == SeamMode::Fixed && topo.seam[v]);
-  }
 
   Result r;
   r.V = V;
   r.average_edge = average_edge_length(V, F);
   r.k_before = gaussian_curvature(V, F, interior);
+  r.times.setup += ms_since(t0);  // validation, topology, the input's figures
 
   std::map<int, std::vector<int>> faces_of_patch;
   for (size_t f = 0; f < nf; ++f) faces_of_patch[patch[f]].push_back(static_cast<int>(f));

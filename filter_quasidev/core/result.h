@@ -48,6 +48,7 @@ struct PatchReport {
 
 // Where the time went, in milliseconds summed over groups (and threads), and solver counts.
 struct StageTimes {
+  double setup = 0;          // validation, topology, solve groups, MLS weights, ordering, pattern
   double step1 = 0;          // DEGI, skeleton curve, target normals and their re-projection
   double assembly = 0;       // the matrix M and the right-hand sides
   double factorization = 0;  // symbolic analysis and numeric factorisations
@@ -56,7 +57,7 @@ struct StageTimes {
   int factorizations = 0;
   int solves = 0;            // linear solves, one per iteration
   StageTimes& operator+=(const StageTimes& o) {
-    step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
+    setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
     solve += o.solve, metrics += o.metrics;
     factorizations += o.factorizations, solves += o.solves;
     return *this;
