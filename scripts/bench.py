@@ -43,7 +43,7 @@ def exponent(rows, key):
 
 def stage_table(rows):
     head = ("| mesh | faces | patches | iters | " + " | ".join(STAGES) +
-            " | engine | end to end | bare factor | bare solve | overhead | solve ratio | peak MB |")
+            " | engine | end to end | bare factor | bare solve | floor | overhead | solve ratio | peak MB |")
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for r in rows:
         ms = r["ms"]
@@ -51,7 +51,8 @@ def stage_table(rows):
             f"| {os.path.basename(r['mesh'])} | {r['faces']} | {r['patches']} | {r['iterations']} | "
             + " | ".join(f"{ms[s]:.1f}" for s in STAGES)
             + f" | {ms['engine']:.1f} | {ms['end_to_end']:.1f} | {r['bare_ms']['factorization']:.1f}"
-            f" | {r['bare_ms']['solve']:.2f} | {r['overhead']:.2f} | {r['solve_ratio']:.2f}"
+            f" | {r['bare_ms']['solve']:.2f} | {r['bare_ms']['floor']:.1f} | {r['overhead']:.2f}"
+            f" | {r['solve_ratio']:.2f}"
             f" | {r['peak_mb']:.0f} |")
     return "\n".join(lines)
 
