@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs everything the project needs on Debian 12 (idempotent; fast when already done):
 #   1. Debian packages for building (compiler, CMake, Qt5, Eigen, GLEW, SuiteSparse, GoogleTest,
-#      nanoflann) and running (meshlab 2020.09, Xvfb, xdotool, ImageMagick, Mesa, python3-venv);
+#      nanoflann; clang and its libFuzzer for tests/cli/run_sanitizers.sh) and running (meshlab
+#      2020.09, Xvfb, xdotool, ImageMagick, Mesa, python3-venv);
 #   2. the MeshLab source trees whose headers the plugins compile against, from Debian's source
 #      packages (pinned by sha256), into third_party/meshlab-2020.09 and third_party/meshlab-2025.07;
 #   3. the Python venv .venv with every scripts/requirements-*.txt;
@@ -25,7 +26,7 @@ fi
 PACKAGES=(cmake g++ make ninja-build qtbase5-dev libqt5opengl5-dev libglew-dev
           libeigen3-dev libsuitesparse-dev libgtest-dev libnanoflann-dev
           meshlab xvfb xauth xdotool imagemagick libgl1-mesa-dri python3-venv
-          ca-certificates debian-archive-keyring xz-utils)
+          ca-certificates debian-archive-keyring xz-utils clang libclang-rt-14-dev)
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

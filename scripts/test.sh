@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The test command: installs what is missing (scripts/setup.sh), builds everything with
 # warnings as errors, then runs the unit tests (ctest) and the integration tests (pytest:
-# the quasidev command, meshlabserver 2020.09 and the MeshLab GUI under Xvfb, pymeshlab 2025.07).
+# the quasidev command, meshlabserver 2020.09 and the MeshLab GUI under Xvfb, pymeshlab 2025.07),
+# and last the engine and command tests again under ASan + UBSan with 60 s of libFuzzer per fuzz
+# target (tests/cli/run_sanitizers.sh, in build-asan/, which later runs reuse).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -9,3 +11,4 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DQD_WERROR=ON
 cmake --build build -j2
 (cd build && ctest --output-on-failure -j2)
 QD_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest -q -p no:cacheprovider tests
+bash tests/cli/run_sanitizers.sh "$PWD/build-asan"
