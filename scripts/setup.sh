@@ -24,7 +24,7 @@ fi
 
 # ---- 1. Debian packages ---------------------------------------------------------------------
 PACKAGES=(cmake g++ make ninja-build qtbase5-dev libqt5opengl5-dev libglew-dev
-          libeigen3-dev libsuitesparse-dev libgtest-dev libnanoflann-dev
+          libeigen3-dev libsuitesparse-dev libopenblas0-pthread libgtest-dev libnanoflann-dev
           meshlab xvfb xauth xdotool imagemagick libgl1-mesa-dri python3-venv
           ca-certificates debian-archive-keyring xz-utils clang libclang-rt-14-dev)
 missing=()
