@@ -56,7 +56,8 @@ def decorated_input(path) -> None:
     faces.properties.append(PlyProperty("texcoord", "float", "uchar"))
     for c in uchar:
         faces.data[c] = [int(x) for x in rng.integers(0, 256, faces.count)]
-    faces.data["texcoord"] = [tuple(float(x) for x in np.float32(rng.random(6))) for _ in range(faces.count)]
+    corners = np.float32(rng.random((faces.count, 6)))
+    faces.data["texcoord"] = [tuple(float(x) for x in row) for row in corners]
     write_ply(path, ply)
 
 

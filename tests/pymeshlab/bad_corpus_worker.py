@@ -46,8 +46,9 @@ def main(plugin: str, path: str, parameters: str, mode: str) -> dict:
             ms.load_new_mesh(path)
         else:
             ply = read_ply(path)
-            ms.add_mesh(pymeshlab.Mesh(vertex_matrix=np.asarray(ply.vertices(), float).reshape(-1, 3),
-                                       face_matrix=np.asarray(ply.faces(), np.int32).reshape(-1, 3)))
+            V = np.asarray(ply.vertices(), float).reshape(-1, 3)
+            F = np.asarray(ply.faces(), np.int32).reshape(-1, 3)
+            ms.add_mesh(pymeshlab.Mesh(vertex_matrix=V, face_matrix=F))
     except pymeshlab.PyMeshLabException as e:
         return {"stage": "load", "message": str(e)}
     before = snapshot(ms.current_mesh())
