@@ -17,6 +17,7 @@
 #include "error.h"
 #include "group_mesh.h"
 #include "metrics.h"
+#include "parallel_for.h"
 #include "serial_blas.h"
 #include "solve_rounds.h"
 #include "stage_timer.h"
@@ -165,7 +166,6 @@ struct GroupRun {
   std::vector<Vec3> targets;  // initial target per group face
   DeformOutcome outcome;
   double time_ms = 0;
-  std::exception_ptr error;
 };
 
 GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int>& faces,
@@ -244,36 +244,25 @@ Result approximate(const Problem& problem, const Progress& progress) {
   std::vector<GroupRun> runs(groups.size());
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<size_t> done{0};
+  // One patch per core: BLAS threads would only contend. Switched once per call, since
+  // switching OpenBLAS back and forth restarts its threads.
+  std::optional<SerialBlas> serial_blas;
   for (const std::vector<size_t>& round : solve_rounds(groups, F, V.rows())) {
-    std::atomic<size_t> next{0};
-    const auto work = [&] {
-      for (size_t k = next++; k < round.size(); k = next++) {
-        GroupRun& run = runs[round[k]];
-        try {
-          const auto group_progress = [&](double fraction) {  // only the caller's thread reports
-            if (progress && std::this_thread::get_id() == caller)
-              progress(static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
-                                        static_cast<double>(groups.size())),
-                       "deforming");
-          };
-          run = run_group(r.V, F, groups[round[k]], patch, constrained, interior, incident,
-                          params, r.average_edge, group_progress);
-        } catch (...) {
-          run.error = std::current_exception();
-        }
-        ++done;
-      }
-    };
     const size_t threads = std::min(round.size(), thread_count(params.threads));
-    std::optional<SerialBlas> serial_blas;  // one patch per core: BLAS threads would contend
-    if (threads > 1) serial_blas.emplace();
-    std::vector<std::thread> helpers;
-    for (size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
-    work();
-    for (std::thread& h : helpers) h.join();
+    if (threads > 1 && !serial_blas) serial_blas.emplace();  // until the end of the call
+    parallel_for(round.size(), threads, [&](size_t k) {
+      const auto group_progress = [&](double fraction) {  // only the caller's thread reports
+        if (progress && std::this_thread::get_id() == caller)
+          progress(static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
+                                    static_cast<double>(groups.size())),
+                   "deforming");
+      };
+      runs[round[k]] = run_group(r.V, F, groups[round[k]], patch, constrained, interior,
+                                 incident, params, r.average_edge, group_progress);
+      ++done;
+    });
     for (size_t gi : round) {
       const GroupRun& run = runs[gi];
-      if (run.error) std::rethrow_exception(run.error);
       for (size_t l = 0; l < run.group.global_vertex.size(); ++l)
         if (!run.group.fixed[l])
           r.V.row(run.group.global_vertex[l]) = run.outcome.V.row(static_cast<Eigen::Index>(l));
@@ -310,7 +299,13 @@ Result approximate(const Problem& problem, const Progress& progress) {
   {  // the reports' figures
     StageTimer timer(r.times.metrics);
     // Per-patch figures, each patch measured on its own faces and interior vertices.
-    for (auto& [id, faces] : faces_of_patch) {
+    const std::vector<std::pair<const int, std::vector<int>>*> patch_list = [&] {
+      std::vector<std::pair<const int, std::vector<int>>*> list;
+      for (auto& entry : faces_of_patch) list.push_back(&entry);
+      return list;
+    }();
+    parallel_for(patch_list.size(), thread_count(params.threads), [&](size_t k) {
+      const auto& [id, faces] = *patch_list[k];
       const GroupMesh pm = extract_group(V, F, faces, patch, constrained, interior, incident, params);
       Positions after(pm.V0.rows(), 3);
       for (size_t l = 0; l < pm.global_vertex.size(); ++l)
@@ -319,7 +314,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
       for (int f : faces) t.push_back(initial_target[static_cast<size_t>(f)]);
       const std::vector<int> local_faces = indices(faces.size());
       const std::vector<int> local_vertices = indices(static_cast<size_t>(pm.solve_vertices));
-      PatchReport& rep = reports[id];
+      PatchReport& rep = reports.at(id);  // the map is not resized here: safe in parallel
       rep.faces = static_cast<int>(faces.size());
       rep.vertices = static_cast<int>(pm.solve_vertices);
       rep.free_vertices = static_cast<int>(std::count(pm.fixed.begin(), pm.fixed.begin() + pm.solve_vertices, 0));
@@ -330,6 +325,8 @@ Result approximate(const Problem& problem, const Progress& progress) {
                               : 0.0;
       rep.obd_reduction =
           rep.before.obd > 0 ? 100.0 * (rep.before.obd - rep.after.obd) / rep.before.obd : 0.0;
+    });
+    for (const auto& [id, rep] : reports) {
       r.patches.push_back(rep);
       r.log.push_back(patch_log_line(rep, r.average_edge));
     }
