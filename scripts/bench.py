@@ -5,8 +5,9 @@ meshes of 1k to 1M triangles (one patch, and 16 patches with fixed seams), the 5
 ratios and the scaling exponent of every stage, the solver table, and writes docs/benchmark.md
 and the scaling plot docs/scaling.png.
 
-Usage: scripts/bench.py [--build DIR] [--quick] [--runs R] [--no-plot]
+Usage: scripts/bench.py [--build DIR] [--quick] [--runs R] [--no-plot] [--replot]
   --quick   sizes up to 100k triangles (a few minutes); the default goes to 1M (about 15 min).
+  --replot  redraw docs/scaling.png from the figures the last run saved (docs/benchmark.json).
 Every run uses the quasidev defaults except --max-iter 5 (the issue's 1M target).
 """
 import argparse
@@ -81,7 +82,7 @@ def plot(single, many, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(7, 4.5), dpi=110)
+    fig, ax = plt.subplots(figsize=(9, 4.5), dpi=110)
     faces = [r["faces"] for r in single]
     for stage in ["setup", "step1", "assembly", "factorization", "solve", "metrics"]:
         ax.loglog(faces, [max(r["ms"][stage], 1e-3) for r in single], "o-", label=stage)
@@ -95,7 +96,7 @@ def plot(single, many, path):
     ax.set_ylabel("milliseconds (median)")
     ax.set_title("quasidev, 5 iterations, defaults, 2-core machine")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0))
     fig.tight_layout()
     fig.savefig(path)
 
@@ -106,9 +107,17 @@ def main():
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--runs", type=int, default=5)
     ap.add_argument("--no-plot", action="store_true")
+    ap.add_argument("--replot", action="store_true")
     a = ap.parse_args()
+    saved = os.path.join(ROOT, "docs", "benchmark.json")
+    if a.replot:
+        with open(saved) as f:
+            rows = json.load(f)
+        plot(rows["single"], rows["many"], os.path.join(ROOT, "docs", "scaling.png"))
+        return
     sizes = [1000, 10000, 100000] if a.quick else [1000, 10000, 100000, 1000000]
-    runs_for = lambda n: a.runs if n <= 100000 else max(1, min(a.runs, 3))  # noqa: E731
+    def runs_for(n):  # small meshes are noisy and cheap: more runs; 1M: at most 3
+        return max(a.runs, 11) if n <= 10000 else a.runs if n <= 100000 else max(1, min(a.runs, 3))
 
     def say(r):
         print(f"  {os.path.basename(r['mesh'])}: {r['faces']} faces, end to end "
@@ -117,7 +126,7 @@ def main():
         return r
 
     print("target mesh (5,450 triangles, 7 patches)", file=sys.stderr)
-    target = [say(bench(a.build, ["--grid", "5450", "--patches", "7"], a.runs))]
+    target = [say(bench(a.build, ["--grid", "5450", "--patches", "7"], runs_for(5450)))]
     print("generated meshes, one patch and 16 patches", file=sys.stderr)
     single = [say(bench(a.build, ["--grid", str(n)], runs_for(n))) for n in sizes]
     many = [say(bench(a.build, ["--grid", str(n), "--patches", "16"], runs_for(n))) for n in sizes]
@@ -127,7 +136,8 @@ def main():
         for name in sorted(os.listdir(SHARED)):
             if name.endswith(".ply"):
                 try:
-                    shared.append(say(bench(a.build, ["--mesh", os.path.join(SHARED, name)], a.runs)))
+                    shared.append(say(bench(a.build, ["--mesh", os.path.join(SHARED, name)],
+                                            runs_for(10000))))
                 except subprocess.CalledProcessError as e:
                     print(f"  {name}: refused ({e.stderr.strip()})", file=sys.stderr)
     print("solvers", file=sys.stderr)
@@ -157,6 +167,9 @@ def main():
     os.makedirs(os.path.join(ROOT, "docs"), exist_ok=True)
     with open(os.path.join(ROOT, "docs", "benchmark.md"), "w") as f:
         f.write(report)
+    with open(saved, "w") as f:
+        json.dump({"target": target, "single": single, "many": many, "shared": shared,
+                   "solvers": solvers}, f, indent=1)
     if not a.no_plot:
         plot(single, many, os.path.join(ROOT, "docs", "scaling.png"))
 
