@@ -81,6 +81,9 @@ if [ -z "$plugin" ]; then
   plugin="$build/bin/plugins/$PLUGIN_NAME"
 fi
 [ -f "$plugin" ] || die "plugin $plugin not found"
+# The plugin links SuiteSparse's CHOLMOD, which Debian's meshlab package does not pull in.
+missing_libs="$(ldd "$plugin" 2>/dev/null | awk '/not found/ {print $1}' | tr '\n' ' ')"
+[ -z "$missing_libs" ] || die "the plugin needs ${missing_libs}which this system lacks: install them (Debian: apt install libcholmod3 libopenblas0-pthread)"
 
 # ---- install ----------------------------------------------------------------------------------
 if [ "$mode" = system ]; then
