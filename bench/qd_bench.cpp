@@ -74,9 +74,10 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
-std::string serialize(const qd::meshio::MeshFile& mesh, const std::vector<std::array<double, 3>>& positions) {
+// The mesh as the binary PLY the command writes.
+std::string serialize(const qd::meshio::MeshFile& mesh) {
   qd::meshio::OutputFields fields;
-  fields.positions = positions;
+  fields.positions = mesh.positions;
   return qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
                                    qd::meshio::PlyFormat::BinaryLittleEndian);
 }
@@ -91,7 +92,7 @@ void run(const Args& a) {
       generated.face_extra.push_back(qd::meshio::scalar_property(
           "quality", qd::meshio::ScalarType::Float32,
           std::vector<double>(generated.patch.begin(), generated.patch.end())));
-    qd::meshio::PendingFile file(input, serialize(generated, generated.positions));
+    qd::meshio::PendingFile file(input, serialize(generated));
     file.commit();
   }
   std::vector<std::string> args = {input, output};

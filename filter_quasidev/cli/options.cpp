@@ -34,17 +34,13 @@ double non_negative(const std::string& option, const std::string& text) {
   return v;
 }
 
-int iterations(const std::string& option, const std::string& text) {
+// A whole number in [lo, hi]; `lo_label` names lo in the message (e.g. "0 (all cores)").
+int whole_number(const std::string& option, const std::string& text, long long lo, long long hi,
+                 const std::string& lo_label) {
   long long v = 0;
-  if (!meshio::parse_integer(text, v) || v < 1 || v > 100000)
-    usage(option + " expects a whole number from 1 to 100000, got '" + text + "'");
-  return static_cast<int>(v);
-}
-
-int threads(const std::string& option, const std::string& text) {
-  long long v = 0;
-  if (!meshio::parse_integer(text, v) || v < 0 || v > 1024)
-    usage(option + " expects a whole number from 0 (all cores) to 1024, got '" + text + "'");
+  if (!meshio::parse_integer(text, v) || v < lo || v > hi)
+    usage(option + " expects a whole number from " + lo_label + " to " + std::to_string(hi) +
+          ", got '" + text + "'");
   return static_cast<int>(v);
 }
 
@@ -88,7 +84,7 @@ const std::map<std::string, Setter>& valued_options() {
          o.params.clamp = choice<ClampMode>("--clamp", v,
                                             {{"scale", ClampMode::Scale}, {"vertex", ClampMode::Vertex}});
        }},
-      {"--max-iter", [](Options& o, const std::string& v) { o.params.max_iter = iterations("--max-iter", v); }},
+      {"--max-iter", [](Options& o, const std::string& v) { o.params.max_iter = whole_number("--max-iter", v, 1, 100000, "1"); }},
       {"--weight", [](Options& o, const std::string& v) { o.params.weight = positive("--weight", v); }},
       {"--anchor", [](Options& o, const std::string& v) { o.params.anchor = non_negative("--anchor", v); }},
       {"--seams",
@@ -109,7 +105,7 @@ const std::map<std::string, Setter>& valued_options() {
                                                {"eigen-llt", SolverKind::EigenLLT},
                                                {"eigen-ldlt", SolverKind::EigenLDLT}});
        }},
-      {"--threads", [](Options& o, const std::string& v) { o.params.threads = threads("--threads", v); }},
+      {"--threads", [](Options& o, const std::string& v) { o.params.threads = whole_number("--threads", v, 0, 1024, "0 (all cores)"); }},
       {"--stop-abd", [](Options& o, const std::string& v) { o.params.stop_abd = non_negative("--stop-abd", v); }},
       {"--stop-obd", [](Options& o, const std::string& v) { o.params.stop_obd = non_negative("--stop-obd", v); }},
       {"--quality",

@@ -51,19 +51,19 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, double weight, doub
   const std::vector<double> mls = mls_weights(g_.V0, g_.fixed, ae);
   anchor2_.resize(n);
   for (size_t v = 0; v < n; ++v) anchor2_[v] = anchor * anchor * mls[v] * mls[v];
-  build_pattern();
+  for (auto& edge : edges)  // now in unknown-block numbering
+    edge = {rank[static_cast<size_t>(edge.first)], rank[static_cast<size_t>(edge.second)]};
+  build_pattern(edges);
 }
 
-// The lower-triangle pattern of M: per block column k, the diagonal block (lower part) then
-// each neighbouring block row r > k; column 3k+j holds rows 3k+j..3k+2, then 3r..3r+2 per r.
-void DeformationSystem::build_pattern() {
+// The lower-triangle pattern of M from the block edges (unknown block pairs of the faces): per
+// block column k, the diagonal block (lower part) then each neighbouring block row r > k;
+// column 3k+j holds rows 3k+j..3k+2, then 3r..3r+2 per r.
+void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& edges) {
   std::vector<std::pair<int, int>> lower;  // (block column, block row), row > column
-  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
-    for (const auto& pq : kPairs) {
-      const int a = unknown_[static_cast<size_t>(g_.F(f, pq[0]))];
-      const int b = unknown_[static_cast<size_t>(g_.F(f, pq[1]))];
-      if (a >= 0 && b >= 0 && a != b) lower.emplace_back(std::min(a, b), std::max(a, b));
-    }
+  lower.reserve(edges.size());
+  for (const auto& [a, b] : edges)
+    if (a != b) lower.emplace_back(std::min(a, b), std::max(a, b));
   std::sort(lower.begin(), lower.end());
   lower.erase(std::unique(lower.begin(), lower.end()), lower.end());
   column_start_.assign(static_cast<size_t>(blocks_) + 1, 0);

@@ -52,7 +52,7 @@ class DeformationSystem {
   const StageTimes& times() const { return times_; }
 
  private:
-  void build_pattern();
+  void build_pattern(const std::vector<std::pair<int, int>>& edges);
 
   const GroupMesh& g_;
   double w_;

@@ -174,8 +174,9 @@ GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int
                    const Params& params, double ae, const std::function<void(double)>& progress) {
   const auto t0 = Clock::now();
   GroupRun run;
+  double setup_ms = 0;
   {
-    StageTimer timer(run.outcome.times.setup);
+    StageTimer timer(setup_ms);
     run.group = extract_group(V, F, faces, patch, constrained, interior, incident, params);
   }
   const GroupMesh& g = run.group;
@@ -193,11 +194,10 @@ GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int
                                   ? "planar: the Gauss image is a point, nothing to do"
                                   : "left unchanged: " + run.fits.front().skipped;
   } else {
-    const StageTimes extraction = run.outcome.times;
     run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets), params, ae,
                          progress);
-    run.outcome.times += extraction;
   }
+  run.outcome.times.setup += setup_ms;
   run.outcome.times.step1 += step1_ms;
   run.time_ms = ms_since(t0);
   return run;
@@ -299,13 +299,11 @@ Result approximate(const Problem& problem, const Progress& progress) {
   {  // the reports' figures
     StageTimer timer(r.times.metrics);
     // Per-patch figures, each patch measured on its own faces and interior vertices.
-    const std::vector<std::pair<const int, std::vector<int>>*> patch_list = [&] {
-      std::vector<std::pair<const int, std::vector<int>>*> list;
-      for (auto& entry : faces_of_patch) list.push_back(&entry);
-      return list;
-    }();
-    parallel_for(patch_list.size(), thread_count(params.threads), [&](size_t k) {
-      const auto& [id, faces] = *patch_list[k];
+    std::vector<int> ids;
+    for (const auto& entry : faces_of_patch) ids.push_back(entry.first);
+    parallel_for(ids.size(), thread_count(params.threads), [&](size_t k) {
+      const int id = ids[k];
+      const std::vector<int>& faces = faces_of_patch.at(id);
       const GroupMesh pm = extract_group(V, F, faces, patch, constrained, interior, incident, params);
       Positions after(pm.V0.rows(), 3);
       for (size_t l = 0; l < pm.global_vertex.size(); ++l)

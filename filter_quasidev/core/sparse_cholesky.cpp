@@ -3,6 +3,9 @@
 #include <Eigen/SparseCholesky>
 #ifdef QD_WITH_CHOLMOD
 #include <Eigen/CholmodSupport>
+constexpr bool kHaveCholmod = true;
+#else
+constexpr bool kHaveCholmod = false;  // the build for plugins whose host ships no SuiteSparse
 #endif
 
 #include "error.h"

@@ -15,11 +15,6 @@
 namespace qd {
 
 constexpr long kCholmodFromUnknowns = 6000;
-#ifdef QD_WITH_CHOLMOD
-constexpr bool kHaveCholmod = true;
-#else
-constexpr bool kHaveCholmod = false;  // the build for plugins whose host ships no SuiteSparse
-#endif
 
 class SparseCholesky {
  public:
@@ -32,7 +27,6 @@ class SparseCholesky {
   void factorize(const Eigen::SparseMatrix<double>& M);
   // Solves M x = b by forward and back substitution with the current factor.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
-  bool factorized() const { return factorizations_ > 0; }
   int factorizations() const { return factorizations_; }
 
   struct Backend;
