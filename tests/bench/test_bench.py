@@ -25,7 +25,8 @@ def test_one_patch_figures_hang_together():
     ms = r["ms"]
     stages = sum(ms[s] for s in ["setup", "step1", "assembly", "factorization", "solve", "metrics"])
     assert 0 < stages <= ms["engine"] * 1.05
-    assert ms["end_to_end"] >= ms["engine"] + ms["read"] + ms["write"] - 1e-6
+    # the sum of three medians, each printed to 0.001 ms
+    assert ms["end_to_end"] == pytest.approx(ms["engine"] + ms["read"] + ms["write"], abs=0.002)
     # reprojected targets: one factorisation per solve, and the floor counts them all
     assert r["factorizations"] == r["solves"] >= r["iterations"] >= 1
     floor = r["bare_ms"]["floor"]
