@@ -52,7 +52,9 @@ std::vector<BareGroup> bare_solver_times(const Problem& problem, int runs) {
       normals.push_back(face_normal(g.V0, g.F, static_cast<int>(f)));
       areas.push_back(face_area(g.V0, g.F, static_cast<int>(f)));
     }
-    DeformationSystem system(g, params.weight, params.anchor, ae, params.solver);
+    Params direct = params;  // the floor is the coupled factorisation
+    direct.method = SolveMethod::Direct;
+    DeformationSystem system(g, direct, ae);
     try {
       system.set_targets(fit_targets(normals, areas).targets);
     } catch (const Error&) {  // no curve fits: the engine keeps the face normals, so do we

@@ -157,7 +157,7 @@ void run(const Args& a) {
 
   std::printf(
       "{\"mesh\": \"%s\", \"faces\": %ld, \"vertices\": %ld, \"patches\": %zu, \"runs\": %d, "
-      "\"iterations\": %d, \"solves\": %d, \"factorizations\": %d, "
+      "\"iterations\": %d, \"solves\": %d, \"factorizations\": %d, \"cg_iterations\": %d, "
       "\"largest_unknowns\": %ld, "
       "\"ms\": {\"read\": %.3f, \"setup\": %.3f, \"step1\": %.3f, \"assembly\": %.3f, \"factorization\": %.3f, "
       "\"solve\": %.3f, \"metrics\": %.3f, \"engine\": %.3f, \"write\": %.3f, \"end_to_end\": %.3f}, "
@@ -173,7 +173,7 @@ void run(const Args& a) {
         for (const auto& p : result.patches) it = std::max(it, p.iterations);
         return it;
       }(),
-      result.times.solves, result.times.factorizations, unknowns,
+      result.times.solves, result.times.factorizations, result.times.cg_iterations, unknowns,
       median(read_ms), median(setup), median(step1), median(assembly), median(factor), median(solve),
       median(metrics), engine, median(write_ms), engine + io, bare_factor, bare_refactor,
       mean_bare_solve, floor, engine / std::max(1e-9, floor),

@@ -4,6 +4,7 @@
 #include <functional>
 #include <sstream>
 
+#include "deformation_system.h"
 #include "sparse_cholesky.h"
 #include "text_scan.h"
 
@@ -104,6 +105,12 @@ const std::map<std::string, Setter>& valued_options() {
                                                {"cholmod", SolverKind::Cholmod},
                                                {"eigen-llt", SolverKind::EigenLLT},
                                                {"eigen-ldlt", SolverKind::EigenLDLT}});
+       }},
+      {"--method",
+       [](Options& o, const std::string& v) {
+         o.params.method = choice<SolveMethod>(
+             "--method", v,
+             {{"auto", SolveMethod::Auto}, {"direct", SolveMethod::Direct}, {"iterative", SolveMethod::Iterative}});
        }},
       {"--threads", [](Options& o, const std::string& v) { o.params.threads = whole_number("--threads", v, 0, 1024, "0 (all cores)"); }},
       {"--stop-abd", [](Options& o, const std::string& v) { o.params.stop_abd = non_negative("--stop-abd", v); }},
@@ -228,6 +235,10 @@ std::string help_text() {
     << "  --solver S             sparse Cholesky: cholmod (SuiteSparse supernodal), eigen-llt,\n"
        "                         eigen-ldlt (Eigen's simplicial) or auto (eigen-ldlt below\n"
        "                         " << kCholmodFromUnknowns << " unknowns per patch, else cholmod); same result (default auto)\n"
+    << "  --method M             direct: factorise the coupled system; iterative: conjugate\n"
+       "                         gradients with two scalar factors, to a relative error of\n"
+       "                         " << kCgTolerance << "; auto: iterative from " << kIterativeFromUnknowns << " unknowns per patch\n"
+       "                         (default auto)\n"
     << "  --threads N            patches solved at once (fixed seams); 0 = all cores; the\n"
        "                         result does not depend on it (default " << d.threads << ")\n"
     << "  --keep-boundary        open-boundary vertices do not move" << on_off(d.keep_boundary) << "\n"

@@ -40,6 +40,7 @@ void write_times(JsonWriter& j, const StageTimes& t) {
   j.value("metrics", t.metrics);
   j.value("factorizations", t.factorizations);
   j.value("solves", t.solves);
+  j.value("cg_iterations", t.cg_iterations);
   j.end_object();
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "anchor_weights.h"
+#include "conjugate_gradients.h"
 #include "stage_timer.h"
 #include "vertex_order.h"
 
@@ -28,9 +29,8 @@ constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 
 }  // namespace
 
-DeformationSystem::DeformationSystem(const GroupMesh& group, double weight, double anchor,
-                                     double ae, SolverKind solver)
-    : g_(group), w_(weight), cholesky_(solver) {
+DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& params, double ae)
+    : g_(group), w_(params.weight), solver_(params.solver), threads_(params.threads), cholesky_(params.solver) {
   const size_t n = g_.fixed.size();
   std::vector<int> free_index(n, -1);
   int free_count = 0;
@@ -48,9 +48,11 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, double weight, doub
   for (size_t v = 0; v < n; ++v)
     if (free_index[v] >= 0) unknown_[v] = rank[static_cast<size_t>(free_index[v])];
   blocks_ = free_count;
+  iterative_ = params.method == SolveMethod::Iterative ||
+               (params.method == SolveMethod::Auto && 3L * blocks_ >= kIterativeFromUnknowns);
   const std::vector<double> mls = mls_weights(g_.V0, g_.fixed, ae);
   anchor2_.resize(n);
-  for (size_t v = 0; v < n; ++v) anchor2_[v] = anchor * anchor * mls[v] * mls[v];
+  for (size_t v = 0; v < n; ++v) anchor2_[v] = params.anchor * params.anchor * mls[v] * mls[v];
   for (auto& edge : edges)  // now in unknown-block numbering
     edge = {rank[static_cast<size_t>(edge.first)], rank[static_cast<size_t>(edge.second)]};
   build_pattern(edges);
@@ -66,13 +68,14 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
     if (a != b) lower.emplace_back(std::min(a, b), std::max(a, b));
   std::sort(lower.begin(), lower.end());
   lower.erase(std::unique(lower.begin(), lower.end()), lower.end());
-  column_start_.assign(static_cast<size_t>(blocks_) + 1, 0);
-  block_row_.resize(lower.size());
+  std::vector<int>& start = pattern_.column_start;
+  start.assign(static_cast<size_t>(blocks_) + 1, 0);
+  pattern_.block_row.resize(lower.size());
   for (size_t s = 0; s < lower.size(); ++s) {
-    ++column_start_[static_cast<size_t>(lower[s].first) + 1];
-    block_row_[s] = lower[s].second;
+    ++start[static_cast<size_t>(lower[s].first) + 1];
+    pattern_.block_row[s] = lower[s].second;
   }
-  for (int k = 0; k < blocks_; ++k) column_start_[static_cast<size_t>(k) + 1] += column_start_[static_cast<size_t>(k)];
+  for (size_t k = 0; k < static_cast<size_t>(blocks_); ++k) start[k + 1] += start[k];
 
   face_slot_.assign(static_cast<size_t>(g_.solve_faces) * 3, -1);
   for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
@@ -80,15 +83,15 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
       const int a = unknown_[static_cast<size_t>(g_.F(f, kPairs[e][0]))];
       const int b = unknown_[static_cast<size_t>(g_.F(f, kPairs[e][1]))];
       if (a < 0 || b < 0 || a == b) continue;
-      const auto first = block_row_.begin() + column_start_[static_cast<size_t>(std::min(a, b))];
-      const auto last = block_row_.begin() + column_start_[static_cast<size_t>(std::min(a, b)) + 1];
-      face_slot_[static_cast<size_t>(3 * f + e)] =
-          static_cast<int>(std::lower_bound(first, last, std::max(a, b)) - block_row_.begin());
+      const auto rows = pattern_.block_row.begin();
+      face_slot_[static_cast<size_t>(3 * f + e)] = static_cast<int>(
+          std::lower_bound(rows + pattern_.begin(std::min(a, b)), rows + pattern_.end(std::min(a, b)),
+                           std::max(a, b)) - rows);
     }
 
   const Eigen::Index size = 3 * static_cast<Eigen::Index>(blocks_);
   M_.resize(size, size);
-  M_.resizeNonZeros(6 * blocks_ + 9 * static_cast<Eigen::Index>(block_row_.size()));
+  M_.resizeNonZeros(6 * blocks_ + 9 * static_cast<Eigen::Index>(pattern_.block_row.size()));
   int* outer = M_.outerIndexPtr();
   int* inner = M_.innerIndexPtr();
   int at = 0;
@@ -96,8 +99,8 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
     for (int j = 0; j < 3; ++j) {
       outer[3 * k + j] = at;
       for (int i = j; i < 3; ++i) inner[at++] = 3 * k + i;
-      for (int s = column_start_[static_cast<size_t>(k)]; s < column_start_[static_cast<size_t>(k) + 1]; ++s)
-        for (int i = 0; i < 3; ++i) inner[at++] = 3 * block_row_[static_cast<size_t>(s)] + i;
+      for (int s = pattern_.begin(k); s < pattern_.end(k); ++s)
+        for (int i = 0; i < 3; ++i) inner[at++] = 3 * pattern_.row(s) + i;
     }
   outer[size] = at;
 }
@@ -112,7 +115,7 @@ void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
   // Adds the lower part of a diagonal block of block column k.
   const auto add_diagonal = [&](int k, const Eigen::Matrix3d& B) {
     for (int j = 0; j < 3; ++j)
-      for (int i = j; i < 3; ++i) value[outer[3 * k + j] + (i - j)] += B(i, j);
+      for (int i = j; i < 3; ++i) value[diagonal_entry(outer, k, i, j)] += B(i, j);
   };
   for (Eigen::Index f = 0; f < g_.solve_faces; ++f) {
     const Vec3& n = targets_[static_cast<size_t>(f)];
@@ -126,15 +129,15 @@ void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
       if (s < 0) continue;
       const int k = std::min(unknown_[static_cast<size_t>(g_.F(f, kPairs[e][0]))],
                              unknown_[static_cast<size_t>(g_.F(f, kPairs[e][1]))]);
-      const int offset = 3 * (s - column_start_[static_cast<size_t>(k)]);
       const Eigen::Matrix3d B = corner_block(L, N, kPairs[e][0], kPairs[e][1]);  // symmetric
       for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) value[outer[3 * k + j] + (3 - j) + offset + i] += B(i, j);
+        for (int i = 0; i < 3; ++i) value[block_entry(outer, pattern_, k, s, i, j)] += B(i, j);
     }
   }
   for (size_t v = 0; v < unknown_.size(); ++v)
     if (unknown_[v] >= 0) add_diagonal(unknown_[v], anchor2_[v] * Eigen::Matrix3d::Identity());
   factor_current_ = false;
+  preconditioner_current_ = false;
 }
 
 Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
@@ -164,6 +167,59 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
   return b;
 }
 
+Eigen::VectorXd DeformationSystem::unknowns_of(const Positions& X) const {
+  Eigen::VectorXd x(3 * static_cast<Eigen::Index>(blocks_));
+  for (size_t v = 0; v < unknown_.size(); ++v)
+    if (unknown_[v] >= 0) x.segment<3>(3 * unknown_[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
+  return x;
+}
+
+void DeformationSystem::factorize() {
+  StageTimer timer(times_.factorization);
+  cholesky_.factorize(M_);
+  factor_current_ = true;
+}
+
+Eigen::VectorXd DeformationSystem::solve_directly(const Eigen::VectorXd& b) {
+  if (!factor_current_) factorize();  // new targets: a numeric factorisation (analysis reused)
+  StageTimer timer(times_.solve);
+  return cholesky_.solve(b);
+}
+
+// The frames follow the targets: ν of a vertex is the mean target of its solved faces.
+void DeformationSystem::build_preconditioner() {
+  StageTimer timer(times_.factorization);
+  std::vector<Vec3> normals(static_cast<size_t>(blocks_), Vec3::Zero());
+  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int k = unknown_[static_cast<size_t>(g_.F(f, c))];
+      if (k >= 0) normals[static_cast<size_t>(k)] += targets_[static_cast<size_t>(f)];
+    }
+  if (!preconditioner_) preconditioner_ = std::make_unique<FramePreconditioner>(pattern_, solver_, threads_);
+  preconditioner_->build(M_, normals);
+  preconditioner_current_ = true;
+}
+
+Eigen::VectorXd DeformationSystem::solve_iteratively(const Eigen::VectorXd& b, const Positions& ref) {
+  Eigen::VectorXd x = unknowns_of(ref);  // the correction starts at zero
+  const auto multiply = [this](const Eigen::VectorXd& p) -> Eigen::VectorXd {
+    return M_.selfadjointView<Eigen::Lower>() * p;
+  };
+  const auto precondition = [this](const Eigen::VectorXd& r) { return preconditioner_->apply(r); };
+  if (!preconditioner_) build_preconditioner();
+  for (;;) {
+    CgOutcome cg;
+    {
+      StageTimer timer(times_.solve);
+      cg = conjugate_gradients(multiply, precondition, b, x, kCgTolerance, kCgIterations);
+    }
+    times_.cg_iterations += cg.iterations;
+    if (cg.converged) return x;
+    if (preconditioner_current_) return solve_directly(b);  // a fresh one did not do: factorise M
+    build_preconditioner();
+  }
+}
+
 Positions DeformationSystem::solve(const Positions& ref) {
   if (blocks_ == 0) return ref;
   Eigen::VectorXd b;
@@ -171,18 +227,10 @@ Positions DeformationSystem::solve(const Positions& ref) {
     StageTimer timer(times_.assembly);
     b = rhs(ref);
   }
-  if (!factor_current_) {  // new targets: a numeric factorisation (the analysis is reused)
-    StageTimer timer(times_.factorization);
-    cholesky_.factorize(M_);
-    factor_current_ = true;
-    times_.factorizations = cholesky_.factorizations();
-  }
-  Eigen::VectorXd x;
-  {
-    StageTimer timer(times_.solve);
-    x = cholesky_.solve(b);
-    ++times_.solves;
-  }
+  const Eigen::VectorXd x = iterative_ ? solve_iteratively(b, ref) : solve_directly(b);
+  ++times_.solves;
+  times_.factorizations =
+      cholesky_.factorizations() + (preconditioner_ ? preconditioner_->factorizations() : 0);
   Positions out = ref;
   for (size_t v = 0; v < unknown_.size(); ++v)
     if (unknown_[v] >= 0) out.row(static_cast<Eigen::Index>(v)) = x.segment<3>(3 * unknown_[v]).transpose();

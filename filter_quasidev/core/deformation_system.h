@@ -19,22 +19,37 @@
 // re-projected or re-fitted targets change M, which is then factorised again numerically (the
 // analysis is reused). Conjugate gradients preconditioned by the previous factor were measured
 // as the alternative and cost more instructions at every size tried (README, Performance).
+//
+// Large groups are solved without factorising M at all (SolveMethod::Iterative, issue 5):
+// conjugate gradients preconditioned by the frame split of frame_preconditioner.h, whose two
+// scalar factors cost a fraction of M's. Each solve stops when the correction's error in M's
+// energy norm is below kCgTolerance of the correction, so the result is the least-squares
+// solution to that tolerance. The preconditioner is built once and kept while the targets
+// move; it is rebuilt only when a solve does not converge in kCgIterations, and if it still
+// does not, M is factorised after all.
 #pragma once
 
 #include <Eigen/SparseCore>
+#include <memory>
 #include <vector>
 
+#include "block_pattern.h"
+#include "frame_preconditioner.h"
 #include "group_mesh.h"
 #include "result.h"
 #include "sparse_cholesky.h"
 
 namespace qd {
 
+constexpr long kIterativeFromUnknowns = 30000;  // SolveMethod::Auto: CG from here on
+constexpr double kCgTolerance = 1e-6;
+constexpr int kCgIterations = 100;
+
 class DeformationSystem {
  public:
-  // weight: w of Eq. (8); anchor: α; ae: average edge length for Eq. (15).
-  DeformationSystem(const GroupMesh& group, double weight, double anchor, double ae,
-                    SolverKind solver);
+  // From params: w of Eq. (8), α of Eq. (15), the solver, the method and the threads this
+  // group may use; ae: average edge length for Eq. (15).
+  DeformationSystem(const GroupMesh& group, const Params& params, double ae);
 
   // Assembles M for one target normal per group face (Eq. 17).
   void set_targets(const std::vector<Vec3>& targets);
@@ -53,19 +68,28 @@ class DeformationSystem {
 
  private:
   void build_pattern(const std::vector<std::pair<int, int>>& edges);
+  void factorize();
+  Eigen::VectorXd solve_directly(const Eigen::VectorXd& b);
+  Eigen::VectorXd solve_iteratively(const Eigen::VectorXd& b, const Positions& ref);
+  void build_preconditioner();
+  Eigen::VectorXd unknowns_of(const Positions& X) const;
 
   const GroupMesh& g_;
   double w_;
   std::vector<double> anchor2_;  // α²·w(v)² per local vertex
   std::vector<int> unknown_;
   int blocks_ = 0;
-  std::vector<int> column_start_;  // off-diagonal blocks of block column k: [start[k], start[k+1])
-  std::vector<int> block_row_;     // their block rows, ascending
+  BlockPattern pattern_;
   std::vector<int> face_slot_;     // per face and corner pair (0,1),(0,2),(1,2): off-diag block
   std::vector<Vec3> targets_;
   Eigen::SparseMatrix<double> M_;
+  SolverKind solver_;
+  int threads_;
+  bool iterative_ = false;
   SparseCholesky cholesky_;
   bool factor_current_ = false;  // the factor belongs to the current M
+  std::unique_ptr<FramePreconditioner> preconditioner_;
+  bool preconditioner_current_ = false;  // it was built from the current M
   StageTimes times_;
 };
 

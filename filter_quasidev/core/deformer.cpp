@@ -72,7 +72,7 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
 
   DeformationSystem system = [&] {  // MLS weights, ordering, sparsity pattern
     StageTimer timer(out.times.setup);
-    return DeformationSystem(group, params.weight, params.anchor, ae, params.solver);
+    return DeformationSystem(group, params, ae);
   }();
   std::vector<Vec3> current_targets = targets;
   system.set_targets(current_targets);  // Algorithm 1, steps 2.1–2.3

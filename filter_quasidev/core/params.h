@@ -12,6 +12,7 @@ enum class ClampMode { Scale, Vertex };     // δ_err in Step mode: scale the wh
                                             // clamp each vertex's step (paper §5.2)
 enum class TargetMode { Fixed, Reproject, Refit };  // targets once (paper), re-projected, re-fitted
 enum class SolverKind { Auto, Cholmod, EigenLLT, EigenLDLT };  // sparse Cholesky (§5.4)
+enum class SolveMethod { Auto, Direct, Iterative };  // factorise M, or CG with scalar factors
 
 struct Params {
   double tolerance = 0.0;                    // δ_err in model units (> 0)
@@ -27,7 +28,9 @@ struct Params {
   double stop_abd = 1.0;                     // δ_ABD, percent (Eq. 19); stop when ratio below
   double stop_obd = 1.0;                     // δ_OBD, percent (Eq. 20)
   SolverKind solver = SolverKind::Auto;      // Auto: by size, as measured (sparse_cholesky.h)
-  int threads = 0;                           // patches solved at once; 0 = all cores
+  SolveMethod method = SolveMethod::Auto;    // Auto: by size, as measured (deformation_system.h)
+  int threads = 0;                           // patches solved at once (a lone patch uses them
+                                             // inside); 0 = all cores
 };
 
 }  // namespace qd

@@ -10,7 +10,6 @@
 #include <map>
 #include <memory>
 #include <numeric>
-#include <optional>
 #include <thread>
 
 #include "deformer.h"
@@ -244,12 +243,15 @@ Result approximate(const Problem& problem, const Progress& progress) {
   std::vector<GroupRun> runs(groups.size());
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<size_t> done{0};
-  // One patch per core: BLAS threads would only contend. Switched once per call, since
-  // switching OpenBLAS back and forth restarts its threads.
-  std::optional<SerialBlas> serial_blas;
+  // The engine's threads run patches, or the two scalar factors of a lone patch's iterative
+  // solve: BLAS threads would only contend, and their number would change the rounding, so
+  // the result would depend on --threads. Switched once per call, since switching OpenBLAS
+  // back and forth restarts its threads.
+  const SerialBlas serial_blas;
   for (const std::vector<size_t>& round : solve_rounds(groups, F, V.rows())) {
     const size_t threads = std::min(round.size(), thread_count(params.threads));
-    if (threads > 1 && !serial_blas) serial_blas.emplace();  // until the end of the call
+    Params group_params = params;  // a patch alone in its round has every thread
+    group_params.threads = static_cast<int>(round.size() == 1 ? thread_count(params.threads) : 1);
     parallel_for(round.size(), threads, [&](size_t k) {
       const auto group_progress = [&](double fraction) {  // only the caller's thread reports
         if (progress && std::this_thread::get_id() == caller)
@@ -258,7 +260,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
                    "deforming");
       };
       runs[round[k]] = run_group(r.V, F, groups[round[k]], patch, constrained, interior,
-                                 incident, params, r.average_edge, group_progress);
+                                 incident, group_params, r.average_edge, group_progress);
       ++done;
     });
     for (size_t gi : round) {

@@ -56,10 +56,11 @@ struct StageTimes {
   double metrics = 0;        // figures for the stop criteria, the never-worse rule, the reports
   int factorizations = 0;
   int solves = 0;            // linear solves, one per iteration
+  int cg_iterations = 0;     // conjugate-gradient iterations of the iterative solves
   StageTimes& operator+=(const StageTimes& o) {
     setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
     solve += o.solve, metrics += o.metrics;
-    factorizations += o.factorizations, solves += o.solves;
+    factorizations += o.factorizations, solves += o.solves, cg_iterations += o.cg_iterations;
     return *this;
   }
 };

@@ -15,7 +15,7 @@ namespace qd {
 struct SparseCholesky::Backend {
   virtual ~Backend() = default;
   virtual bool analyse_and_factorize(const Eigen::SparseMatrix<double>& M, bool analyse) = 0;
-  virtual Eigen::VectorXd solve(const Eigen::VectorXd& b) const = 0;
+  virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const = 0;
 };
 
 namespace {
@@ -29,7 +29,7 @@ struct EigenApiBackend : SparseCholesky::Backend {
     solver.factorize(M);
     return solver.info() == Eigen::Success;
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const override { return solver.solve(b); }
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override { return solver.solve(b); }
 };
 
 using Matrix = Eigen::SparseMatrix<double>;
@@ -80,6 +80,6 @@ void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& M) {
         "and duplicate faces, then try again");
 }
 
-Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const { return backend_->solve(b); }
+Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const { return backend_->solve(b); }
 
 }  // namespace qd

@@ -7,6 +7,7 @@
 // SimplicialLDLT always in a build without CHOLMOD.
 #pragma once
 
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
 
@@ -25,8 +26,9 @@ class SparseCholesky {
 
   // Factorises M (lower triangle used); throws qd::Error if M is not positive definite.
   void factorize(const Eigen::SparseMatrix<double>& M);
-  // Solves M x = b by forward and back substitution with the current factor.
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // Solves M x = b by forward and back substitution with the current factor; b may have
+  // several columns (right-hand sides), which share one pass over the factor.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
   int factorizations() const { return factorizations_; }
 
   struct Backend;

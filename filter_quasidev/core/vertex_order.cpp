@@ -30,11 +30,8 @@ std::vector<std::pair<int, int>> lower_pattern(int nodes, const std::vector<std:
 void elimination_order(int nodes, const std::vector<std::pair<int, int>>& lower, std::vector<int>& perm) {
   cholmod_common common;
   cholmod_start(&common);
-  // CHOLMOD keeps the better (least fill) of minimum degree and, on large graphs where it can
-  // pay off, METIS nested dissection.
-  common.nmethods = nodes < kNestedDissectionFrom ? 1 : 2;
+  common.nmethods = 1;
   common.method[0].ordering = CHOLMOD_AMD;
-  common.method[1].ordering = CHOLMOD_METIS;
   common.supernodal = CHOLMOD_SIMPLICIAL;
   cholmod_sparse* pattern = cholmod_allocate_sparse(static_cast<size_t>(nodes), static_cast<size_t>(nodes),
                                                     lower.size(), 1, 1, -1, CHOLMOD_PATTERN, &common);

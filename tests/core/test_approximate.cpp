@@ -138,21 +138,44 @@ TEST(Approximate, BadParametersAreRejectedWithoutTouchingTheInput) {
   EXPECT_THROW(approximate(p), Error);
 }
 
+// Runs p with 1 and with 2 threads, expects bit-identical positions, returns the first result.
+Result same_with_1_and_2_threads(Problem p) {
+  p.params.threads = 1;
+  const Result one = approximate(p);
+  p.params.threads = 2;
+  EXPECT_TRUE(approximate(p).V == one.V) << "positions differ between 1 and 2 threads";
+  return one;
+}
+
 // Sectors with fixed seams run in parallel rounds; neither the thread count nor the solver
 // back end changes a single bit (solvers: to 1e-9 of the model size).
 TEST(Approximate, ResultDoesNotDependOnThreadsOrSolver) {
   Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 6);
   p.params.tolerance = 0.2;
-  p.params.threads = 1;
-  const Result one = approximate(p);
-  p.params.threads = 2;
-  const Result two = approximate(p);
-  EXPECT_TRUE(one.V == two.V) << "positions differ between 1 and 2 threads";
+  const Result one = same_with_1_and_2_threads(p);
   EXPECT_GT(one.abd_reduction, 10.0);
   for (SolverKind solver : {SolverKind::Cholmod, SolverKind::EigenLLT, SolverKind::EigenLDLT}) {
     p.params.solver = solver;
     EXPECT_LT((approximate(p).V - one.V).cwiseAbs().maxCoeff(), 1e-9) << static_cast<int>(solver);
   }
+}
+
+// The iterative method (conjugate gradients, frame preconditioner) reaches the direct method's
+// positions to within its stated tolerance, never factorises M, and is deterministic too.
+TEST(Approximate, IterativeMethodMatchesDirect) {
+  Problem p = test::bumpy_cylinder(96, 48, 0.08);
+  p.params.tolerance = 0.2;
+  p.params.max_iter = 4;
+  p.params.method = SolveMethod::Direct;
+  const Result direct = approximate(p);
+  p.params.method = SolveMethod::Iterative;
+  const Result one = same_with_1_and_2_threads(p);
+  EXPECT_GT(direct.abd_reduction, 10.0);
+  EXPECT_EQ(one.times.factorizations, 2) << "two scalar factors, M never factorised";
+  EXPECT_GT(one.times.cg_iterations, one.times.solves);
+  const double moved = (direct.V - p.V).cwiseAbs().maxCoeff();
+  EXPECT_LT((one.V - direct.V).cwiseAbs().maxCoeff(), 1e-5 * moved);
+  EXPECT_NEAR(one.abd_reduction, direct.abd_reduction, 1e-3);
 }
 
 TEST(Approximate, StageTimesCountTheSolverWork) {
