@@ -2,7 +2,7 @@
 """The performance benchmark of issue 5: runs bench/qd_bench (build/bin/qd_bench) over generated
 meshes of 1k to 1M triangles (one patch, and 16 patches with fixed seams), the 5,450-triangle
 7-patch target mesh and the shared meshes; prints per-stage medians, peak memory, the overhead
-ratios and the scaling exponent of every stage, the solver table, and writes docs/benchmark.md
+ratios and the scaling exponent of every stage, the solver and method tables, and writes docs/benchmark.md
 and the scaling plot docs/scaling.png.
 
 Usage: scripts/bench.py [--build DIR] [--quick] [--runs R] [--no-plot] [--replot]
@@ -22,6 +22,7 @@ ROOT = os.path.dirname(HERE)
 SHARED = os.path.join(os.path.dirname(ROOT), "shared", "meshes")
 STAGES = ["read", "setup", "step1", "assembly", "factorization", "solve", "metrics", "write"]
 SOLVERS = ["cholmod", "eigen-llt", "eigen-ldlt"]
+METHODS = ["direct", "iterative"]
 
 
 def bench(build, args, runs, options=()):
@@ -75,6 +76,18 @@ def solver_table(results):
         lines.append(f"| {r['faces']} | {r['largest_unknowns']} | {r['solver']} | "
                      f"{r['bare_ms']['factorization']:.1f} | {r['bare_ms']['solve']:.2f} | "
                      f"{r['ms']['engine']:.1f} |")
+    return "\n".join(lines)
+
+
+def method_table(results):
+    lines = ["| faces | unknowns | method | factorisations | CG iterations | factorisation ms | solve ms "
+             "| engine ms | peak MB | G_ABD reduction % |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in results:
+        ms = r["ms"]
+        lines.append(f"| {r['faces']} | {r['largest_unknowns']} | {r['method']} | {r['factorizations']} | "
+                     f"{r['cg_iterations']} | {ms['factorization']:.1f} | {ms['solve']:.1f} | "
+                     f"{ms['engine']:.1f} | {r['peak_mb']:.0f} | {r['abd_reduction']:.2f} |")
     return "\n".join(lines)
 
 
@@ -140,13 +153,20 @@ def main():
                                             runs_for(10000))))
                 except subprocess.CalledProcessError as e:
                     print(f"  {name}: refused ({e.stderr.strip()})", file=sys.stderr)
-    print("solvers", file=sys.stderr)
+    print("solvers (direct method)", file=sys.stderr)
     solvers = []
     for n in [1000, 10000, 100000]:
         for s in SOLVERS:
-            r = bench(a.build, ["--grid", str(n)], 3, ["--solver", s])
+            r = bench(a.build, ["--grid", str(n)], 3, ["--solver", s, "--method", "direct"])
             r["solver"] = s
             solvers.append(say(r))
+    print("methods", file=sys.stderr)
+    methods = []
+    for n in [5000, 10000, 20000, 100000] + ([] if a.quick else [1000000]):
+        for m in METHODS:
+            r = bench(a.build, ["--grid", str(n)], 1 if n > 100000 else 3, ["--method", m])
+            r["method"] = m
+            methods.append(say(r))
 
     report = "\n\n".join([
         "# Benchmark (scripts/bench.py" + (" --quick" if a.quick else "") + ")",
@@ -161,7 +181,9 @@ def main():
         "## Scaling exponents, one patch, 10k triangles and up\n\n" +
         exponent_table([r for r in single if r["faces"] >= 10000]),
         "## Shared meshes\n\n" + stage_table(shared),
-        "## Solvers (one patch)\n\n" + solver_table(solvers),
+        "## Solvers (one patch, direct method)\n\n" + solver_table(solvers),
+        "## Methods (one patch): the coupled factorisation against conjugate gradients\n\n" +
+        method_table(methods),
     ]) + "\n"
     print(report)
     os.makedirs(os.path.join(ROOT, "docs"), exist_ok=True)
@@ -169,7 +191,7 @@ def main():
         f.write(report)
     with open(saved, "w") as f:
         json.dump({"target": target, "single": single, "many": many, "shared": shared,
-                   "solvers": solvers}, f, indent=1)
+                   "solvers": solvers, "methods": methods}, f, indent=1)
     if not a.no_plot:
         plot(single, many, os.path.join(ROOT, "docs", "scaling.png"))
 

@@ -41,7 +41,7 @@
 
 namespace qd {
 
-constexpr long kIterativeFromUnknowns = 30000;  // SolveMethod::Auto: CG from here on
+constexpr long kIterativeFromUnknowns = 15000;  // SolveMethod::Auto: CG from here on (measured)
 constexpr double kCgTolerance = 1e-6;
 constexpr int kCgIterations = 100;
 

@@ -46,3 +46,12 @@ def test_patches_come_from_face_quality_and_fixed_targets_factor_once():
 def test_bad_arguments_fail_with_a_reason():
     out = subprocess.run([BENCH, "--runs", "2"], capture_output=True, text=True)
     assert out.returncode == 1 and "--grid" in out.stderr
+
+
+def test_iterative_method_never_factorises_the_coupled_system_and_agrees():
+    direct = run("--grid", "20000", "--runs", "1", "--", "--method", "direct", "--max-iter", "3")
+    cg = run("--grid", "20000", "--runs", "1", "--", "--method", "iterative", "--max-iter", "3")
+    assert direct["cg_iterations"] == 0 and direct["factorizations"] == direct["solves"]
+    assert cg["factorizations"] == 2  # the two scalar factors of the frame preconditioner
+    assert cg["cg_iterations"] > cg["solves"] == direct["solves"]
+    assert cg["abd_reduction"] == pytest.approx(direct["abd_reduction"], abs=0.01)
