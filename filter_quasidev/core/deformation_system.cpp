@@ -5,6 +5,7 @@
 
 #include "anchor_weights.h"
 #include "conjugate_gradients.h"
+#include "parallel_for.h"
 #include "stage_timer.h"
 #include "vertex_order.h"
 
@@ -50,9 +51,11 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
   blocks_ = free_count;
   iterative_ = params.method == SolveMethod::Iterative ||
                (params.method == SolveMethod::Auto && 3L * blocks_ >= kIterativeFromUnknowns);
-  const std::vector<double> mls = mls_weights(g_.V0, g_.fixed, ae);
-  anchor2_.resize(n);
-  for (size_t v = 0; v < n; ++v) anchor2_[v] = params.anchor * params.anchor * mls[v] * mls[v];
+  const std::vector<double> mls = mls_weights(g_.V0, g_.fixed, ae, threads_);
+  anchor2_.resize(static_cast<size_t>(blocks_));
+  for (size_t v = 0; v < n; ++v)
+    if (unknown_[v] >= 0)
+      anchor2_[static_cast<size_t>(unknown_[v])] = params.anchor * params.anchor * mls[v] * mls[v];
   for (auto& edge : edges)  // now in unknown-block numbering
     edge = {rank[static_cast<size_t>(edge.first)], rank[static_cast<size_t>(edge.second)]};
   build_pattern(edges);
@@ -103,39 +106,53 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
         for (int i = 0; i < 3; ++i) inner[at++] = 3 * pattern_.row(s) + i;
     }
   outer[size] = at;
+
+  corner_start_.assign(static_cast<size_t>(blocks_) + 1, 0);
+  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
+    for (int p = 0; p < 3; ++p)
+      if (const int k = unknown_[static_cast<size_t>(g_.F(f, p))]; k >= 0) ++corner_start_[static_cast<size_t>(k) + 1];
+  for (size_t k = 0; k < static_cast<size_t>(blocks_); ++k) corner_start_[k + 1] += corner_start_[k];
+  corner_.resize(static_cast<size_t>(corner_start_.back()));
+  std::vector<int> next(corner_start_.begin(), corner_start_.end() - 1);
+  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
+    for (int p = 0; p < 3; ++p)
+      if (const int k = unknown_[static_cast<size_t>(g_.F(f, p))]; k >= 0)
+        corner_[static_cast<size_t>(next[static_cast<size_t>(k)]++)] = static_cast<int>(3 * f + p);
 }
 
+// Each block column is summed by the thread that owns it, from the corners of its vertex: its
+// diagonal block, and the off-diagonal blocks whose other vertex comes later in the order.
 void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
   StageTimer timer(times_.assembly);
   targets_ = targets;
   const Eigen::Matrix3d L = shape_block();
   double* value = M_.valuePtr();
   const int* outer = M_.outerIndexPtr();
-  std::fill(value, value + M_.nonZeros(), 0.0);
-  // Adds the lower part of a diagonal block of block column k.
-  const auto add_diagonal = [&](int k, const Eigen::Matrix3d& B) {
-    for (int j = 0; j < 3; ++j)
-      for (int i = j; i < 3; ++i) value[diagonal_entry(outer, k, i, j)] += B(i, j);
-  };
-  for (Eigen::Index f = 0; f < g_.solve_faces; ++f) {
-    const Vec3& n = targets_[static_cast<size_t>(f)];
-    const Eigen::Matrix3d N = w_ * w_ * n * n.transpose();
-    for (int p = 0; p < 3; ++p) {
-      const int k = unknown_[static_cast<size_t>(g_.F(f, p))];
-      if (k >= 0) add_diagonal(k, corner_block(L, N, p, p));
-    }
-    for (int e = 0; e < 3; ++e) {
-      const int s = face_slot_[static_cast<size_t>(3 * f + e)];
-      if (s < 0) continue;
-      const int k = std::min(unknown_[static_cast<size_t>(g_.F(f, kPairs[e][0]))],
-                             unknown_[static_cast<size_t>(g_.F(f, kPairs[e][1]))]);
-      const Eigen::Matrix3d B = corner_block(L, N, kPairs[e][0], kPairs[e][1]);  // symmetric
+  parallel_ranges(static_cast<size_t>(blocks_), static_cast<size_t>(threads_), kRangeChunk,
+                  [&](size_t first, size_t last) {
+    for (int k = static_cast<int>(first); k < static_cast<int>(last); ++k) {
+      std::fill(value + outer[3 * k], value + outer[3 * k + 3], 0.0);
+      Eigen::Matrix3d diagonal = anchor2_[static_cast<size_t>(k)] * Eigen::Matrix3d::Identity();
+      for (int c = corner_start_[static_cast<size_t>(k)]; c < corner_start_[static_cast<size_t>(k) + 1]; ++c) {
+        const int f = corner_[static_cast<size_t>(c)] / 3, p = corner_[static_cast<size_t>(c)] % 3;
+        const Vec3& n = targets_[static_cast<size_t>(f)];
+        const Eigen::Matrix3d N = w_ * w_ * n * n.transpose();
+        diagonal += corner_block(L, N, p, p);
+        for (int e = 0; e < 3; ++e) {
+          const int a = kPairs[e][0], b = kPairs[e][1];
+          const int s = face_slot_[static_cast<size_t>(3 * f + e)];
+          if (s < 0 || (a != p && b != p)) continue;
+          const int other = unknown_[static_cast<size_t>(g_.F(f, a == p ? b : a))];
+          if (other < k) continue;  // that block belongs to the other vertex's column
+          const Eigen::Matrix3d B = corner_block(L, N, a, b);  // symmetric
+          for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) value[block_entry(outer, pattern_, k, s, i, j)] += B(i, j);
+        }
+      }
       for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) value[block_entry(outer, pattern_, k, s, i, j)] += B(i, j);
+        for (int i = j; i < 3; ++i) value[diagonal_entry(outer, k, i, j)] = diagonal(i, j);
     }
-  }
-  for (size_t v = 0; v < unknown_.size(); ++v)
-    if (unknown_[v] >= 0) add_diagonal(unknown_[v], anchor2_[v] * Eigen::Matrix3d::Identity());
+  });
   factor_current_ = false;
   preconditioner_current_ = false;
 }
@@ -163,7 +180,8 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
   }
   for (size_t v = 0; v < unknown_.size(); ++v)
     if (unknown_[v] >= 0)
-      b.segment<3>(3 * unknown_[v]) += anchor2_[v] * g_.V0.row(static_cast<Eigen::Index>(v)).transpose();
+      b.segment<3>(3 * unknown_[v]) +=
+          anchor2_[static_cast<size_t>(unknown_[v])] * g_.V0.row(static_cast<Eigen::Index>(v)).transpose();
   return b;
 }
 

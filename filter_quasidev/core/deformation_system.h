@@ -42,7 +42,7 @@
 namespace qd {
 
 constexpr long kIterativeFromUnknowns = 15000;  // SolveMethod::Auto: CG from here on (measured)
-constexpr double kCgTolerance = 1e-6;
+constexpr double kCgTolerance = 1e-5;
 constexpr int kCgIterations = 100;
 
 class DeformationSystem {
@@ -76,11 +76,13 @@ class DeformationSystem {
 
   const GroupMesh& g_;
   double w_;
-  std::vector<double> anchor2_;  // α²·w(v)² per local vertex
+  std::vector<double> anchor2_;  // α²·w(v)² per unknown block
   std::vector<int> unknown_;
   int blocks_ = 0;
   BlockPattern pattern_;
   std::vector<int> face_slot_;     // per face and corner pair (0,1),(0,2),(1,2): off-diag block
+  std::vector<int> corner_start_;  // corners of block k's vertex: corner_[start[k] .. start[k+1])
+  std::vector<int> corner_;        // as 3·face + corner, faces ascending
   std::vector<Vec3> targets_;
   Eigen::SparseMatrix<double> M_;
   SolverKind solver_;

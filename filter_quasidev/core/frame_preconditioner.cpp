@@ -48,17 +48,19 @@ void FramePreconditioner::restrict_to_frames(const Eigen::SparseMatrix<double>& 
     kn[at] = R(0, 0);
     kt[at] = 0.5 * (R(1, 1) + R(2, 2));
   };
-  for (int k = 0; k < pattern_.blocks(); ++k) {
-    Eigen::Matrix3d B;
-    for (int j = 0; j < 3; ++j)
-      for (int i = j; i < 3; ++i) B(i, j) = B(j, i) = value[diagonal_entry(outer, k, i, j)];
-    restrict(B, k, k, K_n_.outerIndexPtr()[k]);
-    for (int s = pattern_.begin(k); s < pattern_.end(k); ++s) {
+  parallel_ranges(static_cast<size_t>(pattern_.blocks()), threads_, kRangeChunk, [&](size_t first, size_t last) {
+    for (int k = static_cast<int>(first); k < static_cast<int>(last); ++k) {
+      Eigen::Matrix3d B;
       for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) B(i, j) = value[block_entry(outer, pattern_, k, s, i, j)];
-      restrict(B, pattern_.row(s), k, K_n_.outerIndexPtr()[k] + 1 + s - pattern_.begin(k));
+        for (int i = j; i < 3; ++i) B(i, j) = B(j, i) = value[diagonal_entry(outer, k, i, j)];
+      restrict(B, k, k, K_n_.outerIndexPtr()[k]);
+      for (int s = pattern_.begin(k); s < pattern_.end(k); ++s) {
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 3; ++i) B(i, j) = value[block_entry(outer, pattern_, k, s, i, j)];
+        restrict(B, pattern_.row(s), k, K_n_.outerIndexPtr()[k] + 1 + s - pattern_.begin(k));
+      }
     }
-  }
+  });
 }
 
 void FramePreconditioner::build(const Eigen::SparseMatrix<double>& M, const std::vector<Vec3>& normals) {

@@ -32,4 +32,14 @@ void parallel_for(size_t n, size_t threads, const Work& work) {
     if (error) std::rethrow_exception(error);
 }
 
+constexpr size_t kRangeChunk = 4096;  // indices per task of the engine's parallel loops
+
+// Runs work(begin, end) over [0, n) cut into ranges of `chunk` indices, on up to `threads`
+// threads. The cut does not depend on `threads`, so neither does any per-range result.
+template <typename Work>
+void parallel_ranges(size_t n, size_t threads, size_t chunk, const Work& work) {
+  parallel_for((n + chunk - 1) / chunk, threads,
+               [&](size_t r) { work(r * chunk, std::min(n, (r + 1) * chunk)); });
+}
+
 }  // namespace qd

@@ -174,7 +174,7 @@ TEST(Approximate, IterativeMethodMatchesDirect) {
   EXPECT_EQ(one.times.factorizations, 2) << "two scalar factors, M never factorised";
   EXPECT_GT(one.times.cg_iterations, one.times.solves);
   const double moved = (direct.V - p.V).cwiseAbs().maxCoeff();
-  EXPECT_LT((one.V - direct.V).cwiseAbs().maxCoeff(), 1e-5 * moved);
+  EXPECT_LT((one.V - direct.V).cwiseAbs().maxCoeff(), 1e-4 * moved);
   EXPECT_NEAR(one.abd_reduction, direct.abd_reduction, 1e-3);
 }
 
