@@ -4,6 +4,8 @@
 // entry's place in M's values follows from the block's slot alone.
 #pragma once
 
+#include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace qd {
@@ -17,6 +19,10 @@ struct BlockPattern {
   int end(int k) const { return column_start[static_cast<size_t>(k) + 1]; }
   int row(int s) const { return block_row[static_cast<size_t>(s)]; }
 };
+
+// The pattern of a graph with `nodes` nodes and the given edges (either orientation, repeats
+// and self loops allowed): per node c its neighbours r > c. Counting sort, O(nodes + edges).
+BlockPattern lower_pattern(int nodes, const std::vector<std::pair<int, int>>& edges);
 
 // Offset of entry (i, j), i ≥ j, of the diagonal block in column 3k+j of M's values.
 inline int diagonal_entry(const int* outer, int k, int i, int j) { return outer[3 * k + j] + (i - j); }

@@ -65,20 +65,7 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
 // block column k, the diagonal block (lower part) then each neighbouring block row r > k;
 // column 3k+j holds rows 3k+j..3k+2, then 3r..3r+2 per r.
 void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& edges) {
-  std::vector<std::pair<int, int>> lower;  // (block column, block row), row > column
-  lower.reserve(edges.size());
-  for (const auto& [a, b] : edges)
-    if (a != b) lower.emplace_back(std::min(a, b), std::max(a, b));
-  std::sort(lower.begin(), lower.end());
-  lower.erase(std::unique(lower.begin(), lower.end()), lower.end());
-  std::vector<int>& start = pattern_.column_start;
-  start.assign(static_cast<size_t>(blocks_) + 1, 0);
-  pattern_.block_row.resize(lower.size());
-  for (size_t s = 0; s < lower.size(); ++s) {
-    ++start[static_cast<size_t>(lower[s].first) + 1];
-    pattern_.block_row[s] = lower[s].second;
-  }
-  for (size_t k = 0; k < static_cast<size_t>(blocks_); ++k) start[k + 1] += start[k];
+  pattern_ = lower_pattern(blocks_, edges);
 
   face_slot_.assign(static_cast<size_t>(g_.solve_faces) * 3, -1);
   for (Eigen::Index f = 0; f < g_.solve_faces; ++f)

@@ -1,8 +1,8 @@
 #include "vertex_order.h"
 
-#include <algorithm>
 #include <numeric>
 
+#include "block_pattern.h"
 #include "error.h"
 #ifdef QD_WITH_CHOLMOD
 #include <cholmod.h>
@@ -14,37 +14,28 @@
 namespace qd {
 namespace {
 
-// The lower triangle of the graph's pattern with the diagonal, as sorted (column, row) pairs.
-std::vector<std::pair<int, int>> lower_pattern(int nodes, const std::vector<std::pair<int, int>>& edges) {
-  std::vector<std::pair<int, int>> lower;
-  lower.reserve(edges.size() + static_cast<size_t>(nodes));
-  for (int v = 0; v < nodes; ++v) lower.emplace_back(v, v);
-  for (const auto& [i, j] : edges) lower.emplace_back(std::min(i, j), std::max(i, j));
-  std::sort(lower.begin(), lower.end());
-  lower.erase(std::unique(lower.begin(), lower.end()), lower.end());
-  return lower;
-}
-
 #ifdef QD_WITH_CHOLMOD
 // perm[k]: the node eliminated k-th, as CHOLMOD chooses it.
-void elimination_order(int nodes, const std::vector<std::pair<int, int>>& lower, std::vector<int>& perm) {
+void elimination_order(int nodes, const BlockPattern& lower, std::vector<int>& perm) {
   cholmod_common common;
   cholmod_start(&common);
   common.nmethods = 1;
   common.method[0].ordering = CHOLMOD_AMD;
   common.supernodal = CHOLMOD_SIMPLICIAL;
   cholmod_sparse* pattern = cholmod_allocate_sparse(static_cast<size_t>(nodes), static_cast<size_t>(nodes),
-                                                    lower.size(), 1, 1, -1, CHOLMOD_PATTERN, &common);
+                                                    lower.block_row.size() + static_cast<size_t>(nodes), 1, 1, -1,
+                                                    CHOLMOD_PATTERN, &common);
   cholmod_factor* symbolic = nullptr;
   if (pattern) {
     int* p = static_cast<int*>(pattern->p);
     int* i = static_cast<int*>(pattern->i);
-    std::fill(p, p + nodes + 1, 0);
-    for (size_t k = 0; k < lower.size(); ++k) {
-      ++p[lower[k].first + 1];
-      i[k] = lower[k].second;
+    int at = 0;
+    for (int c = 0; c < nodes; ++c) {  // the diagonal, then the neighbours below it
+      p[c] = at;
+      i[at++] = c;
+      for (int s = lower.begin(c); s < lower.end(c); ++s) i[at++] = lower.row(s);
     }
-    for (int c = 0; c < nodes; ++c) p[c + 1] += p[c];
+    p[nodes] = at;
     symbolic = cholmod_analyze(pattern, &common);
   }
   if (symbolic) {
@@ -59,10 +50,13 @@ void elimination_order(int nodes, const std::vector<std::pair<int, int>>& lower,
 }
 #else
 // perm[k]: the node eliminated k-th by Eigen's minimum degree (AMD).
-void elimination_order(int nodes, const std::vector<std::pair<int, int>>& lower, std::vector<int>& perm) {
+void elimination_order(int nodes, const BlockPattern& lower, std::vector<int>& perm) {
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(lower.size());
-  for (const auto& [c, r] : lower) entries.emplace_back(r, c, 1.0);
+  entries.reserve(lower.block_row.size() + static_cast<size_t>(nodes));
+  for (int c = 0; c < nodes; ++c) {
+    entries.emplace_back(c, c, 1.0);
+    for (int s = lower.begin(c); s < lower.end(c); ++s) entries.emplace_back(lower.row(s), c, 1.0);
+  }
   Eigen::SparseMatrix<double> graph(nodes, nodes);
   graph.setFromTriplets(entries.begin(), entries.end());
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
