@@ -43,7 +43,7 @@ constexpr double kFarResidualDeg = 10.0;
 // keeps its own normal as target, so the patch keeps its shape.
 class KeepNormals : public GaussModel {
  public:
-  Vec3 project(const Vec3& n) const override { return n; }
+  Vec3 project(const Vec3& n, int&) const override { return n; }
   std::string kind() const override { return "unchanged"; }
 };
 
@@ -106,8 +106,10 @@ Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, Ta
   return [&g, &fits, mode](const Positions& X) {
     if (mode == TargetMode::Refit) return group_targets(g, fit_patches(g, X));
     std::vector<Vec3> t(static_cast<size_t>(g.solve_faces));
-    for (const PatchFit& p : fits)
-      for (int f : p.faces) t[static_cast<size_t>(f)] = p.fit.model->project(face_normal(X, g.F, f));
+    for (const PatchFit& p : fits) {
+      int hint = -1;  // faces in input order: mostly neighbours, with nearby normals
+      for (int f : p.faces) t[static_cast<size_t>(f)] = p.fit.model->project(face_normal(X, g.F, f), hint);
+    }
     return t;
   };
 }
