@@ -2,7 +2,7 @@
 #include "mesh.h"
 
 #include <algorithm>
-#include <utility>
+#include <cstddef>
 
 namespace qd {
 
@@ -28,24 +28,43 @@ double face_area(const Positions& V, const Triangles& F, int f) {
   return 0.5 * doubled_area_vector(V, F, f).norm();
 }
 
-double average_edge_length(const Positions& V, const Triangles& F, const std::vector<int>& faces) {
-  const int count = faces.empty() ? static_cast<int>(F.rows()) : static_cast<int>(faces.size());
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(3 * static_cast<size_t>(count));
-  for (int i = 0; i < count; ++i) {
-    const int f = faces.empty() ? i : faces[i];
-    for (int k = 0; k < 3; ++k) {
-      const int a = F(f, k);
-      const int b = F(f, (k + 1) % 3);
-      edges.emplace_back(std::min(a, b), std::max(a, b));
+std::vector<FaceEdge> sorted_face_edges(const Triangles& F, Eigen::Index vertex_count,
+                                        const std::vector<int>& faces) {
+  const size_t count = faces.empty() ? static_cast<size_t>(F.rows()) : faces.size();
+  auto for_each_edge = [&](auto&& visit) {
+    for (size_t i = 0; i < count; ++i) {
+      const int f = faces.empty() ? static_cast<int>(i) : faces[i];
+      for (int k = 0; k < 3; ++k) {
+        const int a = F(f, k), b = F(f, (k + 1) % 3);
+        visit(FaceEdge{std::min(a, b), std::max(a, b), f});
+      }
     }
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  if (edges.empty()) return 0.0;
+  };
+  std::vector<size_t> start(static_cast<size_t>(vertex_count) + 1, 0);
+  for_each_edge([&](const FaceEdge& e) { ++start[static_cast<size_t>(e.lo) + 1]; });
+  for (size_t v = 1; v < start.size(); ++v) start[v] += start[v - 1];
+  std::vector<FaceEdge> edges(3 * count);
+  std::vector<size_t> next(start.begin(), start.end() - 1);
+  for_each_edge([&](const FaceEdge& e) { edges[next[static_cast<size_t>(e.lo)]++] = e; });
+  const auto by_hi_face = [](const FaceEdge& x, const FaceEdge& y) {
+    return x.hi != y.hi ? x.hi < y.hi : x.face < y.face;
+  };
+  for (size_t v = 0; v + 1 < start.size(); ++v)
+    std::sort(edges.begin() + static_cast<std::ptrdiff_t>(start[v]),
+              edges.begin() + static_cast<std::ptrdiff_t>(start[v + 1]), by_hi_face);
+  return edges;
+}
+
+double average_edge_length(const Positions& V, const Triangles& F, const std::vector<int>& faces) {
   double total = 0.0;
-  for (const auto& e : edges) total += (V.row(e.first) - V.row(e.second)).norm();
-  return total / static_cast<double>(edges.size());
+  size_t unique = 0;
+  const std::vector<FaceEdge> edges = sorted_face_edges(F, V.rows(), faces);
+  for (size_t i = 0; i < edges.size(); ++i) {
+    if (i > 0 && edges[i].lo == edges[i - 1].lo && edges[i].hi == edges[i - 1].hi) continue;
+    total += (V.row(edges[i].lo) - V.row(edges[i].hi)).norm();
+    ++unique;
+  }
+  return unique > 0 ? total / static_cast<double>(unique) : 0.0;
 }
 
 }  // namespace qd

@@ -12,7 +12,8 @@ namespace qd {
 
 namespace {
 
-constexpr double kTwoPi = 6.283185307179586476925;
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kTwoPi = 2 * kPi;
 
 // Per-corner quantities of one face: corner k sits at F(f, k).
 struct Corners {
@@ -35,8 +36,12 @@ Corners corners_of(const Positions& V, const Triangles& F, int f) {
   return c;
 }
 
-// Interior angle θ at corner k.
-double corner_angle(const Corners& c, int k) { return std::atan2(c.doubled_area, c.dot[k]); }
+// Interior angle θ at corner k: atan2(|e × e'|, e·e') = π/2 − atan(cot θ), the cheaper call;
+// 0 or π on a zero-area face.
+double corner_angle(const Corners& c, int k) {
+  if (!(c.doubled_area > 0)) return c.dot[k] < 0 ? kPi : 0.0;
+  return kPi / 2 - std::atan(c.dot[k] / c.doubled_area);
+}
 
 // Share of the face's area given to corner k (Meyer et al. 2003, mixed area): the Voronoi
 // region 1/8·(|PR|² cot Q + |PQ|² cot R) for a non-obtuse face, else area/2 at the obtuse
@@ -59,31 +64,27 @@ double curvature(double defect, double area) { return area > 0 ? defect / area :
 
 }  // namespace
 
-std::vector<double> angle_defects(const Positions& V, const Triangles& F) {
-  std::vector<double> defect(static_cast<size_t>(V.rows()), kTwoPi);
+VertexAngles vertex_angles(const Positions& V, const Triangles& F) {
+  const auto n = static_cast<size_t>(V.rows());
+  VertexAngles out{std::vector<double>(n, kTwoPi), std::vector<double>(n, 0.0)};
   for (int f = 0; f < F.rows(); ++f) {
     const Corners c = corners_of(V, F, f);
-    for (int k = 0; k < 3; ++k) defect[F(f, k)] -= corner_angle(c, k);
+    // The third interior angle from θ_0 + θ_1 + θ_2 = π.
+    const double t0 = corner_angle(c, 0), t1 = corner_angle(c, 1);
+    const double theta[3] = {t0, t1, kPi - t0 - t1};
+    for (int k = 0; k < 3; ++k) {
+      const auto v = static_cast<size_t>(F(f, k));
+      out.defect[v] -= theta[k];
+      out.area[v] += corner_mixed_area(c, k);
+    }
   }
-  return defect;
+  return out;
 }
 
-std::vector<double> mixed_areas(const Positions& V, const Triangles& F) {
-  std::vector<double> area(static_cast<size_t>(V.rows()), 0.0);
-  for (int f = 0; f < F.rows(); ++f) {
-    const Corners c = corners_of(V, F, f);
-    for (int k = 0; k < 3; ++k) area[F(f, k)] += corner_mixed_area(c, k);
-  }
-  return area;
-}
-
-std::vector<double> gaussian_curvature(const Positions& V, const Triangles& F,
-                                       const std::vector<char>& interior) {
-  const std::vector<double> defect = angle_defects(V, F);
-  const std::vector<double> area = mixed_areas(V, F);
-  std::vector<double> k(defect.size(), 0.0);
+std::vector<double> gaussian_curvature(const VertexAngles& angles, const std::vector<char>& interior) {
+  std::vector<double> k(angles.defect.size(), 0.0);
   for (size_t v = 0; v < k.size(); ++v)
-    if (v < interior.size() && interior[v]) k[v] = curvature(defect[v], area[v]);
+    if (v < interior.size() && interior[v]) k[v] = curvature(angles.defect[v], angles.area[v]);
   return k;
 }
 
@@ -121,25 +122,16 @@ double shape_difference(const Positions& V0, const Positions& V, const Triangles
 Figures measure(const Positions& V0, const Positions& V, const Triangles& F,
                 const std::vector<int>& vertices, const std::vector<int>& faces,
                 const std::vector<Vec3>& targets, const std::vector<int>& moved) {
-  Figures out;
+  return measure(vertex_angles(V, F), V0, V, F, vertices, faces, targets, moved);
+}
 
-  // Angle sums and mixed areas of the wanted vertices only, from the faces touching them.
-  const auto n = static_cast<size_t>(V.rows());
-  std::vector<char> wanted(n, 0);
-  for (const int v : vertices) wanted[v] = 1;
-  std::vector<double> angle_sum(n, 0.0);
-  std::vector<double> area(n, 0.0);
-  for (int f = 0; f < F.rows(); ++f) {
-    if (!wanted[F(f, 0)] && !wanted[F(f, 1)] && !wanted[F(f, 2)]) continue;
-    const Corners c = corners_of(V, F, f);
-    for (int k = 0; k < 3; ++k) {
-      angle_sum[F(f, k)] += corner_angle(c, k);
-      area[F(f, k)] += corner_mixed_area(c, k);
-    }
-  }
+Figures measure(const VertexAngles& angles, const Positions& V0, const Positions& V,
+                const Triangles& F, const std::vector<int>& vertices, const std::vector<int>& faces,
+                const std::vector<Vec3>& targets, const std::vector<int>& moved) {
+  Figures out;
   for (const int v : vertices) {
-    const double defect = kTwoPi - angle_sum[v];
-    const double k = std::abs(curvature(defect, area[v]));
+    const double defect = angles.defect[static_cast<size_t>(v)];
+    const double k = std::abs(curvature(defect, angles.area[static_cast<size_t>(v)]));
     out.g_abd += k;
     out.angle_defect += std::abs(defect);
     out.max_abs_k = std::max(out.max_abs_k, k);

@@ -10,15 +10,16 @@
 
 namespace qd {
 
-// 2π − Σθ_j per vertex (angle defect); only meaningful for interior vertices.
-std::vector<double> angle_defects(const Positions& V, const Triangles& F);
-
-// Mixed Voronoi area A_v per vertex (Meyer et al. 2003), summed over all incident faces.
-std::vector<double> mixed_areas(const Positions& V, const Triangles& F);
+// Per vertex: the angle defect 2π − Σθ_j (only meaningful for interior vertices) and the mixed
+// Voronoi area A_v (Meyer et al. 2003) summed over all incident faces; one pass over the faces.
+struct VertexAngles {
+  std::vector<double> defect;
+  std::vector<double> area;
+};
+VertexAngles vertex_angles(const Positions& V, const Triangles& F);
 
 // K(v) = (2π − Σθ_j)/A_v (Eq. 18) where interior[v], else 0.
-std::vector<double> gaussian_curvature(const Positions& V, const Triangles& F,
-                                       const std::vector<char>& interior);
+std::vector<double> gaussian_curvature(const VertexAngles& angles, const std::vector<char>& interior);
 
 // d(t) = Σ|n_t·e_i| (Def. 2, Eq. 1–2) summed over faces (Def. 3, Eq. 3); targets[i] belongs
 // to faces[i].
@@ -34,6 +35,10 @@ double shape_difference(const Positions& V0, const Positions& V, const Triangles
 // over `faces` / `moved` (the vertices whose displacement counts).
 Figures measure(const Positions& V0, const Positions& V, const Triangles& F,
                 const std::vector<int>& vertices, const std::vector<int>& faces,
+                const std::vector<Vec3>& targets, const std::vector<int>& moved);
+// The same with vertex_angles(V, F) at hand.
+Figures measure(const VertexAngles& angles, const Positions& V0, const Positions& V,
+                const Triangles& F, const std::vector<int>& vertices, const std::vector<int>& faces,
                 const std::vector<Vec3>& targets, const std::vector<int>& moved);
 
 }  // namespace qd

@@ -42,7 +42,7 @@ constexpr double kFarResidualDeg = 10.0;
 // keeps its own normal as target, so the patch keeps its shape.
 class KeepNormals : public GaussModel {
  public:
-  Vec3 project(const Vec3& n) const override { return n; }
+  Vec3 project(const Vec3& n, int&) const override { return n; }
   std::string kind() const override { return "unchanged"; }
 };
 
@@ -105,8 +105,10 @@ Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, Ta
   return [&g, &fits, mode](const Positions& X) {
     if (mode == TargetMode::Refit) return group_targets(g, fit_patches(g, X));
     std::vector<Vec3> t(static_cast<size_t>(g.solve_faces));
-    for (const PatchFit& p : fits)
-      for (int f : p.faces) t[static_cast<size_t>(f)] = p.fit.model->project(face_normal(X, g.F, f));
+    for (const PatchFit& p : fits) {
+      int hint = -1;  // faces in input order: mostly neighbours, with nearby normals
+      for (int f : p.faces) t[static_cast<size_t>(f)] = p.fit.model->project(face_normal(X, g.F, f), hint);
+    }
     return t;
   };
 }
@@ -226,7 +228,8 @@ Result approximate(const Problem& problem, const Progress& progress) {
   Result r;
   r.V = V;
   r.average_edge = average_edge_length(V, F);
-  r.k_before = gaussian_curvature(V, F, interior);
+  const VertexAngles angles_before = vertex_angles(V, F);
+  r.k_before = gaussian_curvature(angles_before, interior);
   r.times.setup += ms_since(t0);  // validation, topology, the input's figures
 
   std::map<int, std::vector<int>> faces_of_patch;
@@ -298,28 +301,35 @@ Result approximate(const Problem& problem, const Progress& progress) {
     throw Error(faces_of_patch.size() == 1 ? first_skip.substr(first_skip.find(": ") + 2)
                                            : "no patch can be made developable; " + first_skip);
 
-  {  // the reports' figures
+  {  // the reports' figures, from the angles of every vertex before and after
     StageTimer timer(r.times.metrics);
-    // Per-patch figures, each patch measured on its own faces and interior vertices.
+    const VertexAngles angles_after = vertex_angles(r.V, F);
+    // Per-patch figures: each patch measured on its own faces, vertices and interior vertices
+    // (the curvature of a seam vertex counts in every patch it touches).
     std::vector<int> ids;
     for (const auto& entry : faces_of_patch) ids.push_back(entry.first);
     parallel_for(ids.size(), thread_count(params.threads), [&](size_t k) {
       const int id = ids[k];
       const std::vector<int>& faces = faces_of_patch.at(id);
-      const GroupMesh pm = extract_group(V, F, faces, patch, constrained, interior, incident, params);
-      Positions after(pm.V0.rows(), 3);
-      for (size_t l = 0; l < pm.global_vertex.size(); ++l)
-        after.row(static_cast<Eigen::Index>(l)) = r.V.row(pm.global_vertex[l]);
+      std::vector<int> vertices, owned;  // in the order the faces reach them
+      std::vector<char> seen(nv, 0);
+      for (int f : faces)
+        for (int c = 0; c < 3; ++c) {
+          const auto v = static_cast<size_t>(F(f, c));
+          if (seen[v]) continue;
+          seen[v] = 1;
+          vertices.push_back(static_cast<int>(v));
+          if (interior[v]) owned.push_back(static_cast<int>(v));
+        }
       std::vector<Vec3> t;
       for (int f : faces) t.push_back(initial_target[static_cast<size_t>(f)]);
-      const std::vector<int> local_faces = indices(faces.size());
-      const std::vector<int> local_vertices = indices(static_cast<size_t>(pm.solve_vertices));
       PatchReport& rep = reports.at(id);  // the map is not resized here: safe in parallel
       rep.faces = static_cast<int>(faces.size());
-      rep.vertices = static_cast<int>(pm.solve_vertices);
-      rep.free_vertices = static_cast<int>(std::count(pm.fixed.begin(), pm.fixed.begin() + pm.solve_vertices, 0));
-      rep.before = measure(pm.V0, pm.V0, pm.F, pm.owned, local_faces, t, local_vertices);
-      rep.after = measure(pm.V0, after, pm.F, pm.owned, local_faces, t, local_vertices);
+      rep.vertices = static_cast<int>(vertices.size());
+      rep.free_vertices = static_cast<int>(std::count_if(
+          vertices.begin(), vertices.end(), [&](int v) { return !constrained[static_cast<size_t>(v)]; }));
+      rep.before = measure(angles_before, V, V, F, owned, faces, t, vertices);
+      rep.after = measure(angles_after, V, r.V, F, owned, faces, t, vertices);
       rep.abd_reduction = rep.before.g_abd > 0
                               ? 100.0 * (rep.before.g_abd - rep.after.g_abd) / rep.before.g_abd
                               : 0.0;
@@ -335,12 +345,12 @@ Result approximate(const Problem& problem, const Progress& progress) {
     for (size_t v = 0; v < nv; ++v)
       if (interior[v]) interior_list.push_back(static_cast<int>(v));
     const std::vector<int> all_faces = indices(nf), all_vertices = indices(nv);
-    r.k_after = gaussian_curvature(r.V, F, interior);
+    r.k_after = gaussian_curvature(angles_after, interior);
     r.displacement.resize(nv);
     for (size_t v = 0; v < nv; ++v)
       r.displacement[v] = (r.V.row(static_cast<Eigen::Index>(v)) - V.row(static_cast<Eigen::Index>(v))).norm();
-    r.total_before = measure(V, V, F, interior_list, all_faces, initial_target, all_vertices);
-    r.total_after = measure(V, r.V, F, interior_list, all_faces, initial_target, all_vertices);
+    r.total_before = measure(angles_before, V, V, F, interior_list, all_faces, initial_target, all_vertices);
+    r.total_after = measure(angles_after, V, r.V, F, interior_list, all_faces, initial_target, all_vertices);
     r.abd_reduction = r.total_before.g_abd > 0 ? 100.0 * (r.total_before.g_abd - r.total_after.g_abd) /
                                                      r.total_before.g_abd
                                                : 0.0;

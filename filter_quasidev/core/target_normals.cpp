@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,7 +38,7 @@ constexpr double kPoleClearance = 10.0 * kPi / 180.0;
 class PlaneModel : public GaussModel {
  public:
   explicit PlaneModel(const Vec3& normal) : normal_(normal) {}
-  Vec3 project(const Vec3&) const override { return normal_; }
+  Vec3 project(const Vec3&, int&) const override { return normal_; }
   std::string kind() const override { return "plane"; }
 
  private:
@@ -48,41 +49,154 @@ class PlaneModel : public GaussModel {
 class CurveModel : public GaussModel {
  public:
   CurveModel(const Eigen::Matrix3d& R, BSpline2 spline)
-      : R_(R), spline_(std::move(spline)), cloud_{&dense_} {
+      : R_(R), spline_(std::move(spline)), cloud_{&points_} {
     const int M = std::max(64, kDenseSamplesPerControl * spline_.control_count());
     const int last = spline_.periodic() ? M : M - 1;  // open curves include u = 1
     step_ = 1.0 / last;
-    for (int j = 0; j < M; ++j) dense_.push_back(local_point(j * step_));
+    for (int j = 0; j < M; ++j) {
+      samples_.push_back(local(j * step_));
+      points_.push_back(samples_.back().point());
+    }
+    // Half the distance from each sample to the nearest one outside its window.
+    clearance_.assign(points_.size(), std::numeric_limits<double>::infinity());
+    for (int j = 0; j < M; ++j)
+      for (int k = 0; k < j; ++k) {
+        const int apart = spline_.periodic() ? std::min(j - k, M - (j - k)) : j - k;
+        if (apart <= kWindow) continue;
+        const double half = 0.5 * (points_[static_cast<size_t>(j)] - points_[static_cast<size_t>(k)]).norm();
+        clearance_[static_cast<size_t>(j)] = std::min(clearance_[static_cast<size_t>(j)], half);
+        clearance_[static_cast<size_t>(k)] = std::min(clearance_[static_cast<size_t>(k)], half);
+      }
     tree_ = std::make_unique<Tree>(3, cloud_, nanoflann::KDTreeSingleIndexAdaptorParams(10));
   }
 
-  Vec3 project(const Vec3& n) const override {
+  Vec3 project(const Vec3& n, int& hint) const override {
     const Vec3 m = R_ * n;
-    uint32_t index = 0;
-    double dist2 = 0;
-    tree_->knnSearch(m.data(), 1, &index, &dist2);
+    const int index = nearest_sample(m, hint);
+    hint = index;
     // Refine below the sampling step: safeguarded Newton on g(u) = m·S(c_2D(u)) (the cosine of
-    // the angle) inside the two sampling intervals around the nearest sample.
+    // the angle) inside the two sampling intervals around the nearest sample, whose stored
+    // values give the first step.
     double u = index * step_, lo = u - step_, hi = u + step_;
     if (!spline_.periodic()) lo = std::max(lo, 0.0), hi = std::min(hi, 1.0);
+    Local p = samples_[static_cast<size_t>(index)];
     for (int it = 0; it < 40; ++it) {
       double g1 = 0, g2 = 0;
-      cosine_derivatives(m, u, g1, g2);
+      p.cosine_derivatives(m, g1, g2);
       (g1 > 0 ? lo : hi) = u;
       double next = g2 < 0 ? u - g1 / g2 : lo - 1.0;
-      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      // u itself is a bracket end: a converged step may round onto it, which must not count
+      // as leaving the bracket.
+      if (!(next >= lo && next <= hi)) next = 0.5 * (lo + hi);
       // Newton converges quadratically: after a step of 1e-9 sampling intervals the remaining
-      // error is far below round-off.
-      const bool done = std::abs(next - u) < 1e-9 * step_;
+      // error is far below round-off, and so is the second-order term of the last step.
+      if (std::abs(next - u) < 1e-9 * step_)
+        return R_.transpose() * (p.point() + (next - u) * p.tangent());
       u = next;
-      if (done) break;
+      p = local(u, p);
     }
-    return R_.transpose() * local_point(u);
+    return R_.transpose() * p.point();
   }
 
   std::string kind() const override { return spline_.periodic() ? "closed curve" : "curve"; }
 
  private:
+  // A hint is trusted within this many samples on either side.
+  static constexpr int kWindow = 4;
+
+  // An angle with its sine and cosine.
+  struct Angle {
+    double a, s, c;
+
+    static Angle of(double a) { return {a, std::sin(a), std::cos(a)}; }
+    // Angle b from this one by angle addition, with the Taylor series of sin d and cos d
+    // (d = b − a) exact to round-off for |d| <= 0.1 (first omitted terms below 1e-18): the
+    // Newton steps move little, and this spares them the libm calls.
+    Angle to(double b) const {
+      const double d = b - a, d2 = d * d;
+      if (!(std::abs(d) <= 0.1)) return of(b);
+      const double sd =
+          d * (1 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 / 362880))));
+      const double cd =
+          1 + d2 * (-1.0 / 2 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 - d2 / 3628800))));
+      return {b, s * cd + c * sd, c * cd - s * sd};
+    }
+  };
+
+  // The curve S(θ(u), φ(u)) at one parameter: θ and φ (Eq. 9) and the first two derivatives of
+  // c_2D(u) = (θ(u), φ(u)).
+  struct Local {
+    Angle theta, phi;
+    Vec2 d1, d2;
+
+    Vec3 point() const { return Vec3(phi.s * theta.c, phi.s * theta.s, phi.c); }
+    Vec3 tangent() const {  // dS/du = S_θ θ' + S_φ φ'
+      return Vec3(-phi.s * theta.s, phi.s * theta.c, 0) * d1.x() +
+             Vec3(phi.c * theta.c, phi.c * theta.s, -phi.s) * d1.y();
+    }
+    // First and second derivative of g(u) = m·S(θ(u), φ(u)) by the chain rule, with
+    // a = m·(cos θ, sin θ, 0) and b = m·(−sin θ, cos θ, 0):
+    //   m·S = sin φ a + cos φ m_z,  m·S_θ = sin φ b,  m·S_φ = cos φ a − sin φ m_z,
+    //   m·S_θθ = −sin φ a,  m·S_θφ = cos φ b,  m·S_φφ = −m·S.
+    void cosine_derivatives(const Vec3& m, double& g1, double& g2) const {
+      const double sp = phi.s, cp = phi.c;
+      const double a = theta.c * m.x() + theta.s * m.y(), b = theta.c * m.y() - theta.s * m.x();
+      const double S = sp * a + cp * m.z(), St = sp * b, Sp = cp * a - sp * m.z();
+      const double t1 = d1.x(), p1 = d1.y();
+      g1 = St * t1 + Sp * p1;
+      g2 = -sp * a * t1 * t1 + 2 * cp * b * t1 * p1 - S * p1 * p1 + St * d2.x() + Sp * d2.y();
+    }
+  };
+
+  Local local(double u) const {
+    const CurvePoint c = spline_.eval(u);
+    return {Angle::of(c.c.x()), Angle::of(c.c.y()), c.d1, c.d2};
+  }
+  // The same, with the sines and cosines from those of a nearby parameter.
+  Local local(double u, const Local& near) const {
+    const CurvePoint c = spline_.eval(u);
+    return {near.theta.to(c.c.x()), near.phi.to(c.c.y()), c.d1, c.d2};
+  }
+
+  // The sample nearest to m among those within kWindow samples of sample j (the first of equals).
+  int nearest_in_window(const Vec3& m, int j) const {
+    const int M = static_cast<int>(points_.size());
+    int best = j;
+    double best_d2 = (m - points_[static_cast<size_t>(j)]).squaredNorm();
+    for (int k = j - kWindow; k <= j + kWindow; ++k) {
+      const int i = spline_.periodic() ? (k + M) % M : k;
+      if (i < 0 || i >= M) continue;
+      const double d2 = (m - points_[static_cast<size_t>(i)]).squaredNorm();
+      if (d2 < best_d2 || (d2 == best_d2 && i < best)) best = i, best_d2 = d2;
+    }
+    return best;
+  }
+
+  // The sample nearest to m: the one nearest within its own window, reached from `hint` in a
+  // few window steps; it is the nearest of all when m lies within its clearance (every sample
+  // outside the window is then farther, by the triangle inequality). Otherwise, or without a
+  // hint, the k-d tree's answer settled the same way, so the hint never changes the result
+  // (short of exact ties between distant samples).
+  int nearest_sample(const Vec3& m, int hint) const {
+    constexpr int kMaxSteps = 4;
+    for (int steps = 0, j = hint; j >= 0 && steps < kMaxSteps; ++steps) {
+      const int next = nearest_in_window(m, j);
+      if (next == j) {
+        if ((m - points_[static_cast<size_t>(j)]).norm() < clearance_[static_cast<size_t>(j)]) return j;
+        break;
+      }
+      j = next;
+    }
+    uint32_t index = 0;
+    double dist2 = 0;
+    tree_->knnSearch(m.data(), 1, &index, &dist2);
+    for (int j = static_cast<int>(index);;) {
+      const int next = nearest_in_window(m, j);
+      if (next == j) return j;
+      j = next;
+    }
+  }
+
   struct Cloud {  // nanoflann dataset adaptor over the dense samples
     const std::vector<Vec3>* pts;
     size_t kdtree_get_point_count() const { return pts->size(); }
@@ -93,31 +207,12 @@ class CurveModel : public GaussModel {
   using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
                                                    Cloud, 3, uint32_t>;
 
-  Vec3 local_point(double u) const {
-    const Vec2 c = spline_.eval(u).c;
-    return sphere_point(c.x(), c.y());
-  }
-
-  // First and second derivative of g(u) = m·S(θ(u), φ(u)) by the chain rule through Eq. 9.
-  void cosine_derivatives(const Vec3& m, double u, double& g1, double& g2) const {
-    const CurvePoint p = spline_.eval(u);
-    const double st = std::sin(p.c.x()), ct = std::cos(p.c.x());
-    const double sp = std::sin(p.c.y()), cp = std::cos(p.c.y());
-    const Vec3 S(sp * ct, sp * st, cp);
-    const Vec3 St(-sp * st, sp * ct, 0), Sp(cp * ct, cp * st, -sp);
-    const Vec3 Stt(-sp * ct, -sp * st, 0), Stp(-cp * st, cp * ct, 0);
-    const double t1 = p.d1.x(), p1 = p.d1.y();
-    const Vec3 dS = St * t1 + Sp * p1;
-    const Vec3 ddS = Stt * (t1 * t1) + Stp * (2 * t1 * p1) - S * (p1 * p1) + St * p.d2.x() +
-                     Sp * p.d2.y();
-    g1 = m.dot(dS);
-    g2 = m.dot(ddS);
-  }
-
   Eigen::Matrix3d R_;
   BSpline2 spline_;
   double step_ = 0;
-  std::vector<Vec3> dense_;
+  std::vector<Local> samples_;   // dense samples of the curve at u = j·step_
+  std::vector<Vec3> points_;     // their points S, in the k-d tree
+  std::vector<double> clearance_;
   Cloud cloud_;
   std::unique_ptr<Tree> tree_;
 };
@@ -194,8 +289,9 @@ TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double
   // Steps 1.5–1.6: nearest point of c_3D and the area-weighted mean residual angle.
   fit.targets.resize(normals.size());
   double weighted = 0;
+  int hint = -1;  // successive samples are usually neighbours (see GaussModel::project)
   for (size_t i = 0; i < normals.size(); ++i) {
-    fit.targets[i] = fit.model->project(normals[i]);
+    fit.targets[i] = fit.model->project(normals[i], hint);
     if (areas[i] > 0)
       weighted += areas[i] * std::atan2(normals[i].cross(fit.targets[i]).norm(),
                                         normals[i].dot(fit.targets[i]));

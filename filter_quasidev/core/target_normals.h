@@ -17,7 +17,14 @@ class GaussModel {
   virtual ~GaussModel() = default;
   // Nearest point of the model to the unit vector n (angular distance), refined below
   // the sampling step of the curve. Result is a unit vector.
-  virtual Vec3 project(const Vec3& n) const = 0;
+  Vec3 project(const Vec3& n) const {
+    int hint = -1;
+    return project(n, hint);
+  }
+  // The same, with the search starting from `hint`: -1, or the value a projection of a nearby
+  // vector left in it (projecting the normals of neighbouring faces one after another spares
+  // the global search). The result does not depend on the hint.
+  virtual Vec3 project(const Vec3& n, int& hint) const = 0;
   // "curve", "closed curve" or "plane".
   virtual std::string kind() const = 0;
 };

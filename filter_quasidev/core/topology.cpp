@@ -1,35 +1,12 @@
-// Boundary, seam and used vertices, non-manifold edges and vertices, from one sort of the
-// mesh's half-edges (O(n log n)).
+// Boundary, seam and used vertices, non-manifold edges and vertices, misoriented edges, from
+// the mesh's face edges sorted in linear time.
 #include "topology.h"
 
-#include <algorithm>
 #include <numeric>
 
 namespace qd {
 
 namespace {
-
-struct HalfEdge {
-  int lo, hi;  // undirected edge, lo < hi
-  int face;
-  bool operator<(const HalfEdge& o) const {
-    return lo != o.lo ? lo < o.lo : hi != o.hi ? hi < o.hi : face < o.face;
-  }
-};
-
-std::vector<HalfEdge> sorted_half_edges(const Triangles& F) {
-  std::vector<HalfEdge> edges;
-  edges.reserve(3 * static_cast<size_t>(F.rows()));
-  for (int f = 0; f < F.rows(); ++f) {
-    for (int k = 0; k < 3; ++k) {
-      const int a = F(f, k);
-      const int b = F(f, (k + 1) % 3);
-      edges.push_back({std::min(a, b), std::max(a, b), f});
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  return edges;
-}
 
 // Union-find over face corners (3·f + k); corners of one vertex end up in one set per fan.
 class Corners {
@@ -55,6 +32,15 @@ int corner_of(const Triangles& F, int f, int v) {
     if (F(f, k) == v) return 3 * f + k;
   return -1;
 }
+
+// Face f runs along its edge {a, b} from a to b.
+bool runs_forward(const Triangles& F, int f, int a, int b) {
+  for (int k = 0; k < 3; ++k)
+    if (F(f, k) == a) return F(f, (k + 1) % 3) == b;
+  return false;
+}
+
+int patch_of(const std::vector<int>& patch, int f) { return patch.empty() ? 0 : patch[f]; }
 
 void mark_seams(const Triangles& F, const std::vector<int>& patch, Topology& t) {
   if (patch.empty()) return;
@@ -86,12 +72,12 @@ Topology analyse_topology(const Triangles& F, int vertex_count, const std::vecto
   mark_seams(F, patch, t);
 
   // Edges: faces per undirected edge; fans joined across every shared edge.
-  const std::vector<HalfEdge> edges = sorted_half_edges(F);
+  const std::vector<FaceEdge> edges = sorted_face_edges(F, vertex_count);
   Corners corners(3 * static_cast<size_t>(F.rows()));
   for (size_t i = 0; i < edges.size();) {
     size_t j = i + 1;
     while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;
-    const HalfEdge& e = edges[i];
+    const FaceEdge& e = edges[i];
     const size_t faces = j - i;
     if (faces == 1) {
       t.boundary[e.lo] = 1;
@@ -99,6 +85,17 @@ Topology analyse_topology(const Triangles& F, int vertex_count, const std::vecto
     } else if (faces > 2 && t.nonmanifold_edges++ == 0) {
       t.first_nonmanifold_edge[0] = e.lo;
       t.first_nonmanifold_edge[1] = e.hi;
+    } else if (faces == 2) {
+      const int f = e.face, g = edges[i + 1].face;
+      const bool forward = runs_forward(F, f, e.lo, e.hi);
+      if (patch_of(patch, f) == patch_of(patch, g) && forward == runs_forward(F, g, e.lo, e.hi) &&
+          t.misoriented_edges++ == 0) {
+        t.first_misoriented_edge[0] = forward ? e.lo : e.hi;
+        t.first_misoriented_edge[1] = forward ? e.hi : e.lo;
+        t.first_misoriented_faces[0] = f;
+        t.first_misoriented_faces[1] = g;
+        t.first_misoriented_patch = patch_of(patch, f);
+      }
     }
     for (size_t m = i + 1; m < j; ++m) {
       corners.join(corner_of(F, edges[m].face, e.lo), corner_of(F, e.face, e.lo));

@@ -1,4 +1,4 @@
-// Combinatorial facts about the mesh: boundary, seams, used vertices, manifoldness.
+// Combinatorial facts about the mesh: boundary, seams, used vertices, manifoldness, orientation.
 #pragma once
 
 #include <vector>
@@ -15,6 +15,10 @@ struct Topology {
   int nonmanifold_vertices = 0;     // vertices whose face fan is not one connected fan
   int first_nonmanifold_edge[2] = {-1, -1};  // an example, for messages
   int first_nonmanifold_vertex = -1;
+  int misoriented_edges = 0;        // edges along which two faces of one patch run the same way
+  int first_misoriented_edge[2] = {-1, -1};   // an example (from, to), its faces and patch
+  int first_misoriented_faces[2] = {-1, -1};
+  int first_misoriented_patch = 0;
 };
 
 // patch: patch id per face (empty = one patch). Face indices must lie in [0, vertex_count)

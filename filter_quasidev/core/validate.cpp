@@ -2,12 +2,10 @@
 // with one line saying what is wrong and what to do. All checks are O(n log n).
 #include "validate.h"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <sstream>
 #include <string>
-#include <tuple>
 
 #include "error.h"
 
@@ -142,34 +140,15 @@ void check_patch_sizes(const Triangles& F, const std::vector<int>& patch) {
                 " faces; merge small patches into their neighbours.");
 }
 
-// Two faces of one patch that run along their shared edge in the same direction are
-// oppositely oriented: sort the directed edges and look for repeats within a patch.
-void check_orientation(const Triangles& F, const std::vector<int>& patch) {
-  struct Directed {
-    int from, to, patch, face;
-  };
-  std::vector<Directed> edges;
-  edges.reserve(3 * static_cast<size_t>(F.rows()));
-  for (int f = 0; f < F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) edges.push_back({F(f, k), F(f, (k + 1) % 3), patch_of(patch, f), f});
-  const auto key = [](const Directed& e) { return std::tie(e.from, e.to, e.patch); };
-  std::sort(edges.begin(), edges.end(),
-            [&](const Directed& x, const Directed& y) { return key(x) < key(y); });
-  int bad = 0;
-  size_t first = 0;
-  for (size_t i = 1; i < edges.size(); ++i) {
-    if (key(edges[i]) != key(edges[i - 1])) continue;
-    if (bad++ == 0) first = i;
-  }
-  if (bad > 0) {
-    const Directed& e = edges[first];
-    const int f1 = std::min(e.face, edges[first - 1].face);
-    const int f2 = std::max(e.face, edges[first - 1].face);
-    throw Error("Patch " + str(e.patch) + " is not consistently oriented (faces " + str(f1) +
-                " and " + str(f2) + " run along edge " + str(e.from) + "-" + str(e.to) +
-                " the same way; " + count(bad, "such edge", "such edges") + "): fix it first (MeshLab: Filters > Normals, Curvatures and "
-                "Orientation > Re-Orient all faces coherently).");
-  }
+void check_orientation(const Topology& t) {
+  if (t.misoriented_edges > 0)
+    throw Error("Patch " + str(t.first_misoriented_patch) + " is not consistently oriented (faces " +
+                str(t.first_misoriented_faces[0]) + " and " + str(t.first_misoriented_faces[1]) +
+                " run along edge " + str(t.first_misoriented_edge[0]) + "-" +
+                str(t.first_misoriented_edge[1]) + " the same way; " +
+                count(t.misoriented_edges, "such edge", "such edges") +
+                "): fix it first (MeshLab: Filters > Normals, Curvatures and Orientation > "
+                "Re-Orient all faces coherently).");
 }
 
 void check_free_vertices(const Problem& p, const Topology& t) {
@@ -204,7 +183,7 @@ Topology validate(const Problem& problem) {
   Topology topology = analyse_topology(problem.F, static_cast<int>(problem.V.rows()), problem.patch);
   check_manifold(topology);
   check_patch_sizes(problem.F, problem.patch);
-  check_orientation(problem.F, problem.patch);
+  check_orientation(topology);
   check_free_vertices(problem, topology);
   return topology;
 }

@@ -38,9 +38,9 @@ TEST(Metrics, CubeCornerDefectAndCurvature) {
   cube_corner(V, F);
   // Three right angles: defect 2π − 3π/2 = π/2. Each right isosceles face gives the corner
   // 1/8·(1·cot 45° + 1·cot 45°) = 1/4, so A = 3/4 and K = (π/2)/(3/4).
-  EXPECT_NEAR(qd::angle_defects(V, F)[0], kPi / 2, 1e-12);
-  EXPECT_NEAR(qd::mixed_areas(V, F)[0], 0.75, 1e-12);
-  const std::vector<double> k = qd::gaussian_curvature(V, F, only(0, 4));
+  EXPECT_NEAR(qd::vertex_angles(V, F).defect[0], kPi / 2, 1e-12);
+  EXPECT_NEAR(qd::vertex_angles(V, F).area[0], 0.75, 1e-12);
+  const std::vector<double> k = qd::gaussian_curvature(qd::vertex_angles(V, F), only(0, 4));
   EXPECT_NEAR(k[0], 2 * kPi / 3, 1e-12);
   EXPECT_EQ(k[1], 0.0);  // not flagged interior
 }
@@ -55,32 +55,32 @@ TEST(Metrics, FanWithObtuseFaces) {
   // Mixed area: 1/4 from the right face; the two obtuse faces (area ½·1·2·sin 120° = √3/2)
   // give their obtuse corner half their area each.
   const double area = 0.25 + std::sqrt(3.0) / 2;
-  EXPECT_NEAR(qd::angle_defects(V, F)[0], kPi / 6, 1e-12);
-  EXPECT_NEAR(qd::mixed_areas(V, F)[0], area, 1e-12);
-  EXPECT_NEAR(qd::gaussian_curvature(V, F, only(0, 4))[0], (kPi / 6) / area, 1e-12);
+  EXPECT_NEAR(qd::vertex_angles(V, F).defect[0], kPi / 6, 1e-12);
+  EXPECT_NEAR(qd::vertex_angles(V, F).area[0], area, 1e-12);
+  EXPECT_NEAR(qd::gaussian_curvature(qd::vertex_angles(V, F), only(0, 4))[0], (kPi / 6) / area, 1e-12);
   // W is an acute corner of both obtuse faces: a quarter of each.
-  EXPECT_NEAR(qd::mixed_areas(V, F)[3], std::sqrt(3.0) / 4, 1e-12);
+  EXPECT_NEAR(qd::vertex_angles(V, F).area[3], std::sqrt(3.0) / 4, 1e-12);
 }
 
 TEST(Metrics, MixedAreaRulesOnSingleTriangles) {
   const qd::Triangles F = one_face();
   qd::Positions obtuse(3, 3);
   obtuse << 0, 0, 0, 4, 0, 0, 2, 0.5, 0;  // area 1, obtuse at vertex 2
-  std::vector<double> a = qd::mixed_areas(obtuse, F);
+  std::vector<double> a = qd::vertex_angles(obtuse, F).area;
   EXPECT_NEAR(a[0], 0.25, 1e-14);
   EXPECT_NEAR(a[1], 0.25, 1e-14);
   EXPECT_NEAR(a[2], 0.5, 1e-14);
 
   qd::Positions right(3, 3);
   right << 0, 0, 0, 1, 0, 0, 0, 1, 0;  // right angle at 0: Voronoi rule, cot 90° = 0
-  a = qd::mixed_areas(right, F);
+  a = qd::vertex_angles(right, F).area;
   EXPECT_NEAR(a[0], 0.25, 1e-14);
   EXPECT_NEAR(a[1], 0.125, 1e-14);
   EXPECT_NEAR(a[2], 0.125, 1e-14);
 
   qd::Positions equilateral(3, 3);
   equilateral << 0, 0, 0, 1, 0, 0, 0.5, std::sqrt(3.0) / 2, 0;
-  a = qd::mixed_areas(equilateral, F);
+  a = qd::vertex_angles(equilateral, F).area;
   for (int v = 0; v < 3; ++v) EXPECT_NEAR(a[v], std::sqrt(3.0) / 12, 1e-14);
 }
 
@@ -99,9 +99,9 @@ TEST(Metrics, HexagonalPyramidApexMatchesClosedForm) {
   const double beta = (kPi - theta) / 2;
   const double defect = 2 * kPi - 6 * theta;
   const double area = 6 * (L * L / std::tan(beta)) / 4;
-  EXPECT_NEAR(qd::angle_defects(V, F)[0], defect, 1e-12);
-  EXPECT_NEAR(qd::mixed_areas(V, F)[0], area, 1e-12);
-  EXPECT_NEAR(qd::gaussian_curvature(V, F, only(0, 7))[0], defect / area, 1e-12);
+  EXPECT_NEAR(qd::vertex_angles(V, F).defect[0], defect, 1e-12);
+  EXPECT_NEAR(qd::vertex_angles(V, F).area[0], area, 1e-12);
+  EXPECT_NEAR(qd::gaussian_curvature(qd::vertex_angles(V, F), only(0, 7))[0], defect / area, 1e-12);
 }
 
 // 5×5 grid in a tilted plane, inner vertices shifted within the plane.
@@ -139,8 +139,8 @@ TEST(Metrics, FlatGridHasNoCurvatureInside) {
     count += interior[v];
   }
   ASSERT_EQ(count, 9);
-  const std::vector<double> k = qd::gaussian_curvature(V, F, interior);
-  const std::vector<double> defect = qd::angle_defects(V, F);
+  const std::vector<double> k = qd::gaussian_curvature(qd::vertex_angles(V, F), interior);
+  const std::vector<double> defect = qd::vertex_angles(V, F).defect;
   for (int v = 0; v < 25; ++v) {
     if (!interior[v]) continue;
     EXPECT_NEAR(defect[v], 0.0, 1e-12) << v;
@@ -148,7 +148,7 @@ TEST(Metrics, FlatGridHasNoCurvatureInside) {
   }
   // Mixed areas tile the surface: they add up to the total area (16).
   double total = 0;
-  for (const double a : qd::mixed_areas(V, F)) total += a;
+  for (const double a : qd::vertex_angles(V, F).area) total += a;
   EXPECT_NEAR(total, 16.0, 1e-12);
 }
 
@@ -194,10 +194,10 @@ TEST(Metrics, MeasureCombinesFigures) {
   const std::vector<qd::Vec3> targets = {qd::Vec3(0, 0, 1), qd::Vec3(1, 0, 0), qd::Vec3(0, 1, 0)};
   const qd::Figures fig = qd::measure(V0, V, F, {0}, {0, 1, 2}, targets, {1, 2, 3});
 
-  const double k = qd::gaussian_curvature(V, F, only(0, 4))[0];
+  const double k = qd::gaussian_curvature(qd::vertex_angles(V, F), only(0, 4))[0];
   EXPECT_NEAR(fig.g_abd, std::abs(k), 1e-12);
   EXPECT_NEAR(fig.max_abs_k, std::abs(k), 1e-12);
-  EXPECT_NEAR(fig.angle_defect, std::abs(qd::angle_defects(V, F)[0]), 1e-12);
+  EXPECT_NEAR(fig.angle_defect, std::abs(qd::vertex_angles(V, F).defect[0]), 1e-12);
   EXPECT_NEAR(fig.obd, qd::orientation_developability(V, F, {0, 1, 2}, targets), 1e-12);
   EXPECT_GT(fig.obd, 0.0);
   EXPECT_NEAR(fig.shape, qd::shape_difference(V0, V, F, {0, 1, 2}), 1e-12);
