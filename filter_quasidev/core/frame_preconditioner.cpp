@@ -7,7 +7,7 @@
 namespace qd {
 
 FramePreconditioner::FramePreconditioner(const BlockPattern& pattern, SolverKind solver, int threads)
-    : pattern_(pattern), threads_(static_cast<size_t>(threads)), normal_(solver), tangent_(solver) {
+    : pattern_(pattern), threads_(static_cast<size_t>(threads)), normal_(solver, true), tangent_(solver, true) {
   // The scalar pattern: per column k the diagonal, then the block rows of the column's slots.
   const int n = pattern_.blocks();
   const int entries = n + static_cast<int>(pattern_.block_row.size());

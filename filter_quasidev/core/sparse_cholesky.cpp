@@ -36,17 +36,30 @@ using Matrix = Eigen::SparseMatrix<double>;
 using Natural = Eigen::NaturalOrdering<int>;
 
 #ifdef QD_WITH_CHOLMOD
-struct CholmodBackend : EigenApiBackend<Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower>> {
-  CholmodBackend() {
+// Eigen's supernodal wrapper, with access to its factor.
+struct Supernodal : Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> {
+  // Converts the factor to simplicial form (same values, columns stored one by one).
+  bool to_simplicial() { return cholmod_change_factor(CHOLMOD_REAL, 1, 0, 1, 1, m_cholmodFactor, &cholmod()); }
+};
+
+struct CholmodBackend : EigenApiBackend<Supernodal> {
+  bool simplicial_solves;
+  bool converted = false;  // the factor is simplicial: the next factorisation analyses again
+  explicit CholmodBackend(bool simplicial) : simplicial_solves(simplicial) {
     cholmod_common& c = solver.cholmod();
     c.nmethods = 1;  // the given (already fill-reducing) order, no AMD/METIS trials
     c.method[0].ordering = CHOLMOD_NATURAL;
     c.postorder = 1;
   }
+  bool analyse_and_factorize(const Eigen::SparseMatrix<double>& M, bool analyse) override {
+    bool ok = EigenApiBackend<Supernodal>::analyse_and_factorize(M, analyse || converted);
+    if (ok && simplicial_solves) ok = converted = solver.to_simplicial();
+    return ok;
+  }
 };
 #endif
 
-std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unknowns) {
+std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unknowns, [[maybe_unused]] bool simplicial_solves) {
   if (kind == SolverKind::Auto)
     kind = unknowns < kCholmodFromUnknowns || !kHaveCholmod ? SolverKind::EigenLDLT : SolverKind::Cholmod;
   switch (kind) {
@@ -59,7 +72,7 @@ std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unkn
       break;
   }
 #ifdef QD_WITH_CHOLMOD
-  return std::make_unique<CholmodBackend>();
+  return std::make_unique<CholmodBackend>(simplicial_solves);
 #else
   throw Error("this build of the engine has no CHOLMOD: choose the eigen-llt or eigen-ldlt solver");
 #endif
@@ -67,11 +80,11 @@ std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unkn
 
 }  // namespace
 
-SparseCholesky::SparseCholesky(SolverKind kind) : kind_(kind) {}
+SparseCholesky::SparseCholesky(SolverKind kind, bool many_solves) : kind_(kind), many_solves_(many_solves) {}
 SparseCholesky::~SparseCholesky() = default;
 
 void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& M) {
-  if (!backend_) backend_ = make_backend(kind_, M.rows());
+  if (!backend_) backend_ = make_backend(kind_, M.rows(), many_solves_);
   const bool ok = backend_->analyse_and_factorize(M, factorizations_ == 0);
   ++factorizations_;
   if (!ok)
