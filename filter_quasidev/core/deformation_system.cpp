@@ -141,7 +141,6 @@ void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
     }
   });
   factor_current_ = false;
-  preconditioner_current_ = false;
 }
 
 Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
@@ -202,7 +201,7 @@ void DeformationSystem::build_preconditioner() {
     }
   if (!preconditioner_) preconditioner_ = std::make_unique<FramePreconditioner>(pattern_, solver_, threads_);
   preconditioner_->build(M_, normals);
-  preconditioner_current_ = true;
+  scalar_factorizations_ = preconditioner_->factorizations();
 }
 
 Eigen::VectorXd DeformationSystem::solve_iteratively(const Eigen::VectorXd& b, const Positions& ref) {
@@ -212,17 +211,16 @@ Eigen::VectorXd DeformationSystem::solve_iteratively(const Eigen::VectorXd& b, c
   };
   const auto precondition = [this](const Eigen::VectorXd& r) { return preconditioner_->apply(r); };
   if (!preconditioner_) build_preconditioner();
-  for (;;) {
-    CgOutcome cg;
-    {
-      StageTimer timer(times_.solve);
-      cg = conjugate_gradients(multiply, precondition, b, x, kCgTolerance, kCgIterations);
-    }
-    times_.cg_iterations += cg.iterations;
-    if (cg.converged) return x;
-    if (preconditioner_current_) return solve_directly(b);  // a fresh one did not do: factorise M
-    build_preconditioner();
+  CgOutcome cg;
+  {
+    StageTimer timer(times_.solve);
+    cg = conjugate_gradients(multiply, precondition, b, x, kCgTolerance, kCgIterations);
   }
+  times_.cg_iterations += cg.iterations;
+  if (cg.converged) return x;
+  iterative_ = false;  // the frames do not fit this group's targets: factorise M from now on
+  preconditioner_.reset();
+  return solve_directly(b);
 }
 
 Positions DeformationSystem::solve(const Positions& ref) {
@@ -234,8 +232,7 @@ Positions DeformationSystem::solve(const Positions& ref) {
   }
   const Eigen::VectorXd x = iterative_ ? solve_iteratively(b, ref) : solve_directly(b);
   ++times_.solves;
-  times_.factorizations =
-      cholesky_.factorizations() + (preconditioner_ ? preconditioner_->factorizations() : 0);
+  times_.factorizations = cholesky_.factorizations() + scalar_factorizations_;
   Positions out = ref;
   for (size_t v = 0; v < unknown_.size(); ++v)
     if (unknown_[v] >= 0) out.row(static_cast<Eigen::Index>(v)) = x.segment<3>(3 * unknown_[v]).transpose();
