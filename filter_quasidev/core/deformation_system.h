@@ -43,7 +43,7 @@
 
 namespace qd {
 
-constexpr long kIterativeFromUnknowns = 15000;  // SolveMethod::Auto: CG from here on (measured)
+constexpr long kIterativeFromUnknowns = 10000;  // SolveMethod::Auto: CG from here on (measured)
 constexpr double kCgTolerance = 1e-5;
 constexpr int kCgIterations = 40;
 
