@@ -27,8 +27,9 @@
 // solution to that tolerance. The preconditioner is built once and kept while the targets
 // move. CG converges in 4–5 iterations on a smooth 1M-triangle sheet, in 15–35 on coarse ones;
 // where the targets stray far from the surface's normals (draped garments: 165) it is slower
-// than factorising, so a solve that has not converged in kCgIterations factorises M instead,
-// and so do the group's later solves.
+// than factorising, so a solve that CG gives up on (conjugate_gradients.h: too slow after
+// kCgPatience iterations, or not done in kCgIterations) factorises M instead, and so do the
+// group's later solves.
 #pragma once
 
 #include <Eigen/SparseCore>

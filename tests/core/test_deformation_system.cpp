@@ -7,6 +7,7 @@
 #include <random>
 
 #include "anchor_weights.h"
+#include "conjugate_gradients.h"
 #include "deformation_system.h"
 #include "group_mesh.h"
 #include "mesh.h"
@@ -174,17 +175,19 @@ TEST_P(EverySolver, IterativeSolveIsTheMinimiserToItsTolerance) {
   EXPECT_LT(energy(x - exact), 10 * kCgTolerance * energy(exact - x0));
 }
 
-// Targets at random to the faces defeat the frames: CG gives up after kCgIterations and M is
-// factorised, so the solve is still the minimiser.
+// Targets at random to the faces defeat the frames: CG sees it is too slow and gives up early,
+// M is factorised, so the solve is still the minimiser.
 TEST_P(EverySolver, IterativeSolveFactorisesWhenCgStalls) {
   Both b(30.0, 10.0, 0.4, GetParam(), SolveMethod::Iterative);
   auto& [s, sys, A, c] = b;
   const Eigen::VectorXd exact = A.colPivHouseholderQr().solve(c);
   EXPECT_LT((b.free_vector(sys.solve(s.ref)) - exact).cwiseAbs().maxCoeff(), 1e-8);
-  EXPECT_EQ(sys.times().cg_iterations, kCgIterations);
+  const int tried = sys.times().cg_iterations;
+  EXPECT_GE(tried, kCgPatience);
+  EXPECT_LT(tried, kCgIterations) << "gave up before the last allowed iteration";
   EXPECT_EQ(sys.times().factorizations, 3) << "two scalar factors, then M";
   sys.solve(s.ref);
-  EXPECT_EQ(sys.times().cg_iterations, kCgIterations) << "later solves factorise directly";
+  EXPECT_EQ(sys.times().cg_iterations, tried) << "later solves factorise directly";
 }
 
 INSTANTIATE_TEST_SUITE_P(Solvers, EverySolver,
