@@ -28,4 +28,21 @@ BlockPattern lower_pattern(int nodes, const std::vector<std::pair<int, int>>& ed
   return p;
 }
 
+Eigen::SparseMatrix<double> scalar_lower(const BlockPattern& p) {
+  const int n = p.blocks();
+  const int entries = n + static_cast<int>(p.block_row.size());
+  Eigen::SparseMatrix<double> K(n, n);
+  K.resizeNonZeros(entries);
+  int* outer = K.outerIndexPtr();
+  int* inner = K.innerIndexPtr();
+  for (int k = 0; k < n; ++k) {
+    outer[k] = k + p.begin(k);
+    inner[outer[k]] = k;
+    for (int s = p.begin(k); s < p.end(k); ++s) inner[outer[k] + 1 + s - p.begin(k)] = p.row(s);
+  }
+  outer[n] = entries;
+  std::fill(K.valuePtr(), K.valuePtr() + entries, 0.0);
+  return K;
+}
+
 }  // namespace qd

@@ -4,6 +4,7 @@
 // entry's place in M's values follows from the block's slot alone.
 #pragma once
 
+#include <Eigen/SparseCore>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -23,6 +24,10 @@ struct BlockPattern {
 // The pattern of a graph with `nodes` nodes and the given edges (either orientation, repeats
 // and self loops allowed): per node c its neighbours r > c. Counting sort, O(nodes + edges).
 BlockPattern lower_pattern(int nodes, const std::vector<std::pair<int, int>>& edges);
+
+// The n×n lower-triangular matrix of the pattern, diagonal included (per column: the diagonal,
+// then the neighbours below it), every value 0.
+Eigen::SparseMatrix<double> scalar_lower(const BlockPattern& p);
 
 // Offset of entry (i, j), i ≥ j, of the diagonal block in column 3k+j of M's values.
 inline int diagonal_entry(const int* outer, int k, int i, int j) { return outer[3 * k + j] + (i - j); }

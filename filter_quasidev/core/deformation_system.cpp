@@ -31,7 +31,8 @@ constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 }  // namespace
 
 DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& params, double ae)
-    : g_(group), w_(params.weight), solver_(params.solver), threads_(params.threads), cholesky_(params.solver) {
+    : g_(group), w_(params.weight), incident_(group.F, group.V0.rows()), solver_(params.solver),
+      threads_(params.threads), cholesky_(params.solver) {
   const size_t n = g_.fixed.size();
   std::vector<int> free_index(n, -1);
   int free_count = 0;
@@ -46,8 +47,12 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
     }
   const std::vector<int> rank = fill_reducing_rank(free_count, edges);
   unknown_.assign(n, -1);
+  block_vertex_.resize(static_cast<size_t>(free_count));
   for (size_t v = 0; v < n; ++v)
-    if (free_index[v] >= 0) unknown_[v] = rank[static_cast<size_t>(free_index[v])];
+    if (free_index[v] >= 0) {
+      unknown_[v] = rank[static_cast<size_t>(free_index[v])];
+      block_vertex_[static_cast<size_t>(unknown_[v])] = static_cast<int>(v);
+    }
   blocks_ = free_count;
   iterative_ = params.method == SolveMethod::Iterative ||
                (params.method == SolveMethod::Auto && 3L * blocks_ >= kIterativeFromUnknowns);
@@ -93,18 +98,6 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
         for (int i = 0; i < 3; ++i) inner[at++] = 3 * pattern_.row(s) + i;
     }
   outer[size] = at;
-
-  corner_start_.assign(static_cast<size_t>(blocks_) + 1, 0);
-  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
-    for (int p = 0; p < 3; ++p)
-      if (const int k = unknown_[static_cast<size_t>(g_.F(f, p))]; k >= 0) ++corner_start_[static_cast<size_t>(k) + 1];
-  for (size_t k = 0; k < static_cast<size_t>(blocks_); ++k) corner_start_[k + 1] += corner_start_[k];
-  corner_.resize(static_cast<size_t>(corner_start_.back()));
-  std::vector<int> next(corner_start_.begin(), corner_start_.end() - 1);
-  for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
-    for (int p = 0; p < 3; ++p)
-      if (const int k = unknown_[static_cast<size_t>(g_.F(f, p))]; k >= 0)
-        corner_[static_cast<size_t>(next[static_cast<size_t>(k)]++)] = static_cast<int>(3 * f + p);
 }
 
 // Each block column is summed by the thread that owns it, from the corners of its vertex: its
@@ -120,8 +113,11 @@ void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
     for (int k = static_cast<int>(first); k < static_cast<int>(last); ++k) {
       std::fill(value + outer[3 * k], value + outer[3 * k + 3], 0.0);
       Eigen::Matrix3d diagonal = anchor2_[static_cast<size_t>(k)] * Eigen::Matrix3d::Identity();
-      for (int c = corner_start_[static_cast<size_t>(k)]; c < corner_start_[static_cast<size_t>(k) + 1]; ++c) {
-        const int f = corner_[static_cast<size_t>(c)] / 3, p = corner_[static_cast<size_t>(c)] % 3;
+      const int v = block_vertex_[static_cast<size_t>(k)];
+      for (int c = incident_.start[static_cast<size_t>(v)]; c < incident_.start[static_cast<size_t>(v) + 1]; ++c) {
+        const int f = incident_.faces[static_cast<size_t>(c)];
+        if (f >= g_.solve_faces) continue;  // a ring face: measured, not solved
+        const int p = g_.F(f, 0) == v ? 0 : g_.F(f, 1) == v ? 1 : 2;
         const Vec3& n = targets_[static_cast<size_t>(f)];
         const Eigen::Matrix3d N = w_ * w_ * n * n.transpose();
         diagonal += corner_block(L, N, p, p);

@@ -79,13 +79,13 @@ class DeformationSystem {
 
   const GroupMesh& g_;
   double w_;
+  VertexFaces incident_;            // faces of each local vertex, ascending
+  std::vector<int> block_vertex_;   // local vertex of each unknown block
   std::vector<double> anchor2_;  // α²·w(v)² per unknown block
   std::vector<int> unknown_;
   int blocks_ = 0;
   BlockPattern pattern_;
   std::vector<int> face_slot_;     // per face and corner pair (0,1),(0,2),(1,2): off-diag block
-  std::vector<int> corner_start_;  // corners of block k's vertex: corner_[start[k] .. start[k+1])
-  std::vector<int> corner_;        // as 3·face + corner, faces ascending
   std::vector<Vec3> targets_;
   Eigen::SparseMatrix<double> M_;
   SolverKind solver_;

@@ -7,22 +7,8 @@
 namespace qd {
 
 FramePreconditioner::FramePreconditioner(const BlockPattern& pattern, SolverKind solver, int threads)
-    : pattern_(pattern), threads_(static_cast<size_t>(threads)), normal_(solver, true), tangent_(solver, true) {
-  // The scalar pattern: per column k the diagonal, then the block rows of the column's slots.
-  const int n = pattern_.blocks();
-  const int entries = n + static_cast<int>(pattern_.block_row.size());
-  K_n_.resize(n, n);
-  K_n_.resizeNonZeros(entries);
-  int* outer = K_n_.outerIndexPtr();
-  int* inner = K_n_.innerIndexPtr();
-  for (int k = 0; k < n; ++k) {
-    outer[k] = k + pattern_.begin(k);
-    inner[outer[k]] = k;
-    for (int s = pattern_.begin(k); s < pattern_.end(k); ++s) inner[outer[k] + 1 + s - pattern_.begin(k)] = pattern_.row(s);
-  }
-  outer[n] = entries;
-  K_t_ = K_n_;
-}
+    : pattern_(pattern), threads_(static_cast<size_t>(threads)), K_n_(scalar_lower(pattern)), K_t_(K_n_),
+      normal_(solver, true), tangent_(solver, true) {}
 
 void FramePreconditioner::set_frames(const std::vector<Vec3>& normals) {
   frame_.resize(normals.size());

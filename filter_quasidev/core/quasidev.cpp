@@ -11,6 +11,7 @@
 #include <memory>
 #include <numeric>
 #include <thread>
+#include <unordered_set>
 
 #include "deformer.h"
 #include "error.h"
@@ -312,12 +313,12 @@ Result approximate(const Problem& problem, const Progress& progress) {
       const int id = ids[k];
       const std::vector<int>& faces = faces_of_patch.at(id);
       std::vector<int> vertices, owned;  // in the order the faces reach them
-      std::vector<char> seen(nv, 0);
+      std::unordered_set<int> seen;       // not a flag per mesh vertex: patches × vertices
+      seen.reserve(3 * faces.size());
       for (int f : faces)
         for (int c = 0; c < 3; ++c) {
           const auto v = static_cast<size_t>(F(f, c));
-          if (seen[v]) continue;
-          seen[v] = 1;
+          if (!seen.insert(static_cast<int>(v)).second) continue;
           vertices.push_back(static_cast<int>(v));
           if (interior[v]) owned.push_back(static_cast<int>(v));
         }
