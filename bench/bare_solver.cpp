@@ -56,9 +56,9 @@ std::vector<BareGroup> bare_solver_times(const Problem& problem, int runs) {
     direct.method = SolveMethod::Direct;
     DeformationSystem system(g, direct, ae);
     try {
-      system.set_targets(fit_targets(normals, areas).targets);
+      system.set_rows(fit_targets(normals, areas).targets);
     } catch (const Error&) {  // no curve fits: the engine keeps the face normals, so do we
-      system.set_targets(normals);
+      system.set_rows(normals);
     }
     const Eigen::VectorXd b = system.rhs(g.V0);
     BareGroup bare;

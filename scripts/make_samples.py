@@ -197,6 +197,20 @@ def make_selected() -> tuple[PlyData, str]:
     return mesh_ply(pts, faces, leg_patch(n_around, n_along), ["selected: " + what], flags), what
 
 
+def make_draped() -> tuple[PlyData, str]:
+    """The trouser leg draped: 16 small bumps and dents (sigma 0.07) wrinkle every patch in two
+    directions, so its Gauss image is a blob, not a curve (the angle-defect term's case)."""
+    n_around, n_along = 48, 60
+    bumps = [((2 * k + 1) / 8 + 0.05 * (j % 2), (2 * j + 1) / 8, 0.12 * (-1) ** (k + j))
+             for k in range(4) for j in range(4)]
+    pts = sample_grid(with_bumps(leg_surface, bumps, 0.07), n_around, n_along)
+    what = ("the trouser leg of patches.ply wrinkled like draped cloth: 16 bumps and dents "
+            "(amplitude 0.12, sigma 0.07) in a 4 x 4 grid, 4 patches whose Gauss images are blobs, "
+            "not curves (fit residual above 5 degrees)")
+    return mesh_ply(pts, tube_faces(n_around, n_along), leg_patch(n_around, n_along),
+                    ["draped_panels: " + what]), what
+
+
 def samples() -> list[tuple[str, PlyData, str]]:
     cyl, cyl_what = bumpy("bumpy_cylinder", revolution(lambda _u, _v: 1.0, 2.0), "open cylinder, radius 1, height 2",
                           96, 32, 0.05, 0.18)
@@ -206,7 +220,8 @@ def samples() -> list[tuple[str, PlyData, str]]:
             ("bumpy_cylinder.ply", cyl, cyl_what),
             ("bumpy_cone.ply", cone, cone_what),
             ("patches.ply", *make_patches()),
-            ("selected.ply", *make_selected())]
+            ("selected.ply", *make_selected()),
+            ("draped_panels.ply", *make_draped())]
 
 
 def sources_md(entries: list[tuple[str, PlyData, str]]) -> str:

@@ -88,6 +88,14 @@ const std::map<std::string, Setter>& valued_options() {
       {"--max-iter", [](Options& o, const std::string& v) { o.params.max_iter = whole_number("--max-iter", v, 1, 100000, "1"); }},
       {"--weight", [](Options& o, const std::string& v) { o.params.weight = positive("--weight", v); }},
       {"--anchor", [](Options& o, const std::string& v) { o.params.anchor = non_negative("--anchor", v); }},
+      {"--developability",
+       [](Options& o, const std::string& v) {
+         o.params.developability = choice<Developability>(
+             "--developability", v,
+             {{"curve", Developability::Curve}, {"defect", Developability::Defect},
+              {"both", Developability::Both}, {"auto", Developability::Auto}});
+       }},
+      {"--defect-weight", [](Options& o, const std::string& v) { o.params.defect_weight = positive("--defect-weight", v); }},
       {"--seams",
        [](Options& o, const std::string& v) {
          o.params.seams = choice<SeamMode>("--seams", v, {{"fixed", SeamMode::Fixed}, {"free", SeamMode::Free}});
@@ -223,6 +231,12 @@ std::string help_text() {
     << d.stop_obd << ")\n"
     << "  --weight W             w of Eq. (8): developability rows vs shape rows (default " << d.weight << ")\n"
     << "  --anchor A             weight of the soft anchor rows (Eq. 15) (default " << d.anchor << ")\n"
+    << "  --developability D     developability rows per patch: curve (the paper's target\n"
+       "                         normals on the Gauss-image curve), defect (Gauss-Newton rows\n"
+       "                         on the angle defects; beyond the paper, for draped panels),\n"
+       "                         both, or auto (curve up to a fit residual of 5 degrees, else\n"
+       "                         defect; beyond the paper) (default auto)\n"
+    << "  --defect-weight W      w_d of the angle-defect rows, scale-invariant (default " << d.defect_weight << ")\n"
     << "  --targets T            target normals: fixed (computed once, paper), reproject\n"
        "                         (re-projected onto the fitted curve each iteration) or refit\n"
        "                         (curve re-fitted each iteration) (default "

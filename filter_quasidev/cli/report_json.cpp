@@ -53,6 +53,8 @@ void write_patch(JsonWriter& j, const PatchReport& p, double average_edge) {
   j.value("tolerance", p.tolerance);
   j.value("tolerance_ae", average_edge > 0 ? p.tolerance / average_edge : 0.0);
   j.value("target_kind", p.target_kind);
+  j.value("developability", p.developability);
+  j.value("developability_reason", p.developability_reason);
   j.value("fit_residual_deg", p.fit_residual_deg);
   j.value("iterations", p.iterations);
   j.value("stop_reason", p.stop_reason);

@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <utility>
 
 #include "anchor_weights.h"
 #include "conjugate_gradients.h"
@@ -30,9 +31,11 @@ constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 
 }  // namespace
 
-DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& params, double ae)
-    : g_(group), w_(params.weight), incident_(group.F, group.V0.rows()), solver_(params.solver),
-      threads_(params.threads), cholesky_(params.solver) {
+DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& params, double ae,
+                                     DefectStars defects)
+    : g_(group), w_(params.weight), incident_(group.F, group.V0.rows()),
+      defects_(std::move(defects)), solver_(params.solver), threads_(params.threads),
+      cholesky_(params.solver) {
   const size_t n = g_.fixed.size();
   std::vector<int> free_index(n, -1);
   int free_count = 0;
@@ -45,6 +48,13 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
       const int b = free_index[static_cast<size_t>(g_.F(f, pq[1]))];
       if (a >= 0 && b >= 0) edges.emplace_back(a, b);
     }
+  for (size_t r = 0; r < defects_.vertex.size(); ++r)  // a defect row couples its whole star
+    for (int i = defects_.start[r]; i < defects_.start[r + 1]; ++i)
+      for (int j = i + 1; j < defects_.start[r + 1]; ++j) {
+        const int a = free_index[static_cast<size_t>(defects_.star[static_cast<size_t>(i)])];
+        const int b = free_index[static_cast<size_t>(defects_.star[static_cast<size_t>(j)])];
+        if (a >= 0 && b >= 0) edges.emplace_back(a, b);
+      }
   const std::vector<int> rank = fill_reducing_rank(free_count, edges);
   unknown_.assign(n, -1);
   block_vertex_.resize(static_cast<size_t>(free_count));
@@ -64,6 +74,26 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
   for (auto& edge : edges)  // now in unknown-block numbering
     edge = {rank[static_cast<size_t>(edge.first)], rank[static_cast<size_t>(edge.second)]};
   build_pattern(edges);
+  index_defect_entries();
+}
+
+// entry_row_ and, per unknown block, the defect star entries of its vertex (counting sort).
+void DeformationSystem::index_defect_entries() {
+  entry_row_.resize(defects_.star.size());
+  entry_start_.assign(static_cast<size_t>(blocks_) + 1, 0);
+  for (size_t r = 0; r < defects_.vertex.size(); ++r)
+    for (int i = defects_.start[r]; i < defects_.start[r + 1]; ++i) {
+      entry_row_[static_cast<size_t>(i)] = static_cast<int>(r);
+      const int k = unknown_[static_cast<size_t>(defects_.star[static_cast<size_t>(i)])];
+      if (k >= 0) ++entry_start_[static_cast<size_t>(k) + 1];
+    }
+  for (size_t k = 1; k < entry_start_.size(); ++k) entry_start_[k] += entry_start_[k - 1];
+  entries_.resize(static_cast<size_t>(entry_start_.back()));
+  std::vector<int> next(entry_start_.begin(), entry_start_.end() - 1);
+  for (size_t i = 0; i < defects_.star.size(); ++i) {
+    const int k = unknown_[static_cast<size_t>(defects_.star[i])];
+    if (k >= 0) entries_[static_cast<size_t>(next[static_cast<size_t>(k)]++)] = static_cast<int>(i);
+  }
 }
 
 // The lower-triangle pattern of M from the block edges (unknown block pairs of the faces): per
@@ -102,9 +132,11 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
 
 // Each block column is summed by the thread that owns it, from the corners of its vertex: its
 // diagonal block, and the off-diagonal blocks whose other vertex comes later in the order.
-void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
+void DeformationSystem::set_rows(const std::vector<Vec3>& targets,
+                                 const DefectLinearisation& defects) {
   StageTimer timer(times_.assembly);
   targets_ = targets;
+  linearised_ = defects;
   const Eigen::Matrix3d L = shape_block();
   double* value = M_.valuePtr();
   const int* outer = M_.outerIndexPtr();
@@ -132,11 +164,53 @@ void DeformationSystem::set_targets(const std::vector<Vec3>& targets) {
             for (int i = 0; i < 3; ++i) value[block_entry(outer, pattern_, k, s, i, j)] += B(i, j);
         }
       }
+      if (!linearised_.gradient.empty()) add_defect_rows(k, diagonal, value, outer);
       for (int j = 0; j < 3; ++j)
         for (int i = j; i < 3; ++i) value[diagonal_entry(outer, k, i, j)] = diagonal(i, j);
     }
   });
   factor_current_ = false;
+}
+
+// The defect rows' s²·∇K∇Kᵀ in block column k: the vertex u of k meets row r at one star
+// entry; block (b, u) of that row is s_r²·∇_b K·∇_u Kᵀ, kept for the blocks b ≥ k.
+void DeformationSystem::add_defect_rows(int k, Eigen::Matrix3d& diagonal, double* value,
+                                        const int* outer) const {
+  const auto rows = pattern_.block_row.begin();
+  for (int e = entry_start_[static_cast<size_t>(k)]; e < entry_start_[static_cast<size_t>(k) + 1]; ++e) {
+    const auto i = static_cast<size_t>(entries_[static_cast<size_t>(e)]);
+    const auto r = static_cast<size_t>(entry_row_[i]);
+    const double s2 = defects_.weight[r] * defects_.weight[r];
+    const Vec3& gu = linearised_.gradient[i];
+    diagonal += s2 * gu * gu.transpose();
+    for (int q = defects_.start[r]; q < defects_.start[r + 1]; ++q) {
+      const int b = unknown_[static_cast<size_t>(defects_.star[static_cast<size_t>(q)])];
+      if (b <= k) continue;  // the diagonal above, or a block of b's column
+      const int s = static_cast<int>(
+          std::lower_bound(rows + pattern_.begin(k), rows + pattern_.end(k), b) - rows);
+      const Eigen::Matrix3d B = s2 * linearised_.gradient[static_cast<size_t>(q)] * gu.transpose();
+      for (int j = 0; j < 3; ++j)
+        for (int ii = 0; ii < 3; ++ii) value[block_entry(outer, pattern_, k, s, ii, j)] += B(ii, j);
+    }
+  }
+}
+
+// The defect rows' right-hand side: s²·∇K·(∇K·x_ref − K) over the free star entries (the
+// fixed ones do not move, so their part of ∇K·Δx vanishes).
+void DeformationSystem::add_defect_rhs(const Positions& ref, Eigen::VectorXd& b) const {
+  for (size_t r = 0; r < defects_.vertex.size(); ++r) {
+    double c = -linearised_.defect[r];
+    for (int q = defects_.start[r]; q < defects_.start[r + 1]; ++q) {
+      const int v = defects_.star[static_cast<size_t>(q)];
+      if (unknown_[static_cast<size_t>(v)] >= 0)
+        c += linearised_.gradient[static_cast<size_t>(q)].dot(ref.row(v).transpose());
+    }
+    c *= defects_.weight[r] * defects_.weight[r];
+    for (int q = defects_.start[r]; q < defects_.start[r + 1]; ++q) {
+      const int k = unknown_[static_cast<size_t>(defects_.star[static_cast<size_t>(q)])];
+      if (k >= 0) b.segment<3>(3 * k) += c * linearised_.gradient[static_cast<size_t>(q)];
+    }
+  }
 }
 
 Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
@@ -164,6 +238,7 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
     if (unknown_[v] >= 0)
       b.segment<3>(3 * unknown_[v]) +=
           anchor2_[static_cast<size_t>(unknown_[v])] * g_.V0.row(static_cast<Eigen::Index>(v)).transpose();
+  if (!linearised_.gradient.empty()) add_defect_rhs(ref, b);
   return b;
 }
 
@@ -186,14 +261,16 @@ Eigen::VectorXd DeformationSystem::solve_directly(const Eigen::VectorXd& b) {
   return cholesky_.solve(b);
 }
 
-// The frames follow the targets: ν of a vertex is the mean target of its solved faces.
+// The frames follow the targets: ν of a vertex is the mean target of its solved faces (the
+// face's normal where it has no target, as in a defect patch).
 void DeformationSystem::build_preconditioner() {
   StageTimer timer(times_.factorization);
   std::vector<Vec3> normals(static_cast<size_t>(blocks_), Vec3::Zero());
   for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
     for (int c = 0; c < 3; ++c) {
       const int k = unknown_[static_cast<size_t>(g_.F(f, c))];
-      if (k >= 0) normals[static_cast<size_t>(k)] += targets_[static_cast<size_t>(f)];
+      const Vec3& t = targets_[static_cast<size_t>(f)];
+      if (k >= 0) normals[static_cast<size_t>(k)] += t.isZero() ? face_normal(g_.V0, g_.F, static_cast<int>(f)) : t;
     }
   if (!preconditioner_) preconditioner_ = std::make_unique<FramePreconditioner>(pattern_, solver_, threads_);
   preconditioner_->build(M_, normals);

@@ -36,6 +36,7 @@
 #include <memory>
 #include <vector>
 
+#include "angle_defect.h"
 #include "block_pattern.h"
 #include "frame_preconditioner.h"
 #include "group_mesh.h"
@@ -51,11 +52,18 @@ constexpr int kCgIterations = 40;
 class DeformationSystem {
  public:
   // From params: w of Eq. (8), α of Eq. (15), the solver, the method and the threads this
-  // group may use; ae: average edge length for Eq. (15).
-  DeformationSystem(const GroupMesh& group, const Params& params, double ae);
+  // group may use; ae: average edge length for Eq. (15); defects: the angle-defect rows
+  // (angle_defect.h), whose stars widen M's pattern to pairs of vertices with a common
+  // neighbour.
+  DeformationSystem(const GroupMesh& group, const Params& params, double ae,
+                    DefectStars defects = {});
 
-  // Assembles M for one target normal per group face (Eq. 17).
-  void set_targets(const std::vector<Vec3>& targets);
+  // Assembles M (Eq. 17) for one target normal per group face (a zero vector: no
+  // developability rows of Eq. 13 for that face) and the angle-defect rows linearised at the
+  // reference positions of the next solve (empty when the group has none).
+  void set_rows(const std::vector<Vec3>& targets, const DefectLinearisation& defects = {});
+
+  const DefectStars& defect_stars() const { return defects_; }
 
   // Right-hand side Aᵀc − M_fc·x_c + anchor terms for reference positions `ref`.
   Eigen::VectorXd rhs(const Positions& ref) const;
@@ -71,6 +79,9 @@ class DeformationSystem {
 
  private:
   void build_pattern(const std::vector<std::pair<int, int>>& edges);
+  void index_defect_entries();
+  void add_defect_rows(int k, Eigen::Matrix3d& diagonal, double* value, const int* outer) const;
+  void add_defect_rhs(const Positions& ref, Eigen::VectorXd& b) const;
   void factorize();
   Eigen::VectorXd solve_directly(const Eigen::VectorXd& b);
   Eigen::VectorXd solve_iteratively(const Eigen::VectorXd& b, const Positions& ref);
@@ -87,6 +98,11 @@ class DeformationSystem {
   BlockPattern pattern_;
   std::vector<int> face_slot_;     // per face and corner pair (0,1),(0,2),(1,2): off-diag block
   std::vector<Vec3> targets_;
+  DefectStars defects_;
+  DefectLinearisation linearised_;
+  std::vector<int> entry_row_;     // row of each defect star entry
+  std::vector<int> entry_start_;   // star entries of unknown block k:
+  std::vector<int> entries_;       //   entries_[entry_start_[k] .. entry_start_[k+1])
   Eigen::SparseMatrix<double> M_;
   SolverKind solver_;
   int threads_;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "angle_defect.h"
 #include "group_mesh.h"
 #include "params.h"
 #include "progress.h"
@@ -25,11 +26,13 @@ struct DeformOutcome {
   StageTimes times;                   // assembly, factorisation, solve, re-targeting, metrics
 };
 
-// targets: initial target per group face; retarget: used between iterations unless
-// params.targets == TargetMode::Fixed; progress receives the fraction of max_iter done.
+// targets: initial target per group face (zero: no Eq. 13 developability rows for it);
+// retarget: used between iterations unless params.targets == TargetMode::Fixed; defects: the
+// angle-defect rows (angle_defect.h), linearised again before every solve; progress receives
+// the fraction of max_iter done.
 DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
-                     const Retarget& retarget, const Params& params, double ae,
-                     const std::function<void(double)>& progress);
+                     const Retarget& retarget, DefectStars defects, const Params& params,
+                     double ae, const std::function<void(double)>& progress);
 
 // Limits the step from `current` to `proposed` by the group's δ_err (§5.2). Step mode:
 // |Δv| ≤ δ_err for every vertex, by scaling the whole step (ClampMode::Scale) or clamping each

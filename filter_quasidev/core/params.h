@@ -13,6 +13,10 @@ enum class ClampMode { Scale, Vertex };     // δ_err in Step mode: scale the wh
 enum class TargetMode { Fixed, Reproject, Refit };  // targets once (paper), re-projected, re-fitted
 enum class SolverKind { Auto, Cholmod, EigenLLT, EigenLDLT };  // sparse Cholesky (§5.4)
 enum class SolveMethod { Auto, Direct, Iterative };  // factorise M, or CG with scalar factors
+// Developability term per patch: the paper's normal targets on the Gauss-image curve (Eq. 13),
+// Gauss–Newton rows on the angle defects (angle_defect.h, beyond the paper), both, or chosen
+// per patch from its Step 1 fit residual (Auto, beyond the paper).
+enum class Developability { Curve, Defect, Both, Auto };
 
 struct Params {
   double tolerance = 0.0;                    // δ_err in model units (> 0)
@@ -21,6 +25,8 @@ struct Params {
   ClampMode clamp = ClampMode::Scale;        // Step mode only; Total mode clamps per vertex
   int max_iter = 10;                         // stop criterion 1
   double weight = 30.0;                      // w of Eq. (8): developability vs shape rows
+  Developability developability = Developability::Auto;
+  double defect_weight = 0.03;               // w_d of the angle-defect rows (angle_defect.h)
   double anchor = 3.0;                       // α of the MLS soft anchor rows (Eq. 15)
   SeamMode seams = SeamMode::Fixed;
   bool keep_boundary = true;                 // open mesh boundary vertices are constrained

@@ -13,6 +13,7 @@
 #include <thread>
 #include <unordered_set>
 
+#include "angle_defect.h"
 #include "deformer.h"
 #include "error.h"
 #include "group_mesh.h"
@@ -47,17 +48,78 @@ class KeepNormals : public GaussModel {
   std::string kind() const override { return "unchanged"; }
 };
 
-// Step 1 for one patch of a group: its faces (local indices) and the fitted Gauss model.
+// Developability::Auto takes the paper's curve targets up to this fit residual and the
+// angle-defect rows above it (a Gauss image that is a 2-D blob, not a curve; measured on the
+// shared garments and samples, README "Garments").
+constexpr double kAutoDefectResidualDeg = 5.0;
+
+// The developability rows a patch gets.
+enum class Term { None, Curve, Defect, Both };
+
+const char* term_name(Term t) {
+  return t == Term::Curve ? "curve" : t == Term::Defect ? "defect" : t == Term::Both ? "both" : "none";
+}
+
+// Step 1 for one patch of a group: its faces (local indices), the fitted Gauss model, and the
+// developability term chosen for it.
 struct PatchFit {
   int id = 0;
   std::vector<int> faces;
   TargetFit fit;
   std::string skipped;  // why Step 1 failed; empty when it succeeded
+  Term term = Term::None;
+  std::string why;      // why this term (the log and the report say it)
   bool planar() const {
     return fit.model->kind() == "plane" && fit.residual_deg < kPlanarResidualDeg;
   }
-  bool idle() const { return planar() || !skipped.empty(); }
+  bool idle() const { return term == Term::None; }
+  bool has_targets() const { return term == Term::Curve || term == Term::Both; }
+  bool has_defects() const { return term == Term::Defect || term == Term::Both; }
 };
+
+std::string format(const char* fmt, double a, double b = 0, double c = 0, double d = 0) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
+  return buf;
+}
+
+// The term of a patch from the parameter and its Step 1 fit. Curve is the paper; the angle
+// defects need no fit, so they also take patches whose normals fill the sphere.
+void choose_term(PatchFit& p, Developability mode) {
+  if (p.planar()) {
+    p.why = "planar";
+    return;
+  }
+  const bool fitted = p.skipped.empty();
+  switch (mode) {
+    case Developability::Curve:
+      p.term = fitted ? Term::Curve : Term::None;
+      p.why = "as asked";
+      return;
+    case Developability::Defect:
+      p.term = Term::Defect;
+      p.why = "as asked";
+      return;
+    case Developability::Both:
+      p.term = fitted ? Term::Both : Term::Defect;
+      p.why = fitted ? "as asked" : "no Gauss-image curve fits";
+      return;
+    case Developability::Auto:
+      if (!fitted) {
+        p.term = Term::Defect;
+        p.why = "auto: no Gauss-image curve fits";
+      } else if (p.fit.residual_deg > kAutoDefectResidualDeg) {
+        p.term = Term::Defect;
+        p.why = format("auto: fit residual %.1f° > %.0f°, the Gauss image is not a curve",
+                       p.fit.residual_deg, kAutoDefectResidualDeg);
+      } else {
+        p.term = Term::Curve;
+        p.why = format("auto: fit residual %.1f° <= %.0f°", p.fit.residual_deg,
+                       kAutoDefectResidualDeg);
+      }
+      return;
+  }
+}
 
 void normals_and_areas(const Positions& X, const Triangles& F, const std::vector<int>& faces,
                        std::vector<Vec3>& normals, std::vector<double>& areas) {
@@ -93,25 +155,52 @@ std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
   return fits;
 }
 
-// Target per group face from the per-patch fits.
+// Target per group face from the per-patch fits; zero (no Eq. 13 developability rows) on the
+// faces of patches that take the angle-defect rows only.
 std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>& fits) {
-  std::vector<Vec3> t(static_cast<size_t>(g.solve_faces));
+  std::vector<Vec3> t(static_cast<size_t>(g.solve_faces), Vec3::Zero());
   for (const PatchFit& p : fits)
-    for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = p.fit.targets[k];
+    if (p.term != Term::Defect)
+      for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = p.fit.targets[k];
   return t;
 }
 
-// Re-projection (nearest point of the fixed c_3D) or re-fit (Step 1 again) between iterations.
+// Re-projection (nearest point of the fixed c_3D) or re-fit (Step 1 again, each patch keeping
+// its term) between iterations.
 Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode) {
   return [&g, &fits, mode](const Positions& X) {
-    if (mode == TargetMode::Refit) return group_targets(g, fit_patches(g, X));
-    std::vector<Vec3> t(static_cast<size_t>(g.solve_faces));
+    if (mode == TargetMode::Refit) {
+      std::vector<PatchFit> refits = fit_patches(g, X);
+      for (size_t k = 0; k < refits.size(); ++k) refits[k].term = fits[k].term;
+      return group_targets(g, refits);
+    }
+    std::vector<Vec3> t(static_cast<size_t>(g.solve_faces), Vec3::Zero());
     for (const PatchFit& p : fits) {
+      if (p.term == Term::Defect) continue;
       int hint = -1;  // faces in input order: mostly neighbours, with nearby normals
       for (int f : p.faces) t[static_cast<size_t>(f)] = p.fit.model->project(face_normal(X, g.F, f), hint);
     }
     return t;
   };
+}
+
+// Angle-defect rows for the free interior vertices that touch a face of a defect patch.
+DefectStars group_defect_stars(const GroupMesh& g, const std::vector<PatchFit>& fits,
+                               const Params& params) {
+  std::vector<char> has_row(g.fixed.size(), 0);
+  for (const PatchFit& p : fits)
+    if (p.has_defects())
+      for (int f : p.faces)
+        for (int c = 0; c < 3; ++c) has_row[static_cast<size_t>(g.F(f, c))] = 1;
+  std::vector<char> interior(g.fixed.size(), 0);
+  for (int v : g.owned) interior[static_cast<size_t>(v)] = 1;
+  bool any = false;
+  for (size_t v = 0; v < has_row.size(); ++v) {
+    has_row[v] = has_row[v] && interior[v] && !g.fixed[v];
+    any = any || has_row[v];
+  }
+  if (!any) return {};
+  return defect_stars(g, VertexFaces(g.F, g.V0.rows()), has_row, params.defect_weight);
 }
 
 std::vector<int> indices(size_t n) {
@@ -120,31 +209,30 @@ std::vector<int> indices(size_t n) {
   return v;
 }
 
-std::string format(const char* fmt, double a, double b = 0, double c = 0, double d = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
-  return buf;
-}
-
 // One log line per patch (what adapters show): its size, Step 1 fit, iterations and why they
 // stopped, G_ABD before → after, the last iteration's ratios (Eqs. 19–20), displacement, time.
 std::string patch_log_line(const PatchReport& p, double ae) {
-  if (p.target_kind == "unchanged")
+  if (p.developability == "none" && p.target_kind == "unchanged")
     return "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
            p.stop_reason;
   const IterationReport last = p.history.empty() ? IterationReport{} : p.history.back();
+  const std::string fit = p.target_kind == "unchanged"
+                              ? "no curve fit"
+                              : p.target_kind + format(" fit residual %.2f°", p.fit_residual_deg);
   std::string s = "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
-                  p.target_kind + format(" fit residual %.2f°, ", p.fit_residual_deg) +
+                  fit + ", developability " + p.developability + " (" + p.developability_reason +
+                  "), " +
                   std::to_string(p.iterations) + " iteration(s) (stop: " + p.stop_reason + "), " +
                   format("G_ABD %.4g → %.4g (−%.1f%%), ", p.before.g_abd, p.after.g_abd,
                          p.abd_reduction) +
                   format("last ratio_ABD %.1f%%, ratio_OBD %.1f%%, ", last.ratio_abd,
                          last.ratio_obd) +
                   format("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
-  if (p.fit_residual_deg > kFarResidualDeg)
+  if (p.developability == "curve" && p.fit_residual_deg > kFarResidualDeg)
     s += format(
         "; warning: fit residual %.1f°: this patch is far from one developable surface, which "
-        "the method assumes: split it into finer patches",
+        "the paper's method assumes: use --developability defect or auto, or split it into "
+        "finer patches",
         p.fit_residual_deg);
   return s;
 }
@@ -186,6 +274,7 @@ GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int
   {
     StageTimer timer(step1_ms);
     run.fits = fit_patches(g, g.V0);
+    for (PatchFit& p : run.fits) choose_term(p, params.developability);
     run.targets = group_targets(g, run.fits);
   }
   bool all_idle = true;
@@ -196,8 +285,8 @@ GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int
                                   ? "planar: the Gauss image is a point, nothing to do"
                                   : "left unchanged: " + run.fits.front().skipped;
   } else {
-    run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets), params, ae,
-                         progress);
+    run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets),
+                         group_defect_stars(g, run.fits, params), params, ae, progress);
   }
   run.outcome.times.setup += setup_ms;
   run.outcome.times.step1 += step1_ms;
@@ -290,8 +379,11 @@ Result approximate(const Problem& problem, const Progress& progress) {
       rep.fit_residual_deg = p.fit.residual_deg;
       rep.tolerance = patch_tolerance(params, p.id);
       rep.iterations = static_cast<int>(run.outcome.history.size());
-      rep.stop_reason = p.skipped.empty() ? run.outcome.stop_reason : "left unchanged: " + p.skipped;
-      if (!p.skipped.empty() && skipped_patches++ == 0) first_skip = "patch " + std::to_string(p.id) + ": " + p.skipped;
+      rep.developability = term_name(p.term);
+      rep.developability_reason = p.why;
+      const bool unfitted = p.idle() && !p.skipped.empty();
+      rep.stop_reason = unfitted ? "left unchanged: " + p.skipped : run.outcome.stop_reason;
+      if (unfitted && skipped_patches++ == 0) first_skip = "patch " + std::to_string(p.id) + ": " + p.skipped;
       rep.history = run.outcome.history;
       rep.time_ms = run.time_ms / static_cast<double>(run.fits.size());
     }

@@ -35,6 +35,8 @@ struct PatchReport {
   int free_vertices = 0;
   double tolerance = 0;          // δ_err used, model units
   std::string target_kind;       // "curve", "closed curve", "plane"
+  std::string developability;    // rows used: "curve" (paper), "defect", "both", "none"
+  std::string developability_reason;  // why (Developability::Auto says which figure decided)
   double fit_residual_deg = 0;   // area-weighted mean angle between n_f and its target
   int iterations = 0;            // accepted iterations
   std::string stop_reason;

@@ -58,6 +58,13 @@ QVariant patch_list(const std::vector<qd::PatchReport>& patches, Field field) {
   return QVariant::fromValue(v);
 }
 
+// The developability term a patch used, as the index of that value of the parameter
+// "developability" (curve 0, defect 1, both 2); -1 when the patch was left unchanged.
+int developability_code(const qd::PatchReport& p) {
+  const std::string& d = p.developability;
+  return d == "curve" ? 0 : d == "defect" ? 1 : d == "both" ? 2 : -1;
+}
+
 // The figures pymeshlab hands back as a dict. Totals are over the whole mesh; percentages as in
 // Eqs. (19)-(20) between the input and the result; lengths in model units and in AE.
 std::map<std::string, QVariant> figures_dict(const qd::Result& r) {
@@ -91,6 +98,7 @@ std::map<std::string, QVariant> figures_dict(const qd::Result& r) {
       {"patch_abd_reduction", patch_list(r.patches, [](const P& p) { return p.abd_reduction; })},
       {"patch_obd_reduction", patch_list(r.patches, [](const P& p) { return p.obd_reduction; })},
       {"patch_fit_residual_deg", patch_list(r.patches, [](const P& p) { return p.fit_residual_deg; })},
+      {"patch_developability", patch_list(r.patches, developability_code)},
       {"patch_max_displacement", patch_list(r.patches, [](const P& p) { return p.after.max_disp; })},
       {"patch_max_abs_k_after", patch_list(r.patches, [](const P& p) { return p.after.max_abs_k; })},
   };

@@ -169,6 +169,9 @@ std::string filter_info() {
          "developable surface lie on one), every face gets the nearest normal on that curve as "
          "its target, and a least-squares solve moves the vertices so each face turns towards "
          "its target while keeping its shape; this repeats until the curvature stops falling. "
+         "Draped, wrinkled patches, whose normals do not lie near one curve, instead get rows "
+         "that drive their interior angle defects to zero (Gauss-Newton; beyond the paper, "
+         "chosen per patch by <i>Developability term</i>). "
          "Connectivity is kept, so texture coordinates and sewing patterns survive; an iteration "
          "that would raise the curvature or flip a face is rejected.<br>"
          "<b>Per-face quality</b> = patch id (rounded to an integer); vertices shared by two "
@@ -177,8 +180,7 @@ std::string filter_info() {
          "boundary</i> is on.<br>"
          "<b>Output</b>: moved vertices, per-vertex quality = Gaussian curvature after the filter "
          "(or the displacement) with a colour ramp (red low, blue high), and one log line per "
-         "patch with its figures. Works best on patches close to one developable surface (cone, "
-         "cylinder, gently bent sheet); wrinkled patches are reported as poor fits.<br>"
+         "patch with its figures and the developability term it used.<br>"
          "Zeng L., Liu Y.-J., Chen M., Yuen M.-F., <i>Least squares quasi-developable mesh "
          "approximation</i>, Computer Aided Geometric Design 29(7):565&ndash;578, 2012.";
 }
@@ -208,6 +210,18 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
        "w of the paper's Eq. (8): how strongly faces are turned towards their target normals "
        "against keeping their shape. Larger removes more curvature per iteration but moves more.",
        ParamKind::Float, d.weight, {}},
+      {"developability", "Developability term",
+       "Which rows make each patch developable. curve: the paper's target normals on the curve "
+       "fitted to the patch's Gauss image (best for cones, cylinders, lampshades, sleeves); "
+       "defect: Gauss-Newton rows that drive every interior angle defect (Gaussian curvature) "
+       "to zero (beyond the paper; best for draped, wrinkled panels whose Gauss image is a "
+       "blob, not a curve); both; auto: per patch, curve where the curve fits within 5 degrees, "
+       "else defect (beyond the paper). The log says which each patch used and why.",
+       ParamKind::Enum, index(d.developability), {"curve", "defect", "both", "auto"}},
+      {"defect_weight", "Angle-defect weight",
+       "w_d of the angle-defect rows against keeping the shape; scale- and density-invariant. "
+       "Larger removes more curvature per iteration but moves the surface more.",
+       ParamKind::Float, d.defect_weight, {}},
       {"anchor", "Anchor stiffness",
        "alpha of the soft anchors (paper Eq. 15): how strongly vertices near fixed vertices resist "
        "moving; the stiffness fades with the distance (in AE) from fixed vertices.",
@@ -260,6 +274,8 @@ Settings settings_from_values(const std::map<std::string, double>& values) {
   p.max_iter = static_cast<int>(std::lround(get("max_iter", p.max_iter)));
   p.weight = get("weight", p.weight);
   p.anchor = get("anchor", p.anchor);
+  p.developability = choice("developability", p.developability);
+  p.defect_weight = get("defect_weight", p.defect_weight);
   s.use_patches = get("use_patches", s.use_patches) != 0;
   p.seams = choice("seam_mode", p.seams);
   p.keep_boundary = get("keep_boundary", p.keep_boundary) != 0;

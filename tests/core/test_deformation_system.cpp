@@ -109,7 +109,7 @@ struct Both {
   Both(double w, double alpha, double ae, SolverKind solver = SolverKind::Auto,
        SolveMethod method = SolveMethod::Direct, bool smooth = false)
       : s(smooth), sys(s.g, params(w, alpha, solver, method), ae) {
-    sys.set_targets(s.targets);
+    sys.set_rows(s.targets);
     Eigen::MatrixXd by_vertex;
     dense_system(s, w, alpha, ae, by_vertex, c);
     A.resize(by_vertex.rows(), by_vertex.cols());

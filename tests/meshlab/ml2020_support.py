@@ -192,6 +192,9 @@ def cli_arguments(params: dict[str, tuple[str, str, list[str]]]) -> tuple[list[s
             "--stop-obd", params["stop_obd"][1], "--quality", item("output_quality")]
     if not true("colorize"):
         args.append("--no-color")
+    if "developability" in params:  # scripts without it run with the default, as the command
+        args += ["--developability", item("developability"),
+                 "--defect-weight", params["defect_weight"][1]]
     return args, true("use_patches")
 
 

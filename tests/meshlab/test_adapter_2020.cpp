@@ -111,7 +111,8 @@ TEST(Adapter2020, DefaultMlxListsEveryParameterAtItsDefault) {
     } else if (spec.name == "tolerance") {
       EXPECT_EQ(value.toDouble(), 0.0) << "default.mlx must say 0 (= 1 AE of any mesh)";
     } else {
-      EXPECT_DOUBLE_EQ(value.toDouble(), static_cast<double>(static_cast<float>(spec.value))) << spec.name;
+      // The 2020.09 plugin holds floats: the script's value and the default agree as floats.
+      EXPECT_EQ(static_cast<float>(value.toDouble()), static_cast<float>(spec.value)) << spec.name;
     }
     if (spec.kind == qdml::ParamKind::Enum) {
       ASSERT_EQ(p.attribute("enum_cardinality").toInt(), static_cast<int>(spec.items.size()));

@@ -29,6 +29,7 @@ JOBS = {
     "patches_fixed_seams": ("selected.ply", "patches_fixed_seams.mlx"),
     "free_seams": ("selected.ply", "free_seams.mlx"),
     "keep_selected": ("selected.ply", "keep_selected.mlx"),
+    "draped_defect_rows": ("draped_panels.ply", "default.mlx"),
 }
 
 
@@ -122,6 +123,14 @@ def test_log_has_a_line_per_patch_and_a_total(job):
     assert len(re.findall(r"^LOG: \d+ patch -?\d+: \d+ faces, .*ratio_ABD .*ratio_OBD .* AE, ",
                           job.log, re.M)) == patches, job.log
     assert re.search(r"^LOG: \d+ total: .* AE .* iterations", job.log, re.M), job.log
+
+
+def test_log_names_the_developability_term(job):
+    """auto: the paper's curve targets on the near-developable samples, angle-defect rows on
+    the draped one, and the log says so for every patch."""
+    expected = "defect" if job.name == "draped_defect_rows" else "curve"
+    terms = re.findall(r"developability (\w+) \(auto: ", job.log)
+    assert terms and set(terms) == {expected}, job.log
 
 
 def test_texture_coordinates_and_face_colours_untouched(meshlab_prefix, tmp_path):

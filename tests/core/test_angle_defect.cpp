@@ -1,0 +1,178 @@
+// The angle-defect developability term (angle_defect.h, issue 11): its linearisation, and what
+// the engine does with it on wrinkled patches, where the paper's curve targets cannot help.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "angle_defect.h"
+#include "deformer.h"
+#include "group_mesh.h"
+#include "quasidev.h"
+#include "test_meshes.h"
+#include "validate.h"
+
+namespace qd {
+namespace {
+
+// A square sheet (n×n quads, side 2) wrinkled by bumps and dents of both signs: doubly curved
+// everywhere, so its Gauss image is a 2-D blob and no curve fits it. Split into `patches`
+// vertical strips.
+Problem wrinkled_sheet(int n = 24, double amplitude = 0.08, int patches = 1) {
+  Problem p;
+  p.V.resize((n + 1) * (n + 1), 3);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const double x = 2.0 * i / n - 1, y = 2.0 * j / n - 1;
+      const double z = amplitude * (std::sin(3.1 * x) * std::cos(2.3 * y) + 0.6 * std::sin(4.7 * x * y));
+      p.V.row(j * (n + 1) + i) << x, y, z;
+    }
+  p.F.resize(2 * n * n, 3);
+  int f = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      p.F.row(f++) << a, b, d;
+      p.F.row(f++) << a, d, c;
+      p.patch.push_back(i * patches / n);
+      p.patch.push_back(i * patches / n);
+    }
+  if (patches == 1) p.patch.clear();
+  p.params.tolerance = 0.1;
+  return p;
+}
+
+// The whole mesh of p as one group, and its defect rows on every free interior vertex.
+struct OneGroup {
+  GroupMesh g;
+  VertexFaces incident;
+  DefectStars rows;
+  explicit OneGroup(const Problem& p)
+      : g(group(p)), incident(g.F, g.V0.rows()) {
+    std::vector<char> has_row(g.fixed.size(), 0);
+    for (int v : g.owned) has_row[static_cast<size_t>(v)] = !g.fixed[static_cast<size_t>(v)];
+    rows = defect_stars(g, incident, has_row, 1.0);
+  }
+  static GroupMesh group(const Problem& p) {
+    const Topology topo = validate(p);
+    const VertexRoles roles = vertex_roles(p, topo);
+    std::vector<int> faces(static_cast<size_t>(p.F.rows()));
+    for (size_t f = 0; f < faces.size(); ++f) faces[f] = static_cast<int>(f);
+    return extract_group(p.V, p.F, faces, std::vector<int>(faces.size(), 0), roles.constrained,
+                         roles.interior, VertexFaces(p.F, p.V.rows()), p.params);
+  }
+};
+
+TEST(AngleDefect, GradientMatchesFiniteDifferences) {
+  const OneGroup s(wrinkled_sheet(8));
+  ASSERT_FALSE(s.rows.empty());
+  const DefectLinearisation lin = linearise_defects(s.rows, s.g, s.incident, s.g.V0);
+  const double h = 1e-6;
+  double worst = 0;
+  for (size_t r = 0; r < s.rows.vertex.size(); r += 5)
+    for (int i = s.rows.start[r]; i < s.rows.start[r + 1]; ++i)
+      for (int d = 0; d < 3; ++d) {
+        Positions plus = s.g.V0, minus = s.g.V0;
+        plus(s.rows.star[static_cast<size_t>(i)], d) += h;
+        minus(s.rows.star[static_cast<size_t>(i)], d) -= h;
+        const double numeric = (linearise_defects(s.rows, s.g, s.incident, plus).defect[r] -
+                                linearise_defects(s.rows, s.g, s.incident, minus).defect[r]) /
+                               (2 * h);
+        worst = std::max(worst, std::abs(numeric - lin.gradient[static_cast<size_t>(i)](d)));
+      }
+  EXPECT_LT(worst, 1e-6);
+}
+
+TEST(AngleDefect, DefectIsTwoPiMinusTheAngleSum) {
+  const OneGroup s(wrinkled_sheet(6));
+  const DefectLinearisation lin = linearise_defects(s.rows, s.g, s.incident, s.g.V0);
+  Problem flat = wrinkled_sheet(6, 0.0);
+  const OneGroup f(flat);
+  const DefectLinearisation zero = linearise_defects(f.rows, f.g, f.incident, f.g.V0);
+  for (double k : zero.defect) EXPECT_NEAR(k, 0.0, 1e-12);  // a flat sheet is developable
+  double largest = 0;
+  for (double k : lin.defect) largest = std::max(largest, std::abs(k));
+  EXPECT_GT(largest, 1e-3);  // the wrinkled one is not
+}
+
+TEST(AngleDefect, WrinkledSheetGetsDefectRowsAndLosesMostCurvature) {
+  Problem p = wrinkled_sheet();
+  const Result curve = [&] {
+    Problem q = p;
+    q.params.developability = Developability::Curve;
+    return approximate(q);
+  }();
+  const Result r = approximate(p);  // Developability::Auto
+  ASSERT_EQ(r.patches.size(), 1u);
+  EXPECT_EQ(r.patches[0].developability, "defect") << r.patches[0].developability_reason;
+  EXPECT_NE(r.patches[0].developability_reason.find("fit residual"), std::string::npos);
+  EXPECT_GT(r.abd_reduction, 60.0);
+  EXPECT_GT(r.abd_reduction, curve.abd_reduction + 30.0);
+  EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
+  // The open boundary is kept (default): bit for bit.
+  const int n = 24;
+  for (int i = 0; i <= n; ++i)
+    for (int v : {i, n * (n + 1) + i, i * (n + 1), i * (n + 1) + n}) EXPECT_EQ(r.V.row(v), p.V.row(v));
+}
+
+TEST(AngleDefect, AutoKeepsThePaperOnNearDevelopablePatches) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08);
+  p.params.tolerance = 0.2;
+  const Result r = approximate(p);
+  EXPECT_EQ(r.patches[0].developability, "curve");
+  p.params.developability = Developability::Curve;
+  const Result curve = approximate(p);
+  EXPECT_EQ(r.V, curve.V);  // auto chose the paper, and it runs unchanged
+}
+
+TEST(AngleDefect, DefectModeIsScaleAndRotationInvariant) {
+  Problem p = wrinkled_sheet(16);
+  p.params.developability = Developability::Defect;
+  const Result r = approximate(p);
+  const double s = 250.0;
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(1.1, Eigen::Vector3d(3, -1, 2).normalized()).toRotationMatrix();
+  Problem q = p;
+  q.V = (s * p.V * R.transpose()).eval();
+  q.params.tolerance = s * p.params.tolerance;
+  const Result rq = approximate(q);
+  const Positions expected = s * r.V * R.transpose();
+  EXPECT_LT((rq.V - expected).cwiseAbs().maxCoeff(), 1e-6 * s);
+  EXPECT_NEAR(rq.abd_reduction, r.abd_reduction, 1e-6);
+}
+
+TEST(AngleDefect, FixedSeamsDoNotMoveAndFreeSeamsStayShared) {
+  Problem p = wrinkled_sheet(24, 0.08, 3);
+  p.params.developability = Developability::Defect;
+  const Result fixed = approximate(p);
+  const int n = 24;
+  for (int j = 0; j <= n; ++j)  // seam columns between the strips: i = 8 and 16
+    for (int i : {8, 16}) EXPECT_EQ(fixed.V.row(j * (n + 1) + i), p.V.row(j * (n + 1) + i));
+  EXPECT_GT(fixed.abd_reduction, 40.0);
+  p.params.seams = SeamMode::Free;
+  const Result free = approximate(p);
+  EXPECT_GT(free.abd_reduction, 40.0);
+  EXPECT_EQ(flipped_faces(p.F, p.V, free.V), 0);
+  bool seam_moved = false;
+  for (int j = 1; j < n; ++j) seam_moved = seam_moved || free.V.row(j * (n + 1) + 8) != p.V.row(j * (n + 1) + 8);
+  EXPECT_TRUE(seam_moved);
+}
+
+TEST(AngleDefect, PatchWhoseNormalsFillTheSphereIsProcessedByDefectRows) {
+  // A closed-ish bumpy tube has normals all round; a sphere-like cap would be refused by the
+  // curve fit. The wrinkled sheet bent into a half tube with strong wrinkles fills a band;
+  // here a bowl: its normals cover a cap, not a curve.
+  Problem p = wrinkled_sheet(20, 0.0);
+  for (Eigen::Index v = 0; v < p.V.rows(); ++v) {
+    const double x = p.V(v, 0), y = p.V(v, 1);
+    p.V(v, 2) = 0.6 * (x * x + y * y) + 0.05 * std::sin(5 * x) * std::sin(4 * y);
+  }
+  Problem curve = p;
+  curve.params.developability = Developability::Curve;
+  const Result rc = approximate(curve);
+  const Result r = approximate(p);
+  EXPECT_EQ(r.patches[0].developability, "defect");
+  EXPECT_GT(r.abd_reduction, rc.abd_reduction);
+}
+
+}  // namespace
+}  // namespace qd
