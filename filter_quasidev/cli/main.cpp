@@ -100,6 +100,9 @@ void run(const Options& o) {
   }
   output.commit();
   if (report) report->commit();
+  // Warnings say part of the mesh was left as it is: shown even with --quiet, like errors.
+  for (const std::string& warning : result.warnings)
+    std::cerr << "quasidev: warning: " << warning << '\n';
   if (o.quiet) return;
   for (const std::string& line : result.log) std::cout << line << '\n';
   for (const std::string& note : mesh.notes) std::cerr << "quasidev: note: " << note << '\n';

@@ -125,6 +125,9 @@ std::string report_json(const Result& result, const ReportContext& c) {
   j.begin_array("patches");
   for (const PatchReport& p : result.patches) write_patch(j, p, result.average_edge);
   j.end_array();
+  j.begin_array("warnings");
+  for (const std::string& warning : result.warnings) j.value(nullptr, warning);
+  j.end_array();
   j.begin_array("notes");
   for (const std::string& note : c.notes) j.value(nullptr, note);
   j.end_array();

@@ -21,10 +21,12 @@ VertexRoles vertex_roles(const Problem& problem, const Topology& topo) {
   const size_t n = static_cast<size_t>(problem.V.rows());
   VertexRoles roles{std::vector<char>(n), std::vector<char>(n)};
   for (size_t v = 0; v < n; ++v) {
-    roles.interior[v] = topo.used[v] && !topo.boundary[v];
+    // The angle sum of a vertex on a non-manifold edge is not that of one surface: no curvature.
+    roles.interior[v] = topo.used[v] && !topo.boundary[v] && !topo.nonmanifold[v];
     roles.constrained[v] = (!problem.constrained.empty() && problem.constrained[v]) ||
                            (params.keep_boundary && topo.boundary[v]) ||
-                           (params.seams == SeamMode::Fixed && topo.seam[v]);
+                           (params.seams == SeamMode::Fixed && topo.seam[v]) ||
+                           topo.nonmanifold[v] || topo.in_small_patch[v];
   }
   return roles;
 }

@@ -33,8 +33,9 @@ struct GroupMesh {
   std::vector<int> owned;           // interior vertices of the group faces: their K counts
 };
 
-// What each input vertex is: interior (not on an open boundary, its curvature counts) and
-// constrained (selected, on the kept boundary, or on a fixed seam: it never moves).
+// What each input vertex is: interior (not on an open boundary nor a non-manifold edge, its
+// curvature counts) and constrained (selected, on the kept boundary, on a fixed seam, on a
+// non-manifold edge or in a patch too small to fit: it never moves).
 struct VertexRoles {
   std::vector<char> interior;
   std::vector<char> constrained;

@@ -131,6 +131,28 @@ void normals_and_areas(const Positions& X, const Triangles& F, const std::vector
   }
 }
 
+// Step 1 for one patch. A patch too small to fit (validate() let it through, its vertices
+// fixed) or one Step 1 cannot fit keeps its own normals as targets.
+PatchFit fit_patch(int id, const std::vector<int>& faces, const std::vector<Vec3>& normals,
+                   const std::vector<double>& areas) {
+  PatchFit p;
+  p.id = id;
+  p.faces = faces;
+  if (faces.size() < static_cast<size_t>(kMinPatchFaces)) {
+    p.skipped = "fewer than " + std::to_string(kMinPatchFaces) + " faces, too few to fit";
+  } else {
+    try {
+      p.fit = fit_targets(normals, areas);
+      return p;
+    } catch (const Error& e) {
+      p.skipped = e.what();
+    }
+  }
+  p.fit.model = std::make_shared<KeepNormals>();
+  p.fit.targets = normals;
+  return p;
+}
+
 std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
   std::map<int, std::vector<int>> faces_of;
   for (Eigen::Index f = 0; f < g.solve_faces; ++f)
@@ -140,17 +162,7 @@ std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
   std::vector<double> areas;
   for (auto& [id, faces] : faces_of) {
     normals_and_areas(X, g.F, faces, normals, areas);
-    PatchFit p;
-    p.id = id;
-    p.faces = faces;
-    try {
-      p.fit = fit_targets(normals, areas);
-    } catch (const Error& e) {
-      p.skipped = e.what();
-      p.fit.model = std::make_shared<KeepNormals>();
-      p.fit.targets = normals;
-    }
-    fits.push_back(std::move(p));
+    fits.push_back(fit_patch(id, faces, normals, areas));
   }
   return fits;
 }
@@ -317,6 +329,8 @@ Result approximate(const Problem& problem, const Progress& progress) {
 
   Result r;
   r.V = V;
+  r.warnings = warnings(topo);
+  for (const std::string& w : r.warnings) r.log.push_back("warning: " + w);
   r.average_edge = average_edge_length(V, F);
   const VertexAngles angles_before = vertex_angles(V, F);
   r.k_before = gaussian_curvature(angles_before, interior);

@@ -80,7 +80,8 @@ struct Result {
   int factorizations = 0;            // sparse Cholesky numeric factorisations performed
   StageTimes times;                  // per stage; time_ms is the wall-clock total
   double time_ms = 0;
-  std::vector<std::string> log;      // human-readable lines, one per patch plus notes
+  std::vector<std::string> warnings; // parts of the mesh left as they are (validate.h warnings())
+  std::vector<std::string> log;      // human-readable lines: the warnings, one per patch, total
 };
 
 }  // namespace qd

@@ -2,8 +2,8 @@
 // with one line saying what is wrong and what to do. All checks are O(n log n).
 #include "validate.h"
 
+#include <algorithm>
 #include <cmath>
-#include <map>
 #include <sstream>
 #include <string>
 
@@ -112,31 +112,23 @@ void check_zero_area(const Positions& V, const Triangles& F) {
                 "Area Faces).");
 }
 
-void check_manifold(const Topology& t) {
-  if (t.nonmanifold_edges > 0)
-    throw Error("The mesh has " +
-                count(t.nonmanifold_edges, "non-manifold edge", "non-manifold edges") +
-                " (more than two faces; e.g. the edge between vertices " +
-                str(t.first_nonmanifold_edge[0]) + " and " + str(t.first_nonmanifold_edge[1]) +
-                "): repair them first (MeshLab: Filters > Cleaning and Repairing > Repair non "
-                "Manifold Edges).");
+// Duplicate faces also make their edges look misoriented: say what is really wrong first.
+void check_duplicate_faces(const Topology& t) {
+  if (t.duplicate_faces > 0)
+    throw Error("The mesh has " + count(t.duplicate_faces, "duplicate face", "duplicate faces") +
+                " (first: faces " + str(t.first_duplicate_faces[0]) + " and " +
+                str(t.first_duplicate_faces[1]) +
+                " use the same vertices): remove them first (MeshLab: Filters > Cleaning and "
+                "Repairing > Remove Duplicate Faces).");
 }
 
-int patch_of(const std::vector<int>& patch, int f) { return patch.empty() ? 0 : patch[f]; }
-
-void check_patch_sizes(const Triangles& F, const std::vector<int>& patch) {
-  std::map<int, int> faces;
-  for (int f = 0; f < F.rows(); ++f) ++faces[patch_of(patch, f)];
-  int small = 0;
-  auto first = faces.end();
-  for (auto it = faces.begin(); it != faces.end(); ++it) {
-    if (it->second >= kMinPatchFaces) continue;
-    if (small++ == 0) first = it;
-  }
-  if (small > 0)
-    throw Error("Patch " + str(first->first) + " has only " + count(first->second, "face", "faces") + " (" +
-                count(small, "patch has", "patches have") + " fewer than " + str(kMinPatchFaces) +
-                "): a patch needs at least " + str(kMinPatchFaces) +
+// Fails only when no patch is large enough; smaller ones are left unchanged (see warnings()).
+void check_patch_sizes(const Topology& t) {
+  if (t.small_patches == t.patches)
+    throw Error("Patch " + str(t.first_small_patch[0]) + " has only " +
+                count(t.first_small_patch[1], "face", "faces") + " (" +
+                count(t.small_patches, "patch has", "patches have") + " fewer than " +
+                str(kMinPatchFaces) + "): a patch needs at least " + str(kMinPatchFaces) +
                 " faces; merge small patches into their neighbours.");
 }
 
@@ -151,24 +143,42 @@ void check_orientation(const Topology& t) {
                 "Re-Orient all faces coherently).");
 }
 
+// What holds a vertex in place, counted over the used vertices for the message below.
+struct ConstraintCounts {
+  int used = 0, selected = 0, seams = 0, boundary = 0, nonmanifold = 0, small_patches = 0;
+};
+
 void check_free_vertices(const Problem& p, const Topology& t) {
   const bool fix_seams = p.params.seams == SeamMode::Fixed;
-  int used = 0, selected = 0, seams = 0, boundary = 0;
+  ConstraintCounts n;
   for (size_t v = 0; v < t.used.size(); ++v) {
     if (!t.used[v]) continue;
-    ++used;
+    ++n.used;
     const bool is_selected = !p.constrained.empty() && p.constrained[v];
     const bool is_seam = fix_seams && t.seam[v];
     const bool is_boundary = p.params.keep_boundary && t.boundary[v];
-    if (!is_selected && !is_seam && !is_boundary) return;
-    selected += is_selected;
-    seams += is_seam;
-    boundary += is_boundary;
+    if (!is_selected && !is_seam && !is_boundary && !t.nonmanifold[v] && !t.in_small_patch[v])
+      return;
+    n.selected += is_selected;
+    n.seams += is_seam;
+    n.boundary += is_boundary;
+    n.nonmanifold += t.nonmanifold[v];
+    n.small_patches += t.in_small_patch[v];
   }
-  throw Error("All " + str(used) + " vertices are constrained (" + str(selected) + " selected, " +
-              str(seams) + " on fixed seams, " + str(boundary) +
-              " on the kept boundary), so nothing can move: select fewer vertices, free the "
-              "seams or let the boundary move.");
+  // The kept parts are named only when present, so a clean mesh reads as it always has.
+  std::string kept;
+  if (n.nonmanifold > 0) kept += ", " + str(n.nonmanifold) + " on non-manifold edges";
+  if (n.small_patches > 0)
+    kept += ", " + str(n.small_patches) + " in patches of fewer than " + str(kMinPatchFaces) + " faces";
+  throw Error("All " + str(n.used) + " vertices are constrained (" + str(n.selected) +
+              " selected, " + str(n.seams) + " on fixed seams, " + str(n.boundary) +
+              " on the kept boundary" + kept +
+              "), so nothing can move: select fewer vertices, free the seams or let the boundary "
+              "move" + (kept.empty() ? "" : ", or repair the mesh") + ".");
+}
+
+int count_flags(const std::vector<char>& flags) {
+  return static_cast<int>(std::count(flags.begin(), flags.end(), 1));
 }
 
 }  // namespace
@@ -181,11 +191,29 @@ Topology validate(const Problem& problem) {
   check_zero_area(problem.V, problem.F);
   check_params(problem.params);
   Topology topology = analyse_topology(problem.F, static_cast<int>(problem.V.rows()), problem.patch);
-  check_manifold(topology);
-  check_patch_sizes(problem.F, problem.patch);
+  check_duplicate_faces(topology);
+  check_patch_sizes(topology);
   check_orientation(topology);
   check_free_vertices(problem, topology);
   return topology;
+}
+
+std::vector<std::string> warnings(const Topology& t) {
+  std::vector<std::string> out;
+  if (t.nonmanifold_edges > 0)
+    out.push_back(count(t.nonmanifold_edges, "non-manifold edge", "non-manifold edges") +
+                  " (more than two faces; first: between vertices " +
+                  str(t.first_nonmanifold_edge[0]) + " and " + str(t.first_nonmanifold_edge[1]) +
+                  "): their " + count(count_flags(t.nonmanifold), "vertex is", "vertices are") +
+                  " kept fixed and left out of the curvature figures; to process them, repair "
+                  "the edges (MeshLab: Filters > Cleaning and Repairing > Repair non Manifold "
+                  "Edges).");
+  if (t.small_patches > 0)
+    out.push_back(count(t.small_patches, "patch has", "patches have") + " fewer than " +
+                  str(kMinPatchFaces) + " faces (first: patch " + str(t.first_small_patch[0]) +
+                  ", " + count(t.first_small_patch[1], "face", "faces") +
+                  "): left unchanged; to process them, merge them into their neighbours.");
+  return out;
 }
 
 }  // namespace qd

@@ -66,7 +66,8 @@ int developability_code(const qd::PatchReport& p) {
 }
 
 // The figures pymeshlab hands back as a dict. Totals are over the whole mesh; percentages as in
-// Eqs. (19)-(20) between the input and the result; lengths in model units and in AE.
+// Eqs. (19)-(20) between the input and the result; lengths in model units and in AE. pymeshlab
+// 2025.07 drops string values, so the warnings are counted here; their text is in the log.
 std::map<std::string, QVariant> figures_dict(const qd::Result& r) {
   const qd::Figures& before = r.total_before;
   const qd::Figures& after = r.total_after;
@@ -91,6 +92,7 @@ std::map<std::string, QVariant> figures_dict(const qd::Result& r) {
       {"iterations", iterations},
       {"factorizations", r.factorizations},
       {"patches", static_cast<int>(r.patches.size())},
+      {"warnings", static_cast<int>(r.warnings.size())},
       {"time_ms", r.time_ms},
       {"patch_id", patch_list(r.patches, [](const P& p) { return p.id; })},
       {"patch_faces", patch_list(r.patches, [](const P& p) { return p.faces; })},

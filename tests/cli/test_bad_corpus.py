@@ -4,17 +4,20 @@
 "odd" cases: success with a complete output (same face count), or such a clean failure.
 Never a signal, never a partial file.
 """
+import json
 import pathlib
+import re
 import sys
 
 import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import make_bad_corpus  # noqa: E402
-from plyfile import element, read_ply  # noqa: E402
+from plyfile import column, element, read_ply  # noqa: E402
 from test_quasidev_cli import BINARY, run  # noqa: E402
 
 CASES = make_bad_corpus.cases()
+WARNED = make_bad_corpus.warned_cases()
 
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 
@@ -46,3 +49,26 @@ def test_every_case_says_what_the_plugin_does():
     """make_bad_corpus.PLUGIN_OUTCOMES (used by the meshlabserver and pymeshlab corpus tests)
     covers exactly the corpus' cases."""
     assert set(make_bad_corpus.PLUGIN_OUTCOMES) == {c[0] for c in CASES}
+
+
+def positions(path):
+    elements, _ = read_ply(path)
+    return list(zip(*(column(elements, "vertex", c) for c in "xyz")))
+
+
+@pytest.mark.parametrize("name", sorted(WARNED))
+def test_warned_case_keeps_its_part_and_does_the_rest(name, tmp_path):
+    """A run that must leave part of the mesh as it is succeeds, says so once on stderr and in
+    the report (count and first example), keeps those vertices bit-identical and moves others."""
+    data, warning, fixed, others = WARNED[name]
+    src, out, report = tmp_path / f"{name}.ply", tmp_path / "out.ply", tmp_path / "r.json"
+    src.write_bytes(data)
+    r = run(src, out, "--quiet", "--report", report)
+    assert r.returncode == 0, r.stderr
+    said = r.stderr.splitlines()
+    assert len(said) == 1 and said[0].startswith("quasidev: warning: "), r.stderr
+    assert re.search(warning, said[0]), said[0]
+    assert json.loads(report.read_text())["warnings"] == [said[0].removeprefix("quasidev: warning: ")]
+    before, after = positions(src), positions(out)
+    assert [after[v] for v in fixed] == [before[v] for v in fixed]
+    assert any(after[v] != before[v] for v in others)

@@ -16,6 +16,60 @@ Problem bumpy(double bump = 0.08) {
   return p;
 }
 
+// Rows of `vertices` equal to the bit in both; some other row differs.
+void expect_kept_and_rest_moved(const Positions& before, const Positions& after,
+                                const std::vector<int>& vertices) {
+  std::vector<char> kept(static_cast<size_t>(before.rows()), 0);
+  for (int v : vertices) {
+    kept[static_cast<size_t>(v)] = 1;
+    EXPECT_EQ(before.row(v), after.row(v)) << "vertex " << v;
+  }
+  bool moved = false;
+  for (Eigen::Index v = 0; v < before.rows(); ++v)
+    moved = moved || (!kept[static_cast<size_t>(v)] && before.row(v) != after.row(v));
+  EXPECT_TRUE(moved);
+  EXPECT_TRUE(after.allFinite());
+}
+
+TEST(Approximate, NonManifoldEdgeStaysAndTheRestIsDone) {
+  for (const SeamMode seams : {SeamMode::Fixed, SeamMode::Free}) {
+    Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 2);
+    p.params.tolerance = 0.2;
+    p.params.seams = seams;
+    const int a = p.F(500, 0), b = p.F(500, 1);  // an inner edge of sector 0 gets a flap
+    p.V.conservativeResize(p.V.rows() + 1, 3);
+    p.V.row(p.V.rows() - 1) = 0.5 * (p.V.row(a) + p.V.row(b)) + Eigen::RowVector3d(0, 0, 0.05);
+    p.F.conservativeResize(p.F.rows() + 1, 3);
+    p.F.row(p.F.rows() - 1) << b, a, static_cast<int>(p.V.rows() - 1);
+    p.patch.push_back(0);
+    const Result r = approximate(p);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("1 non-manifold edge"), std::string::npos) << r.warnings[0];
+    EXPECT_EQ(r.log.front(), "warning: " + r.warnings[0]);
+    EXPECT_EQ(r.k_before[static_cast<size_t>(a)], 0.0);  // no curvature on a non-manifold edge
+    expect_kept_and_rest_moved(p.V, r.V, {a, b});
+  }
+}
+
+TEST(Approximate, PatchesTooSmallStayUnchanged) {
+  for (const SeamMode seams : {SeamMode::Fixed, SeamMode::Free}) {
+    Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 2);
+    p.params.tolerance = 0.2;
+    p.params.seams = seams;
+    p.patch[600] = p.patch[601] = 9;  // a scrap of two faces inside sector 0
+    const Result r = approximate(p);
+    ASSERT_EQ(r.warnings.size(), 1u);
+    EXPECT_NE(r.warnings[0].find("1 patch has fewer than 4 faces (first: patch 9, 2 faces)"),
+              std::string::npos) << r.warnings[0];
+    ASSERT_EQ(r.patches.size(), 3u);
+    EXPECT_EQ(r.patches[2].target_kind, "unchanged");
+    std::vector<int> scrap;
+    for (int f : {600, 601})
+      for (int c = 0; c < 3; ++c) scrap.push_back(p.F(f, c));
+    expect_kept_and_rest_moved(p.V, r.V, scrap);
+  }
+}
+
 TEST(Approximate, FixedTargetsFactoriseOnceHoweverManyIterations) {
   Problem p = bumpy();
   p.params.targets = TargetMode::Fixed;

@@ -2,6 +2,7 @@
 // odd-but-workable inputs that must pass.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -131,16 +132,49 @@ TEST(Validate, ZeroAreaIsRelativeToEdgeLength) {
   EXPECT_EQ(message(p), "");
 }
 
-TEST(Validate, NonManifoldEdge) {
+// Two faces hang below edge 0–1 of patch 0: it is kept, fixed, with a warning.
+qd::Problem with_flaps() {
   qd::Problem p = two_patches();
   append_vertex(p, 0.5, -1, 1);
   append_face(p, 1, 0, 16, 0);  // edge 0–1 now has a third face below
   append_vertex(p, 0.5, -1, -1);
   append_face(p, 1, 0, 17, 0);
+  return p;
+}
+
+TEST(Validate, NonManifoldEdgePassesWithAWarning) {
+  const qd::Topology t = qd::validate(with_flaps());
+  EXPECT_TRUE(t.nonmanifold[0] && t.nonmanifold[1]);
+  EXPECT_EQ(std::count(t.nonmanifold.begin(), t.nonmanifold.end(), 1), 2);
+  const std::vector<std::string> w = qd::warnings(t);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_TRUE(mentions(w[0], "1 non-manifold edge ")) << w[0];
+  EXPECT_TRUE(mentions(w[0], "first: between vertices 0 and 1")) << w[0];
+  EXPECT_TRUE(mentions(w[0], "their 2 vertices are kept fixed")) << w[0];
+  EXPECT_TRUE(mentions(w[0], "Repair non Manifold Edges")) << w[0];
+}
+
+TEST(Validate, CleanMeshHasNoWarnings) {
+  EXPECT_TRUE(qd::warnings(qd::validate(two_patches())).empty());
+}
+
+TEST(Validate, DuplicateFaces) {
+  qd::Problem p = two_patches();
+  append_face(p, 0, 1, 5, 0);  // face 0 again
+  append_face(p, 5, 0, 1, 0);  // and again, rotated
   const std::string m = message(p);
-  EXPECT_TRUE(mentions(m, "1 non-manifold edge ")) << m;
-  EXPECT_TRUE(mentions(m, "vertices 0 and 1")) << m;
-  EXPECT_TRUE(mentions(m, "Repair non Manifold Edges")) << m;
+  EXPECT_TRUE(mentions(m, "2 duplicate faces (first: faces 0 and 18 ")) << m;
+  EXPECT_TRUE(mentions(m, "Remove Duplicate Faces")) << m;
+}
+
+TEST(Validate, NothingFreeButNonManifoldAndSmallPatchVertices) {
+  qd::Problem p = with_flaps();
+  p.patch.assign(p.patch.size(), 0);
+  p.constrained.assign(static_cast<size_t>(p.V.rows()), 1);
+  p.constrained[0] = p.constrained[1] = 0;
+  const std::string m = message(p);
+  EXPECT_TRUE(mentions(m, "2 on non-manifold edges")) << m;
+  EXPECT_TRUE(mentions(m, "or repair the mesh")) << m;
 }
 
 TEST(Validate, PatchVectorOfWrongSize) {
@@ -157,11 +191,26 @@ TEST(Validate, ConstrainedVectorOfWrongSize) {
   EXPECT_TRUE(mentions(m, "3 constrained flags for 16 vertices")) << m;
 }
 
-TEST(Validate, TooSmallPatch) {
+TEST(Validate, TooSmallPatchPassesWithAWarning) {
   qd::Problem p = two_patches();
   p.patch[17] = 7;
+  p.patch[16] = 7;
+  p.patch[0] = 3;
+  const qd::Topology t = qd::validate(p);
+  EXPECT_EQ(t.small_patches, 2);
+  EXPECT_TRUE(t.in_small_patch[0] && t.in_small_patch[1] && t.in_small_patch[5]);
+  EXPECT_FALSE(t.in_small_patch[6]);
+  const std::vector<std::string> w = qd::warnings(t);
+  ASSERT_EQ(w.size(), 1u);
+  EXPECT_TRUE(mentions(w[0], "2 patches have fewer than 4 faces (first: patch 3, 1 face)")) << w[0];
+  EXPECT_TRUE(mentions(w[0], "left unchanged")) << w[0];
+}
+
+TEST(Validate, AllPatchesTooSmall) {
+  qd::Problem p = two_patches();
+  for (size_t f = 0; f < p.patch.size(); ++f) p.patch[f] = static_cast<int>(f / 3);
   const std::string m = message(p);
-  EXPECT_TRUE(mentions(m, "Patch 7")) << m;
+  EXPECT_TRUE(mentions(m, "Patch 0 has only 3 faces (6 patches have fewer than ")) << m;
   EXPECT_TRUE(mentions(m, std::to_string(qd::kMinPatchFaces))) << m;
 }
 

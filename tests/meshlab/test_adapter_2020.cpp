@@ -6,6 +6,7 @@
 
 #include <QDomDocument>
 #include <QFile>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -215,14 +216,18 @@ TEST(Adapter2020, FailureLeavesTheMeshUntouched) {
   EXPECT_EQ(after.vertex_flags, before.vertex_flags);
 }
 
-TEST(Adapter2020, TooSmallPatchFailsWithItsId) {
+TEST(Adapter2020, TooSmallPatchIsLeftUnchangedWithAWarning) {
   CMeshO m;
   make_bumpy_cylinder(m);
   m.face[10].Q() = 7.2f;  // rounds to patch 7, which has a single face
+  std::vector<vcg::Point3f> corners;
+  for (int k = 0; k < 3; ++k) corners.push_back(m.face[10].V(k)->P());
   const qdml::Outcome out = qdml::apply(m, true, qdml::settings_from_values(default_values(m)), nullptr);
-  EXPECT_FALSE(out.ok);
-  EXPECT_NE(out.error.find("Patch 7"), std::string::npos) << out.error;
-  const qdml::Outcome ignored =
-      qdml::apply(m, false, qdml::settings_from_values(default_values(m)), nullptr);
-  EXPECT_TRUE(ignored.ok) << "without per-face quality the mesh is one patch: " << ignored.error;
+  ASSERT_TRUE(out.ok) << out.error;
+  ASSERT_EQ(out.result.warnings.size(), 1u);
+  EXPECT_NE(out.result.warnings[0].find("first: patch 7, 1 face"), std::string::npos)
+      << out.result.warnings[0];
+  EXPECT_NE(std::find(out.log.begin(), out.log.end(), "warning: " + out.result.warnings[0]),
+            out.log.end());
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(m.face[10].V(k)->P(), corners[static_cast<size_t>(k)]);
 }

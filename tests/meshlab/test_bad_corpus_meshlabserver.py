@@ -20,6 +20,7 @@ sys.path.insert(0, str(REPO / "tests" / "cli"))
 import make_bad_corpus  # noqa: E402
 
 CASES = make_bad_corpus.cases()
+WARNED = make_bad_corpus.warned_cases()
 PREVIOUS = b"previous result\n"
 
 
@@ -52,3 +53,20 @@ def test_corpus_case_through_meshlabserver(case, meshlab_prefix, tmp_path):
         if faces_in is not None:
             assert len(result.f) == faces_in
         assert np.isfinite(result.v).all()
+
+
+@pytest.mark.parametrize("name", sorted(WARNED))
+def test_warned_case_through_meshlabserver(name, meshlab_prefix, tmp_path):
+    """The filter succeeds on a mesh it must partly leave as it is, logs one warning with the
+    count and first example, keeps those vertices bit-identical and moves others."""
+    data, warning, fixed, others = WARNED[name]
+    source, out = tmp_path / f"{name}.ply", tmp_path / "out.ply"
+    source.write_bytes(data)
+    run = run_meshlabserver(meshlab_prefix, source, out, write_mlx(tmp_path / "job.mlx", {}))
+    assert run.returncode == 0, run.stdout[-3000:]
+    said = re.findall(r"LOG: \d+ warning: (.*)", run.stdout)
+    assert len(said) == 1 and re.search(warning, said[0]), run.stdout[-3000:]
+    before = load_mesh(source).v.astype(np.float32)  # MeshLab 2020.09 holds float positions
+    after = load_mesh(out).v.astype(np.float32)
+    assert np.array_equal(after[fixed], before[fixed])
+    assert (after[others] != before[others]).any()

@@ -7,7 +7,8 @@ Usage: python bad_corpus_worker.py PLUGIN MESH.ply PARAMETERS_JSON {file|arrays}
   arrays = read it with scripts/plyio.py and hand pymeshlab the raw vertex and face arrays
            (pymeshlab's importer drops non-finite vertices, so NaN/inf reach the filter only so).
 Output: {"stage": "load" | "filter" | "done", "message": str, "unchanged": bool,
-         "faces_in": int, "faces_out": int, "finite": bool}
+         "faces_in": int, "faces_out": int, "finite": bool, "warnings": int (the filter's count),
+         "moved": [indices of the vertices whose position changed]}
 """
 from __future__ import annotations
 
@@ -52,8 +53,9 @@ def main(plugin: str, path: str, parameters: str, mode: str) -> dict:
     except pymeshlab.PyMeshLabException as e:
         return {"stage": "load", "message": str(e)}
     before = snapshot(ms.current_mesh())
+    returned = {}
     try:
-        ms.apply_filter(FILTER, **json.loads(parameters))
+        returned = ms.apply_filter(FILTER, **json.loads(parameters))
         stage, message = "done", ""
     except pymeshlab.PyMeshLabException as e:
         stage, message = "filter", str(e)
@@ -64,7 +66,10 @@ def main(plugin: str, path: str, parameters: str, mode: str) -> dict:
         for a, b in zip(before, after))
     return {"stage": stage, "message": message, "unchanged": unchanged,
             "faces_in": int(len(before[1])), "faces_out": int(mesh.face_number()),
-            "finite": bool(np.isfinite(mesh.vertex_matrix()).all())}
+            "finite": bool(np.isfinite(mesh.vertex_matrix()).all()),
+            "warnings": int(returned.get("warnings", 0)),
+            "moved": np.flatnonzero((before[0] != after[0]).any(axis=1)).tolist()
+            if before[0].shape == after[0].shape else []}
 
 
 if __name__ == "__main__":

@@ -4,7 +4,8 @@
 For every case: the process ends normally, never by a signal; files MeshLab's importer refuses
 raise its PyMeshLabException; when our filter refuses the mesh it raises with our one-line reason
 and every vertex and face array of the mesh is bit-identical to before; merely odd input succeeds
-and keeps every face with finite positions.
+and keeps every face with finite positions; where it must leave part of the mesh as it is, the
+filter's dict counts one warning and those vertices keep their positions to the bit.
 """
 from __future__ import annotations
 
@@ -22,6 +23,7 @@ sys.path.insert(0, os.path.join(ROOT, "tests", "cli"))
 import make_bad_corpus  # noqa: E402
 
 CASES = make_bad_corpus.cases()
+WARNED = make_bad_corpus.warned_cases()
 WORKER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bad_corpus_worker.py")
 # pymeshlab's importer silently drops non-finite vertices: these reach the filter as raw arrays.
 AS_ARRAYS = {"nan_coordinates", "inf_coordinates"}
@@ -52,3 +54,8 @@ def test_corpus_case_through_pymeshlab(case, tmp_path):
     else:
         assert got["stage"] == "done", got
         assert got["faces_out"] == got["faces_in"] and got["finite"], got
+        assert got["warnings"] == (1 if name in WARNED else 0), got
+        if name in WARNED:  # the kept vertices bit-identical, some others moved
+            _, _, fixed, others = WARNED[name]
+            assert not set(fixed) & set(got["moved"]), got["moved"]
+            assert set(others) & set(got["moved"]), got["moved"]
