@@ -206,6 +206,19 @@ def shared_qrange(meshes: list[Mesh], given) -> tuple[float, float]:
     return (-m, m)
 
 
+def camera(meshes: list[Mesh], view, up: str | None, panel: tuple[int, int]):
+    """One camera for all meshes, framed to fit them all in a panel of that size: (basis, scale in
+    px/unit, centre, (azimuth, elevation, up)); view and up default to auto from the first mesh."""
+    up = up or auto_up(meshes[0])
+    az, el = view if view is not None else (auto_azimuth(meshes[0], up), AUTO_ELEVATION)
+    basis = camera_basis(view_direction(up, az, el), up)
+    allv = np.concatenate([m.v for m in meshes])
+    centre = 0.5 * (allv.min(axis=0) + allv.max(axis=0))
+    extent = np.abs((allv - centre) @ basis.T)[:, :2].max(axis=0) * 2
+    scale = 0.92 * min(panel[0] / max(extent[0], 1e-300), panel[1] / max(extent[1], 1e-300))
+    return basis, scale, centre, (az, el, up)
+
+
 def font(size: int):
     try:
         return ImageFont.load_default(size=size)
@@ -216,16 +229,9 @@ def font(size: int):
 def render(paths: list[Path], out: Path, title: str, labels: list[str], view, up: str | None,
            mode: str, qrange, flat: bool, size: tuple[int, int]) -> None:
     meshes = [Mesh(read_ply(p), p.name) for p in paths]
-    up = up or auto_up(meshes[0])
-    az, el = view if view is not None else (auto_azimuth(meshes[0], up), AUTO_ELEVATION)
-    basis = camera_basis(view_direction(up, az, el), up)
-    allv = np.concatenate([m.v for m in meshes])
-    centre = 0.5 * (allv.min(axis=0) + allv.max(axis=0))
-    proj = (allv - centre) @ basis.T
     title_h, label_h = 34, 22
     panel = (size[0] // len(meshes), size[1] - title_h - label_h)
-    extent = np.abs(proj[:, :2]).max(axis=0) * 2
-    scale = 0.92 * min(panel[0] / max(extent[0], 1e-300), panel[1] / max(extent[1], 1e-300))
+    basis, scale, centre, (az, el, up) = camera(meshes, view, up, panel)
     qr = shared_qrange(meshes, qrange)
     canvas = Image.new("RGB", size, BACKGROUND)
     draw = ImageDraw.Draw(canvas)
