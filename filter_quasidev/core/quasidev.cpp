@@ -86,8 +86,8 @@ std::string format(const char* fmt, double a, double b = 0, double c = 0, double
 // The term of a patch from the parameter and its Step 1 fit. Curve is the paper; the angle
 // defects need no fit, so they also take patches whose normals fill the sphere.
 void choose_term(PatchFit& p, Developability mode) {
-  if (p.planar()) {
-    p.why = "planar";
+  if (p.planar() || p.faces.size() < static_cast<size_t>(kMinPatchFaces)) {
+    p.why = p.planar() ? "planar" : "too small";
     return;
   }
   const bool fitted = p.skipped.empty();

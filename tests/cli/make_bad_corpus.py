@@ -173,7 +173,8 @@ def cases():
         ("every_face_own_patch", ply_ascii(V, F, face_quality=list(range(len(F)))), [], "odd"),
         ("patch_all_selected", ply_ascii(cV, cF, face_quality=[0] * len(cF),
                                          vertex_flags=[0x20] * len(cV)), [], "odd"),
-        ("closed_sphere", ply_ascii(*icosphere()), [], "odd"),
+        ("closed_sphere", ply_ascii(*icosphere()), ["--developability", "curve"], "odd"),
+        ("closed_sphere_defect_rows", ply_ascii(*icosphere()), [], "odd"),
         ("flat_patch", ply_ascii(*grid(10, height=lambda x, y: 0.0)), [], "odd"),
         ("huge_coordinates", ply_ascii(*grid(12, scale=1e12)), [], "odd"),
         ("tiny_coordinates", ply_ascii(*grid(12, scale=1e-12)), [], "odd"),
@@ -231,6 +232,7 @@ PLUGIN_OUTCOMES = {
     "every_face_own_patch": r"Patch 0 has only 1 face \(288 patches have fewer than 4\)",
     "patch_all_selected": r"All 312 vertices are constrained",
     "closed_sphere": r"normals fill the sphere",
+    "closed_sphere_defect_rows": None,
     "flat_patch": None, "huge_coordinates": None, "tiny_coordinates": None,
     "bumpy_cylinder": None,
     "hundred_thousand_patches": r"Patch 0 has only 1 face \(100000 patches have fewer than 4\)",
@@ -239,8 +241,10 @@ PLUGIN_OUTCOMES = {
 
 # The command's options of the corpus -> the filter's parameters (same meaning; the filter's
 # tolerance is in model units, the command's in AE, which only matters for positive values).
+DEVELOPABILITY = ["curve", "defect", "both", "auto"]  # the filter's enum values, in order
 _PLUGIN_PARAMETER = {"--tolerance": ("tolerance", float), "--max-iter": ("max_iter", int),
-                     "--weight": ("weight", float)}
+                     "--weight": ("weight", float),
+                     "--developability": ("developability", DEVELOPABILITY.index)}
 
 
 def plugin_parameters(args):

