@@ -2,7 +2,6 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
-#include <utility>
 
 #include "anchor_weights.h"
 #include "conjugate_gradients.h"
@@ -32,10 +31,11 @@ constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 }  // namespace
 
 DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& params, double ae,
-                                     DefectStars defects)
+                                     const std::vector<char>& defect_rows)
     : g_(group), w_(params.weight), incident_(group.F, group.V0.rows()),
-      defects_(std::move(defects)), solver_(params.solver), threads_(params.threads),
-      cholesky_(params.solver) {
+      defects_(defect_rows.empty() ? DefectStars{}
+                                   : defect_stars(g_, incident_, defect_rows, params.defect_weight)),
+      solver_(params.solver), threads_(params.threads), cholesky_(params.solver) {
   const size_t n = g_.fixed.size();
   std::vector<int> free_index(n, -1);
   int free_count = 0;

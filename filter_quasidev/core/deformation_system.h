@@ -52,18 +52,22 @@ constexpr int kCgIterations = 40;
 class DeformationSystem {
  public:
   // From params: w of Eq. (8), α of Eq. (15), the solver, the method and the threads this
-  // group may use; ae: average edge length for Eq. (15); defects: the angle-defect rows
-  // (angle_defect.h), whose stars widen M's pattern to pairs of vertices with a common
-  // neighbour.
+  // group may use; ae: average edge length for Eq. (15); defect_rows: per local vertex, 1 =
+  // it gets an angle-defect row (angle_defect.h; empty = none), whose star widens M's pattern
+  // to pairs of vertices with a common neighbour.
   DeformationSystem(const GroupMesh& group, const Params& params, double ae,
-                    DefectStars defects = {});
+                    const std::vector<char>& defect_rows = {});
 
   // Assembles M (Eq. 17) for one target normal per group face (a zero vector: no
   // developability rows of Eq. 13 for that face) and the angle-defect rows linearised at the
   // reference positions of the next solve (empty when the group has none).
   void set_rows(const std::vector<Vec3>& targets, const DefectLinearisation& defects = {});
 
-  const DefectStars& defect_stars() const { return defects_; }
+  bool has_defect_rows() const { return !defects_.empty(); }
+  // The angle-defect rows linearised at X, for set_rows.
+  DefectLinearisation linearise_defects_at(const Positions& X) const {
+    return linearise_defects(defects_, g_, incident_, X);
+  }
 
   // Right-hand side Aᵀc − M_fc·x_c + anchor terms for reference positions `ref`.
   Eigen::VectorXd rhs(const Positions& ref) const;

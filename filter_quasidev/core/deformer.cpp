@@ -4,7 +4,6 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <utility>
 
 #include "deformation_system.h"
 #include "metrics.h"
@@ -47,14 +46,14 @@ GroupPatches group_patches(const GroupMesh& g) {
                                              static_cast<int>(part_of_id.size())).first->second);
   std::vector<char> is_owned(g.fixed.size(), 0);
   for (int v : g.owned) is_owned[static_cast<size_t>(v)] = 1;
-  std::vector<std::vector<char>> seen(part_of_id.size(), std::vector<char>(g.fixed.size(), 0));
-  p.owned.resize(part_of_id.size());
-  for (Eigen::Index f = 0; f < g.solve_faces; ++f) {
-    const auto k = static_cast<size_t>(p.face_part[static_cast<size_t>(f)]);
-    for (int c = 0; c < 3; ++c) {
-      const auto v = static_cast<size_t>(g.F(f, c));
-      if (is_owned[v] && !seen[k][v]++) p.owned[k].push_back(static_cast<int>(v));
-    }
+  p.owned.resize(part_of_id.size());  // not a flag per vertex and part: patches × vertices
+  for (Eigen::Index f = 0; f < g.solve_faces; ++f)
+    for (int c = 0; c < 3; ++c)
+      if (is_owned[static_cast<size_t>(g.F(f, c))])
+        p.owned[static_cast<size_t>(p.face_part[static_cast<size_t>(f)])].push_back(g.F(f, c));
+  for (std::vector<int>& owned : p.owned) {
+    std::sort(owned.begin(), owned.end());
+    owned.erase(std::unique(owned.begin(), owned.end()), owned.end());
   }
   return p;
 }
@@ -156,7 +155,7 @@ int flipped_faces(const Triangles& F, const Positions& V0, const Positions& V) {
 }
 
 DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
-                     const Retarget& retarget, DefectStars defects, const Params& params,
+                     const Retarget& retarget, const std::vector<char>& defect_rows, const Params& params,
                      double ae, const std::function<void(double)>& progress) {
   const std::vector<int> faces = all_indices(group.solve_faces);
   const std::vector<int> vertices = all_indices(group.solve_vertices);
@@ -169,14 +168,13 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
 
   DeformationSystem system = [&] {  // MLS weights, ordering, sparsity pattern
     StageTimer timer(out.times.setup);
-    return DeformationSystem(group, params, ae, std::move(defects));
+    return DeformationSystem(group, params, ae, defect_rows);
   }();
-  const VertexFaces incident(group.F, group.V0.rows());
   const auto linearised = [&](const Positions& X) {  // the defect rows at X
     StageTimer timer(out.times.assembly);
-    return linearise_defects(system.defect_stars(), group, incident, X);
+    return system.linearise_defects_at(X);
   };
-  const bool has_defects = !system.defect_stars().empty();
+  const bool has_defects = system.has_defect_rows();
   const GroupPatches parts = group_patches(group);
   std::vector<Vec3> current_targets = targets;
   system.set_rows(current_targets, linearised(group.V0));  // Algorithm 1, steps 2.1–2.3

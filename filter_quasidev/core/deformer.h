@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "angle_defect.h"
 #include "group_mesh.h"
 #include "params.h"
 #include "progress.h"
@@ -27,11 +26,12 @@ struct DeformOutcome {
 };
 
 // targets: initial target per group face (zero: no Eq. 13 developability rows for it);
-// retarget: used between iterations unless params.targets == TargetMode::Fixed; defects: the
-// angle-defect rows (angle_defect.h), linearised again before every solve; progress receives
+// retarget: used between iterations unless params.targets == TargetMode::Fixed; defect_rows:
+// per local vertex, 1 = an angle-defect row (angle_defect.h; empty = none), linearised again
+// before every solve; progress receives
 // the fraction of max_iter done.
 DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
-                     const Retarget& retarget, DefectStars defects, const Params& params,
+                     const Retarget& retarget, const std::vector<char>& defect_rows, const Params& params,
                      double ae, const std::function<void(double)>& progress);
 
 // Limits the step from `current` to `proposed` by the group's δ_err (§5.2). Step mode:

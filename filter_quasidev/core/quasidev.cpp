@@ -13,7 +13,6 @@
 #include <thread>
 #include <unordered_set>
 
-#include "angle_defect.h"
 #include "deformer.h"
 #include "error.h"
 #include "group_mesh.h"
@@ -196,9 +195,9 @@ Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, Ta
   };
 }
 
-// Angle-defect rows for the free interior vertices that touch a face of a defect patch.
-DefectStars group_defect_stars(const GroupMesh& g, const std::vector<PatchFit>& fits,
-                               const Params& params) {
+// Per local vertex, 1 = an angle-defect row: the free interior vertices that touch a face of
+// a defect patch (empty when there is none).
+std::vector<char> group_defect_rows(const GroupMesh& g, const std::vector<PatchFit>& fits) {
   std::vector<char> has_row(g.fixed.size(), 0);
   for (const PatchFit& p : fits)
     if (p.has_defects())
@@ -212,7 +211,7 @@ DefectStars group_defect_stars(const GroupMesh& g, const std::vector<PatchFit>& 
     any = any || has_row[v];
   }
   if (!any) return {};
-  return defect_stars(g, VertexFaces(g.F, g.V0.rows()), has_row, params.defect_weight);
+  return has_row;
 }
 
 std::vector<int> indices(size_t n) {
@@ -298,7 +297,7 @@ GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int
                                   : "left unchanged: " + run.fits.front().skipped;
   } else {
     run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets),
-                         group_defect_stars(g, run.fits, params), params, ae, progress);
+                         group_defect_rows(g, run.fits), params, ae, progress);
   }
   run.outcome.times.setup += setup_ms;
   run.outcome.times.step1 += step1_ms;

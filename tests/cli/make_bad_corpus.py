@@ -56,34 +56,30 @@ def grid(n, height=lambda x, y: 0.1 * math.sin(2 * x) * math.cos(3 * y), scale=1
     return V, F
 
 
-def cylinder(n_around=24, n_along=12, bump=0.05):
-    V, F = [], []
-    for j in range(n_along + 1):
-        for i in range(n_around):
-            t = 2 * math.pi * i / n_around
-            z = j / n_along
-            r = 1 + bump * math.exp(-((t - 1) ** 2 + (z - 0.5) ** 2) / 0.05)
-            V.append((r * math.cos(t), r * math.sin(t), 2 * z))
-    for j in range(n_along):
-        for i in range(n_around):
-            a, b = j * n_around + i, j * n_around + (i + 1) % n_around
-            F += [(a, b, b + n_around), (a, b + n_around, a + n_around)]
-    return V, F
-
-
-def wavy_tube(n_around=24, n_along=16):
-    """A tube rippled all round (no developable part), as rows of n_around vertices."""
+def tube(radius, n_around, n_along):
+    """An open tube of height 2 along z, radius(t, z) at angle t and height fraction z, as rows
+    of n_around vertices."""
     V, F = [], []
     for j in range(n_along + 1):
         for i in range(n_around):
             t, z = 2 * math.pi * i / n_around, j / n_along
-            r = 1 + 0.08 * math.sin(3 * t) * math.sin(2 * math.pi * z)
+            r = radius(t, z)
             V.append((r * math.cos(t), r * math.sin(t), 2 * z))
     for j in range(n_along):
         for i in range(n_around):
             a, b = j * n_around + i, j * n_around + (i + 1) % n_around
             F += [(a, b, b + n_around), (a, b + n_around, a + n_around)]
     return V, F
+
+
+def cylinder(n_around=24, n_along=12, bump=0.05):
+    return tube(lambda t, z: 1 + bump * math.exp(-((t - 1) ** 2 + (z - 0.5) ** 2) / 0.05),
+                n_around, n_along)
+
+
+def wavy_tube(n_around=24, n_along=16):
+    """A tube rippled all round (no developable part), as rows of n_around vertices."""
+    return tube(lambda t, z: 1 + 0.08 * math.sin(3 * t) * math.sin(2 * math.pi * z), n_around, n_along)
 
 
 def polo_with_placket(n_around=24, n_along=16, column=6, seams=11):
