@@ -35,7 +35,7 @@ std::vector<BareGroup> bare_solver_times(const Problem& problem, int runs) {
   const Params& params = problem.params;
   const size_t nf = static_cast<size_t>(problem.F.rows());
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
-  const VertexRoles roles = vertex_roles(problem, topo);
+  const VertexRoles roles = vertex_roles(problem, topo, problem.params.seams);
   std::map<int, std::vector<int>> groups;
   for (size_t f = 0; f < nf; ++f)
     groups[params.seams == SeamMode::Fixed ? patch[f] : -1].push_back(static_cast<int>(f));

@@ -1,7 +1,8 @@
 // Step 2 of Algorithm 1 (paper §5.4) for one group: iterate solve → clamp to δ_err → accept,
 // with the three stop criteria (maxIter, ratio_ABD < δ_ABD, ratio_OBD < δ_OBD; Eqs. 19–20) and
 // the never-worse rule (beyond the paper): a step that raises G_ABD or flips a face is halved,
-// and if no shortened step helps, the iteration is rejected and the group stops.
+// and if no shortened step helps, the iteration is rejected and the group stops. With
+// angle-defect rows, a step that folds faces is first tried with their vertices held back.
 #pragma once
 
 #include <functional>

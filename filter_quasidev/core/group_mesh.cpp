@@ -16,7 +16,7 @@ VertexFaces::VertexFaces(const Triangles& F, Eigen::Index vertex_count)
       faces[static_cast<size_t>(next[static_cast<size_t>(F(f, c))]++)] = static_cast<int>(f);
 }
 
-VertexRoles vertex_roles(const Problem& problem, const Topology& topo) {
+VertexRoles vertex_roles(const Problem& problem, const Topology& topo, SeamMode seams) {
   const Params& params = problem.params;
   const size_t n = static_cast<size_t>(problem.V.rows());
   VertexRoles roles{std::vector<char>(n), std::vector<char>(n)};
@@ -25,7 +25,7 @@ VertexRoles vertex_roles(const Problem& problem, const Topology& topo) {
     roles.interior[v] = topo.used[v] && !topo.boundary[v] && !topo.nonmanifold[v];
     roles.constrained[v] = (!problem.constrained.empty() && problem.constrained[v]) ||
                            (params.keep_boundary && topo.boundary[v]) ||
-                           (params.seams == SeamMode::Fixed && topo.seam[v]) ||
+                           (seams == SeamMode::Fixed && topo.seam[v]) ||
                            topo.nonmanifold[v] || topo.in_small_patch[v];
   }
   return roles;
@@ -45,6 +45,10 @@ GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vecto
   std::vector<char> in_group(static_cast<size_t>(F.rows()), 0);
   for (int f : faces) in_group[static_cast<size_t>(f)] = 1;
 
+  std::vector<char> in_faces(static_cast<size_t>(V.rows()), 0);
+  for (int f : faces)
+    for (int c = 0; c < 3; ++c) in_faces[static_cast<size_t>(F(f, c))] = 1;
+  const auto touches = [&](size_t v) { return in_faces[v] != 0; };
   std::vector<int> ring;
   std::vector<char> in_ring(static_cast<size_t>(F.rows()), 0);
   for (int f : faces)
@@ -58,6 +62,30 @@ GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vecto
         }
       }
     }
+
+  // A free seam vertex moves the angles of the ring vertices around it: those are measured too
+  // (their whole star joins the ring), so the never-worse rule sees both sides of a free seam.
+  std::vector<char> measured_ring(static_cast<size_t>(V.rows()), 0);
+  for (size_t r = 0, first_layer = ring.size(); r < first_layer; ++r) {
+    const int f = ring[r];
+    bool moves = false;
+    for (int c = 0; c < 3; ++c) {
+      const auto v = static_cast<size_t>(F(f, c));
+      moves = moves || (!constrained[v] && touches(v));
+    }
+    for (int c = 0; c < 3 && moves; ++c) {
+      const auto u = static_cast<size_t>(F(f, c));
+      if (touches(u) || !interior[u] || measured_ring[u]) continue;
+      measured_ring[u] = 1;
+      for (int k = incident.start[u]; k < incident.start[u + 1]; ++k) {
+        const auto h = static_cast<size_t>(incident.faces[static_cast<size_t>(k)]);
+        if (!in_group[h] && !in_ring[h]) {
+          in_ring[h] = 1;
+          ring.push_back(static_cast<int>(h));
+        }
+      }
+    }
+  }
 
   g.solve_faces = static_cast<Eigen::Index>(faces.size());
   g.F.resize(g.solve_faces + static_cast<Eigen::Index>(ring.size()), 3);
@@ -95,7 +123,7 @@ GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vecto
     const auto v = static_cast<size_t>(g.global_vertex[l]);
     g.V0.row(static_cast<Eigen::Index>(l)) = V.row(static_cast<Eigen::Index>(v));
     g.fixed[l] = constrained[v] || !touched_by_group[l];
-    if (interior[v] && touched_by_group[l]) g.owned.push_back(static_cast<int>(l));
+    if (interior[v] && (touched_by_group[l] || measured_ring[v])) g.owned.push_back(static_cast<int>(l));
   }
   return g;
 }

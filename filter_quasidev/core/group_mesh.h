@@ -1,5 +1,5 @@
-// A solve group: the faces of one patch (fixed seams) or of all patches (free seams), as a
-// small local mesh with its own vertex numbering, so every step costs O(group size).
+// A solve group: the faces of one patch (its seams fixed or free) or of all patches (free
+// seams' first pass, quasidev.cpp), as a small local mesh with its own vertex numbering, so every step costs O(group size).
 // Its faces are followed by a "ring": the other faces that touch the group's vertices. The ring
 // is measured (so the curvature of seam vertices counts) but never solved or moved.
 #pragma once
@@ -40,7 +40,7 @@ struct VertexRoles {
   std::vector<char> interior;
   std::vector<char> constrained;
 };
-VertexRoles vertex_roles(const Problem& problem, const Topology& topo);
+VertexRoles vertex_roles(const Problem& problem, const Topology& topo, SeamMode seams);
 
 // δ_err of a patch: its own tolerance if given, else the global one.
 double patch_tolerance(const Params& params, int patch_id);

@@ -1,5 +1,5 @@
-// Algorithm 1 of the paper over a whole mesh: validation, solve groups (one per patch with fixed
-// seams, one for all patches with free seams), Step 1 per patch, Step 2 per group, reports.
+// Algorithm 1 of the paper over a whole mesh: validation, solve groups (one per patch; free seams
+// in three passes, see approximate()), Step 1 per patch, Step 2 per group, reports.
 #include "quasidev.h"
 
 #include <algorithm>
@@ -321,9 +321,10 @@ Result approximate(const Problem& problem, const Progress& progress) {
   const Triangles& F = problem.F;
   const size_t nv = static_cast<size_t>(V.rows()), nf = static_cast<size_t>(F.rows());
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
-  const VertexRoles roles = vertex_roles(problem, topo);
+  const VertexRoles roles = vertex_roles(problem, topo, params.seams);
   const std::vector<char>& interior = roles.interior;
   const std::vector<char>& constrained = roles.constrained;
+  const std::vector<char> held = vertex_roles(problem, topo, SeamMode::Fixed).constrained;
   const VertexFaces incident(F, V.rows());
 
   Result r;
@@ -337,12 +338,31 @@ Result approximate(const Problem& problem, const Progress& progress) {
 
   std::map<int, std::vector<int>> faces_of_patch;
   for (size_t f = 0; f < nf; ++f) faces_of_patch[patch[f]].push_back(static_cast<int>(f));
+  // One group per patch, its seams held (the paper). Free seams take three passes, each
+  // starting where the one before ended, so none can undo another (never-worse rule): all
+  // patches in one group (its one step scale is set by the worst patch, so it stalls early on
+  // draped garments), then each patch with its seams held, then each patch again moving its
+  // seam vertices (moved by one patch, seen by the next, so they stay shared). Measured on the
+  // shared garments, free seams then remove more than fixed ones (issue 11). With a total
+  // tolerance the caps are measured from the input, so only the joint pass runs.
   std::vector<std::vector<int>> groups;
-  if (params.seams == SeamMode::Fixed) {
-    for (auto& [id, faces] : faces_of_patch) groups.push_back(faces);
-  } else {
+  std::vector<const char*> pass;  // of each group, named in the reports when there are several
+  const auto add_pass = [&](const char* name) {
+    for (auto& [id, faces] : faces_of_patch) {
+      groups.push_back(faces);
+      pass.push_back(name);
+    }
+  };
+  const bool free_seams = params.seams == SeamMode::Free;
+  const bool passes = !free_seams || params.tolerance_mode == ToleranceMode::Step;
+  if (free_seams) {
     groups.push_back(indices(nf));
+    pass.push_back("all patches at once");
   }
+  const size_t joint_groups = groups.size();
+  if (passes) add_pass("seams held");
+  const size_t held_groups = groups.size();  // [joint_groups, held_groups): `held` constraints
+  if (free_seams && passes) add_pass("seams free");
 
   // Step 1 and Step 2 per group, round by round (solve_rounds.h); the groups of a round share
   // no vertex and run in parallel from the positions the earlier rounds left.
@@ -358,6 +378,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
     const size_t threads = std::min(round.size(), thread_count(params.threads));
     Params group_params = params;  // a patch alone in its round has every thread
     group_params.threads = static_cast<int>(round.size() == 1 ? thread_count(params.threads) : 1);
+    const bool seams_held = round.front() >= joint_groups && round.front() < held_groups;
     parallel_for(round.size(), threads, [&](size_t k) {
       const auto group_progress = [&](double fraction) {  // only the caller's thread reports
         if (progress && std::this_thread::get_id() == caller)
@@ -365,7 +386,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
                                     static_cast<double>(groups.size())),
                    "deforming");
       };
-      runs[round[k]] = run_group(r.V, F, groups[round[k]], patch, constrained, interior,
+      runs[round[k]] = run_group(r.V, F, groups[round[k]], patch, seams_held ? held : constrained, interior,
                                  incident, group_params, r.average_edge, group_progress);
       ++done;
     });
@@ -381,7 +402,8 @@ Result approximate(const Problem& problem, const Progress& progress) {
   size_t skipped_patches = 0;
   std::string first_skip;  // the reason of the first patch Step 1 could not fit
   std::map<int, PatchReport> reports;
-  for (const GroupRun& run : runs) {
+  for (size_t gi = 0; gi < runs.size(); ++gi) {
+    const GroupRun& run = runs[gi];
     r.times += run.outcome.times;
     for (size_t f = 0; f < run.targets.size(); ++f)
       initial_target[static_cast<size_t>(run.group.global_face[f])] = run.targets[f];
@@ -391,14 +413,17 @@ Result approximate(const Problem& problem, const Progress& progress) {
       rep.target_kind = p.fit.model->kind();
       rep.fit_residual_deg = p.fit.residual_deg;
       rep.tolerance = patch_tolerance(params, p.id);
-      rep.iterations = static_cast<int>(run.outcome.history.size());
+      const bool first = rep.stop_reason.empty();
+      rep.iterations += static_cast<int>(run.outcome.history.size());
       rep.developability = term_name(p.term);
       rep.developability_reason = p.why;
       const bool unfitted = p.idle() && !p.skipped.empty();
-      rep.stop_reason = unfitted ? "left unchanged: " + p.skipped : run.outcome.stop_reason;
-      if (unfitted && skipped_patches++ == 0) first_skip = "patch " + std::to_string(p.id) + ": " + p.skipped;
-      rep.history = run.outcome.history;
-      rep.time_ms = run.time_ms / static_cast<double>(run.fits.size());
+      std::string stop = unfitted ? "left unchanged: " + p.skipped : run.outcome.stop_reason;
+      if (free_seams) stop = pass[gi] + (": " + stop);
+      rep.stop_reason = first ? stop : rep.stop_reason + "; then " + stop;
+      if (unfitted && first && skipped_patches++ == 0) first_skip = "patch " + std::to_string(p.id) + ": " + p.skipped;
+      rep.history.insert(rep.history.end(), run.outcome.history.begin(), run.outcome.history.end());
+      rep.time_ms += run.time_ms / static_cast<double>(run.fits.size());
     }
   }
   r.factorizations = r.times.factorizations;

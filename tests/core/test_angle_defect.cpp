@@ -56,7 +56,7 @@ struct OneGroup {
   }
   static GroupMesh group(const Problem& p) {
     const Topology topo = validate(p);
-    const VertexRoles roles = vertex_roles(p, topo);
+    const VertexRoles roles = vertex_roles(p, topo, p.params.seams);
     std::vector<int> faces(static_cast<size_t>(p.F.rows()));
     for (size_t f = 0; f < faces.size(); ++f) faces[f] = static_cast<int>(f);
     return extract_group(p.V, p.F, faces, std::vector<int>(faces.size(), 0), roles.constrained,
