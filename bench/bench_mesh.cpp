@@ -31,4 +31,29 @@ meshio::MeshFile curved_sheet(long triangles, int patches) {
   return mesh;
 }
 
+meshio::MeshFile noisy_tube(long triangles) {
+  const double quads = static_cast<double>(triangles) / 2.0;
+  const int around = std::max(3, static_cast<int>(std::lround(std::sqrt(quads))));
+  const int rows = std::max(1, static_cast<int>(std::lround(quads / around)));
+  const double pi = std::acos(-1.0), height = 2 * pi, edge = height / rows;
+  unsigned long long state = 88172645463325252ULL;  // xorshift64: the same noise every run
+  const auto noise = [&] {
+    state ^= state << 13, state ^= state >> 7, state ^= state << 17;
+    return static_cast<double>(state % 2001) / 1000.0 - 1.0;  // in [−1, 1]
+  };
+  meshio::MeshFile mesh;
+  for (int j = 0; j <= rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double a = 2 * pi * i / around, r = 1.0 + 0.1 * edge * noise();
+      mesh.positions.push_back({r * std::cos(a), r * std::sin(a), edge * j});
+    }
+  const auto at = [&](int i, int j) { return j * around + i % around; };
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
 }  // namespace qd::bench

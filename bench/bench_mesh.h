@@ -10,4 +10,9 @@ namespace qd::bench {
 // About `triangles` triangles (2·columns·rows, aspect 1:1), split into `patches` bands.
 meshio::MeshFile curved_sheet(long triangles, int patches);
 
+// A closed tube (a cylinder of radius 1 and height 2π, open at both ends, no seam) of about
+// `triangles` triangles, every vertex moved along the radius by a pseudo-random 0.1 average
+// edge lengths (the same for every call): the noisy tube of issue 11, one patch.
+meshio::MeshFile noisy_tube(long triangles);
+
 }  // namespace qd::bench

@@ -2,7 +2,8 @@
 // JSON object: per-stage medians over several runs, peak memory, the bare solver floor and the
 // overhead ratios of issue 5. scripts/bench.py runs it over the suite and draws the scaling plot.
 //
-// Usage: qd_bench (--grid TRIANGLES [--patches P] [--save FILE] | --mesh FILE) [--runs R]
+// Usage: qd_bench (--grid TRIANGLES [--patches P] | --tube TRIANGLES | --mesh FILE) [--save FILE]
+//                 [--runs R]
 //                 [-- QUASIDEV OPTIONS]
 #include <sys/resource.h>
 #include <unistd.h>
@@ -48,6 +49,7 @@ double peak_rss_mb() {
 struct Args {
   long grid = 0;
   int patches = 1;
+  long tube = 0;
   std::string mesh;
   int runs = 5;
   std::string save;                   // keep the generated mesh here
@@ -64,13 +66,15 @@ Args parse(int argc, char** argv) {
     };
     if (s == "--grid") a.grid = std::stol(next());
     else if (s == "--patches") a.patches = std::stoi(next());
+    else if (s == "--tube") a.tube = std::stol(next());
     else if (s == "--mesh") a.mesh = next();
     else if (s == "--runs") a.runs = std::max(1, std::stoi(next()));
     else if (s == "--save") a.save = next();
     else if (s == "--") a.quasidev.assign(argv + i + 1, argv + argc), i = argc;
     else throw qd::Error("unknown argument " + s);
   }
-  if (a.grid <= 0 && a.mesh.empty()) throw qd::Error("give --grid TRIANGLES or --mesh FILE");
+  if (a.grid <= 0 && a.tube <= 0 && a.mesh.empty())
+    throw qd::Error("give --grid TRIANGLES, --tube TRIANGLES or --mesh FILE");
   return a;
 }
 
@@ -87,7 +91,8 @@ void run(const Args& a) {
   const std::string input = !a.mesh.empty() ? a.mesh : !a.save.empty() ? a.save : scratch + "_in.ply";
   const std::string output = scratch + "_out.ply";
   if (a.mesh.empty()) {
-    qd::meshio::MeshFile generated = qd::bench::curved_sheet(a.grid, a.patches);
+    qd::meshio::MeshFile generated =
+        a.tube > 0 ? qd::bench::noisy_tube(a.tube) : qd::bench::curved_sheet(a.grid, a.patches);
     if (!generated.patch.empty())  // patch ids travel as face quality, as MeshLab writes them
       generated.face_extra.push_back(qd::meshio::scalar_property(
           "quality", qd::meshio::ScalarType::Float32,
@@ -165,8 +170,9 @@ void run(const Args& a) {
       "\"floor\": %.3f}, "
       "\"overhead\": %.3f, \"solve_ratio\": %.3f, \"peak_mb\": %.1f, "
       "\"abd_reduction\": %.2f, \"progress_calls\": %ld}\n",
-      a.mesh.empty() ? ("grid" + std::to_string(a.grid) + "x" + std::to_string(a.patches)).c_str()
-                     : a.mesh.c_str(),
+      !a.mesh.empty() ? a.mesh.c_str()
+      : a.tube > 0    ? ("tube" + std::to_string(a.tube)).c_str()
+                      : ("grid" + std::to_string(a.grid) + "x" + std::to_string(a.patches)).c_str(),
       static_cast<long>(mesh.triangles.size()), static_cast<long>(mesh.positions.size()),
       result.patches.size(), a.runs, [&] {
         int it = 0;

@@ -82,6 +82,12 @@ std::string format(const char* fmt, double a, double b = 0, double c = 0, double
   return buf;
 }
 
+// "G_ABD a → b (−r%), " with the sign of the change: a rise reads "(+r%)".
+std::string g_abd_change(const Figures& before, const Figures& after, double reduction) {
+  return format(reduction >= 0 ? "G_ABD %.4g → %.4g (−%.1f%%), " : "G_ABD %.4g → %.4g (+%.1f%%), ",
+                before.g_abd, after.g_abd, std::abs(reduction));
+}
+
 // The term of a patch from the parameter and its Step 1 fit. Curve is the paper; the angle
 // defects need no fit, so they also take patches whose normals fill the sphere.
 void choose_term(PatchFit& p, Developability mode) {
@@ -234,8 +240,7 @@ std::string patch_log_line(const PatchReport& p, double ae) {
                   fit + ", developability " + p.developability + " (" + p.developability_reason +
                   "), " +
                   std::to_string(p.iterations) + " iteration(s) (stop: " + p.stop_reason + "), " +
-                  format("G_ABD %.4g → %.4g (−%.1f%%), ", p.before.g_abd, p.after.g_abd,
-                         p.abd_reduction) +
+                  g_abd_change(p.before, p.after, p.abd_reduction) +
                   format("last ratio_ABD %.1f%%, ratio_OBD %.1f%%, ", last.ratio_abd,
                          last.ratio_obd) +
                   format("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
@@ -252,8 +257,7 @@ std::string total_log_line(const Result& r) {
   int iterations = 0;
   for (const PatchReport& p : r.patches) iterations = std::max(iterations, p.iterations);
   return "total: " + std::to_string(r.patches.size()) + " patch(es), " +
-         format("G_ABD %.4g → %.4g (−%.1f%%), ", r.total_before.g_abd, r.total_after.g_abd,
-                r.abd_reduction) +
+         g_abd_change(r.total_before, r.total_after, r.abd_reduction) +
          format("max displacement %.3g AE (AE = %.4g), ", r.total_after.max_disp / r.average_edge,
                 r.average_edge) +
          "up to " + std::to_string(iterations) + " iterations, " + std::to_string(r.factorizations) +
