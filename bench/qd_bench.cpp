@@ -15,16 +15,16 @@
 #include <string>
 #include <vector>
 
+#include "approximate/quasidev.h"
 #include "atomic_file.h"
 #include "bare_solver.h"
 #include "bench_mesh.h"
-#include "error.h"
+#include "common/error.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
-#include "quasidev.h"
 
 namespace {
 

@@ -10,13 +10,13 @@
 #include <memory>
 #include <new>
 
+#include "approximate/quasidev.h"
 #include "atomic_file.h"
-#include "mesh_reader.h"
 #include "mesh_problem.h"
+#include "mesh_reader.h"
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
-#include "quasidev.h"
 #include "report_json.h"
 
 namespace {

@@ -4,7 +4,7 @@
 #include <map>
 #include <string>
 
-#include "error.h"
+#include "common/error.h"
 #include "text_scan.h"
 #include "triangulate.h"
 

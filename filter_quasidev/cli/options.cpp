@@ -4,8 +4,8 @@
 #include <functional>
 #include <sstream>
 
-#include "deformation_system.h"
-#include "sparse_cholesky.h"
+#include "approximate/deformation_system.h"
+#include "common/sparse_cholesky.h"
 #include "text_scan.h"
 
 namespace qd::cli {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "error.h"
-#include "params.h"
+#include "approximate/params.h"
+#include "common/error.h"
 
 namespace qd::cli {
 

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <limits>
 
-#include "error.h"
+#include "common/error.h"
 #include "scalar_value.h"
 #include "text_scan.h"
 

@@ -16,11 +16,11 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
-#include "error.h"
-#include "mesh.h"
-#include "quality_range.h"
-#include "quasidev.h"
-#include "validate.h"
+#include "approximate/quasidev.h"
+#include "approximate/validate.h"
+#include "common/error.h"
+#include "common/mesh.h"
+#include "common/quality_range.h"
 
 namespace qdml {
 

@@ -13,8 +13,8 @@
 #include <cstring>          // wrap/callback.h uses strcpy without including <cstring>
 #include <wrap/callback.h>  // vcg::CallBackPos
 
-#include "params.h"
-#include "result.h"
+#include "approximate/params.h"
+#include "approximate/result.h"
 
 class CMeshO;
 

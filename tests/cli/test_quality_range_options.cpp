@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
+#include "common/quality_range.h"
 #include "json_writer.h"
 #include "options.h"
-#include "quality_range.h"
 
 namespace {
 
