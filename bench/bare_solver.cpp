@@ -4,14 +4,14 @@
 #include <chrono>
 #include <map>
 
-#include "deformation_system.h"
-#include "error.h"
-#include "group_mesh.h"
-#include "mesh.h"
-#include "metrics.h"
-#include "sparse_cholesky.h"
-#include "target_normals.h"
-#include "validate.h"
+#include "approximate/deformation_system.h"
+#include "approximate/group_mesh.h"
+#include "approximate/target_normals.h"
+#include "approximate/validate.h"
+#include "common/error.h"
+#include "common/mesh.h"
+#include "common/metrics.h"
+#include "common/sparse_cholesky.h"
 
 namespace qd::bench {
 namespace {

@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "problem.h"
+#include "approximate/problem.h"
 
 namespace qd::bench {
 

@@ -16,16 +16,16 @@
 #include <string>
 #include <vector>
 
+#include "approximate/quasidev.h"
 #include "atomic_file.h"
 #include "bare_solver.h"
 #include "bench_mesh.h"
-#include "error.h"
+#include "common/error.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
-#include "quasidev.h"
 
 namespace {
 
@@ -102,7 +102,7 @@ void run(const Args& a) {
   }
   std::vector<std::string> args = {input, output};
   args.insert(args.end(), a.quasidev.begin(), a.quasidev.end());
-  const qd::cli::Options options = qd::cli::parse_options(args);
+  const qd::cli::Options options = qd::cli::parse_command_line(args).approximate;
 
   std::vector<double> read_ms, write_ms, wall_ms, setup, step1, assembly, factor, solve, metrics;
   qd::Result result;

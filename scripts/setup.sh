@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Installs everything the project needs on Debian 12 (idempotent; fast when already done):
 #   1. Debian packages for building (compiler, CMake, Qt5, Eigen, GLEW, SuiteSparse, GoogleTest,
-#      nanoflann; clang and its libFuzzer for tests/cli/run_sanitizers.sh) and running (meshlab
-#      2020.09, Xvfb, xdotool, ImageMagick, Mesa, python3-venv);
+#      nanoflann, CLI11, nlohmann-json; clang and its libFuzzer for tests/cli/run_sanitizers.sh)
+#      and running (meshlab 2020.09, Xvfb, xdotool, ImageMagick, Mesa, python3-venv);
 #   2. the MeshLab source trees whose headers the plugins compile against, from Debian's source
 #      packages (pinned by sha256), into third_party/meshlab-2020.09 and third_party/meshlab-2025.07;
 #   3. the Python venv .venv with every scripts/requirements-*.txt;
@@ -25,6 +25,7 @@ fi
 # ---- 1. Debian packages ---------------------------------------------------------------------
 PACKAGES=(cmake g++ make ninja-build qtbase5-dev libqt5opengl5-dev libglew-dev
           libeigen3-dev libsuitesparse-dev libopenblas0-pthread libgtest-dev libnanoflann-dev
+          libcli11-dev nlohmann-json3-dev
           meshlab xvfb xauth xdotool imagemagick libgl1-mesa-dri python3-venv
           ca-certificates debian-archive-keyring xz-utils clang libclang-rt-14-dev)
 missing=()

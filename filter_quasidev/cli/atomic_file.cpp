@@ -9,7 +9,7 @@
 #include <cstring>
 #include <vector>
 
-#include "error.h"
+#include "common/error.h"
 
 namespace qd::meshio {
 

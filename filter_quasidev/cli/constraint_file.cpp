@@ -1,6 +1,6 @@
 #include "constraint_file.h"
 
-#include "error.h"
+#include "common/error.h"
 #include "mesh_reader.h"
 #include "text_scan.h"
 

@@ -1,5 +1,6 @@
-// quasidev: reads a mesh, runs the quasi-developable approximation (qd::approximate), writes the
-// deformed mesh as PLY with per-vertex quality and a colour ramp, and optionally a JSON report.
+// quasidev [approximate]: reads a mesh, runs the quasi-developable approximation (qd::approximate),
+// writes the deformed mesh as PLY with per-vertex quality and a colour ramp, and optionally a JSON
+// report. Subcommands and options: options.h.
 // Exit 0 on success; 1 on bad input or an engine error; 2 on a bad command line. On error one
 // line "quasidev: error: REASON" goes to stderr and no OUTPUT (or report) file is written.
 #include <unistd.h>
@@ -10,13 +11,13 @@
 #include <memory>
 #include <new>
 
+#include "approximate/quasidev.h"
 #include "atomic_file.h"
-#include "mesh_reader.h"
 #include "mesh_problem.h"
+#include "mesh_reader.h"
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
-#include "quasidev.h"
 #include "report_json.h"
 
 namespace {
@@ -122,16 +123,13 @@ int fail(const std::string& reason, int status) {
 int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);  // a closed stdout must not kill the command by a signal
   try {
-    const Options o = qd::cli::parse_options(std::vector<std::string>(argv + 1, argv + argc));
-    if (o.help) {
-      std::cout << qd::cli::help_text();
+    const qd::cli::CommandLine line =
+        qd::cli::parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
+    if (!line.print.empty()) {
+      std::cout << line.print;
       return 0;
     }
-    if (o.version) {
-      std::cout << "quasidev " << QD_VERSION << '\n';
-      return 0;
-    }
-    run(o);
+    run(line.approximate);
     return 0;
   } catch (const qd::cli::UsageError& e) {
     return fail(e.what(), 2);

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "common/quality_range.h"
 #include "constraint_file.h"
-#include "quality_range.h"
 
 namespace qd::cli {
 

@@ -8,11 +8,11 @@
 // (--patch-tolerance for a patch the mesh does not have).
 #pragma once
 
+#include "approximate/problem.h"
+#include "approximate/result.h"
 #include "mesh_file.h"
 #include "options.h"
 #include "output_mesh.h"
-#include "problem.h"
-#include "result.h"
 
 namespace qd::cli {
 

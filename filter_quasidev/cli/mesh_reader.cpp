@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "error.h"
+#include "common/error.h"
 #include "obj_reader.h"
 #include "off_reader.h"
 #include "ply_mesh.h"

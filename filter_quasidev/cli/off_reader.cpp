@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "error.h"
+#include "common/error.h"
 #include "text_scan.h"
 #include "triangulate.h"
 

@@ -1,11 +1,16 @@
+// CLI11 parses the command line's shape (subcommands, options anywhere, --opt=value, --,
+// repeated options, help); each value is converted here, so every message keeps the command's
+// wording: the option, the bad value and what to do.
 #include "options.h"
 
+#include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <sstream>
 
-#include "deformation_system.h"
-#include "sparse_cholesky.h"
+#include "approximate/deformation_system.h"
+#include "common/sparse_cholesky.h"
 #include "text_scan.h"
 
 namespace qd::cli {
@@ -45,10 +50,8 @@ int whole_number(const std::string& option, const std::string& text, long long l
   return static_cast<int>(v);
 }
 
-// Value of an option of fixed choices, e.g. step|total.
 template <typename T>
-T choice(const std::string& option, const std::string& text,
-         const std::vector<std::pair<const char*, T>>& choices) {
+T choice(const std::string& option, const std::string& text, const Choices<T>& choices) {
   std::string names;
   for (const auto& [name, value] : choices) {
     if (text == name) return value;
@@ -66,213 +69,221 @@ void patch_tolerance(const std::string& text, Options& o) {
   o.patch_tolerance_ae[static_cast<int>(id)] = positive("--patch-tolerance", text.substr(eq + 1));
 }
 
-using Setter = std::function<void(Options&, const std::string&)>;
-
-// Options that take a value.
-const std::map<std::string, Setter>& valued_options() {
-  static const std::map<std::string, Setter> table = {
-      {"--report", [](Options& o, const std::string& v) { o.report = v; }},
-      {"--constraints", [](Options& o, const std::string& v) { o.constraints = v; }},
-      {"--tolerance", [](Options& o, const std::string& v) { o.tolerance_ae = positive("--tolerance", v); }},
-      {"--patch-tolerance", [](Options& o, const std::string& v) { patch_tolerance(v, o); }},
-      {"--tolerance-mode",
-       [](Options& o, const std::string& v) {
-         o.params.tolerance_mode = choice<ToleranceMode>(
-             "--tolerance-mode", v, {{"step", ToleranceMode::Step}, {"total", ToleranceMode::Total}});
-       }},
-      {"--clamp",
-       [](Options& o, const std::string& v) {
-         o.params.clamp = choice<ClampMode>("--clamp", v,
-                                            {{"scale", ClampMode::Scale}, {"vertex", ClampMode::Vertex}});
-       }},
-      {"--max-iter", [](Options& o, const std::string& v) { o.params.max_iter = whole_number("--max-iter", v, 1, 100000, "1"); }},
-      {"--weight", [](Options& o, const std::string& v) { o.params.weight = positive("--weight", v); }},
-      {"--anchor", [](Options& o, const std::string& v) { o.params.anchor = non_negative("--anchor", v); }},
-      {"--developability",
-       [](Options& o, const std::string& v) {
-         o.params.developability = choice<Developability>(
-             "--developability", v,
-             {{"curve", Developability::Curve}, {"defect", Developability::Defect},
-              {"both", Developability::Both}, {"auto", Developability::Auto}});
-       }},
-      {"--defect-weight", [](Options& o, const std::string& v) { o.params.defect_weight = positive("--defect-weight", v); }},
-      {"--seams",
-       [](Options& o, const std::string& v) {
-         o.params.seams = choice<SeamMode>("--seams", v, {{"fixed", SeamMode::Fixed}, {"free", SeamMode::Free}});
-       }},
-      {"--targets",
-       [](Options& o, const std::string& v) {
-         o.params.targets = choice<TargetMode>(
-             "--targets", v,
-             {{"fixed", TargetMode::Fixed}, {"reproject", TargetMode::Reproject}, {"refit", TargetMode::Refit}});
-       }},
-      {"--solver",
-       [](Options& o, const std::string& v) {
-         o.params.solver = choice<SolverKind>("--solver", v,
-                                              {{"auto", SolverKind::Auto},
-                                               {"cholmod", SolverKind::Cholmod},
-                                               {"eigen-llt", SolverKind::EigenLLT},
-                                               {"eigen-ldlt", SolverKind::EigenLDLT}});
-       }},
-      {"--method",
-       [](Options& o, const std::string& v) {
-         o.params.method = choice<SolveMethod>(
-             "--method", v,
-             {{"auto", SolveMethod::Auto}, {"direct", SolveMethod::Direct}, {"iterative", SolveMethod::Iterative}});
-       }},
-      {"--threads", [](Options& o, const std::string& v) { o.params.threads = whole_number("--threads", v, 0, 1024, "0 (all cores)"); }},
-      {"--stop-abd", [](Options& o, const std::string& v) { o.params.stop_abd = non_negative("--stop-abd", v); }},
-      {"--stop-obd", [](Options& o, const std::string& v) { o.params.stop_obd = non_negative("--stop-obd", v); }},
-      {"--quality",
-       [](Options& o, const std::string& v) {
-         o.quality = choice<QualityKind>(
-             "--quality", v, {{"curvature", QualityKind::Curvature}, {"displacement", QualityKind::Displacement}});
-       }},
-  };
-  return table;
+// " (default X)" as a stream writes X.
+template <typename T>
+std::string by_default(const T& value) {
+  std::ostringstream out;
+  out << " (default " << value << ")";
+  return out.str();
 }
 
-// Options without a value.
-const std::map<std::string, std::function<void(Options&)>>& flag_options() {
-  static const std::map<std::string, std::function<void(Options&)>> table = {
-      {"--keep-boundary", [](Options& o) { o.params.keep_boundary = true; }},
-      {"--free-boundary", [](Options& o) { o.params.keep_boundary = false; }},
-      {"--no-color", [](Options& o) { o.color = false; }},
-      {"--progress", [](Options& o) { o.progress = ProgressMode::On; }},
-      {"--no-progress", [](Options& o) { o.progress = ProgressMode::Off; }},
-      {"--quiet", [](Options& o) { o.quiet = true; }},
-      {"--overwrite-input", [](Options& o) { o.overwrite_input = true; }},
-      {"--help", [](Options& o) { o.help = true; }},
-      {"-h", [](Options& o) { o.help = true; }},
-      {"--version", [](Options& o) { o.version = true; }},
-  };
-  return table;
+// An option with a value, shown as `name value_name`; `set` converts each occurrence in order
+// (so the last one wins), throwing UsageError for a bad value.
+void valued(CLI::App& job, const std::string& name, const std::string& value_name,
+            const std::string& description, std::function<void(const std::string&)> set) {
+  job.add_option_function<std::string>(name, std::move(set), description)
+      ->option_text(value_name)
+      ->trigger_on_parse();
 }
 
-}  // namespace
+void flag(CLI::App& job, const std::string& name, const std::string& description,
+          std::function<void()> set) {
+  job.add_flag_callback(name, std::move(set), description)->trigger_on_parse();
+}
 
-Options parse_options(const std::vector<std::string>& args) {
-  Options o;
-  std::vector<std::string> positional;
-  bool only_positional = false;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    const std::string& a = args[i];
-    if (only_positional || a.size() < 2 || a[0] != '-') {
-      positional.push_back(a);
-      continue;
-    }
+// An option of fixed choices; the help shows them and the default (target's value now).
+template <typename T>
+void choices(CLI::App& job, const std::string& name, const std::string& value_name,
+             const std::string& description, const Choices<T>& names, T& target) {
+  valued(job, name, value_name, description + by_default(name_of(names, target)),
+         [name, &names, &target](const std::string& v) { target = choice(name, v, names); });
+}
+
+// The flags every job has: the progress line and quiet.
+void add_progress_flags(CLI::App& job, ProgressMode& progress, bool& quiet) {
+  flag(job, "--progress",
+       "show a progress line on stderr (default: when stderr is a\nterminal and not --quiet)",
+       [&progress] { progress = ProgressMode::On; });
+  flag(job, "--no-progress", "never show the progress line", [&progress] { progress = ProgressMode::Off; });
+  flag(job, "--quiet", "print neither the per-patch log (stdout) nor notes (stderr)",
+       [&quiet] { quiet = true; });
+}
+
+void add_approximate_options(CLI::App& job, Options& o) {
+  Params& p = o.params;
+  job.add_option("INPUT", o.input,
+                 "PLY (ascii or binary), OBJ or OFF. Patches come from the PLY\n"
+                 "face `quality` (rounded; else an integer face `patch`) or OBJ\n"
+                 "`g`/`o` groups; without them the whole mesh is one patch. PLY\n"
+                 "vertices whose `flags` have the selection bit 0x20 are\n"
+                 "constrained (never move). Polygons are fan-triangulated (said on\n"
+                 "stderr).")
+      ->required()
+      ->type_name("");
+  job.add_option("OUTPUT", o.output,
+                 "binary little-endian PLY: same vertex and face order, x y z as\n"
+                 "double, every other input property and element unchanged\n"
+                 "(texture coordinates, face quality, flags, ...; vertex normals\n"
+                 "are recomputed), plus vertex `quality` and a `red green blue\n"
+                 "alpha` colour ramp (red = low, blue = high, range = the 2nd to\n"
+                 "98th percentile). Written to a temporary file and renamed into\n"
+                 "place only on success; an existing OUTPUT is left untouched on\n"
+                 "error.")
+      ->required()
+      ->type_name("");
+  valued(job, "--tolerance", "X",
+         "δ_err, the largest move of a vertex in one iteration (step mode)\nor in all (total mode)" +
+             by_default(o.tolerance_ae),
+         [&o](const std::string& v) { o.tolerance_ae = positive("--tolerance", v); });
+  choices(job, "--tolerance-mode", "M",
+          "step: δ_err caps each iteration's move (paper); total: caps\nthe total move from the input",
+          kToleranceModes, p.tolerance_mode);
+  choices(job, "--clamp", "C",
+          "step mode: scale the whole step so no vertex moves more than\nδ_err (scale), or clamp "
+          "each vertex's step (vertex, paper\n§5.2)",
+          kClampModes, p.clamp);
+  valued(job, "--patch-tolerance", "ID=X", "δ_err for patch ID, overrides --tolerance (repeatable)",
+         [&o](const std::string& v) { patch_tolerance(v, o); });
+  valued(job, "--max-iter", "N", "at most N iterations per patch, N >= 1" + by_default(p.max_iter),
+         [&p](const std::string& v) { p.max_iter = whole_number("--max-iter", v, 1, 100000, "1"); });
+  valued(job, "--stop-abd", "P",
+         "stop when G_ABD falls by less than P percent in an iteration\n(ratio_ABD, Eq. 19)" +
+             by_default(p.stop_abd),
+         [&p](const std::string& v) { p.stop_abd = non_negative("--stop-abd", v); });
+  valued(job, "--stop-obd", "P",
+         "stop when the OBD falls by less than P percent (ratio_OBD,\nEq. 20)" + by_default(p.stop_obd),
+         [&p](const std::string& v) { p.stop_obd = non_negative("--stop-obd", v); });
+  valued(job, "--weight", "W", "w of Eq. (8): developability rows vs shape rows" + by_default(p.weight),
+         [&p](const std::string& v) { p.weight = positive("--weight", v); });
+  valued(job, "--anchor", "A", "weight of the soft anchor rows (Eq. 15)" + by_default(p.anchor),
+         [&p](const std::string& v) { p.anchor = non_negative("--anchor", v); });
+  choices(job, "--developability", "D",
+          "developability rows per patch: curve (the paper's target\nnormals on the Gauss-image "
+          "curve), defect (Gauss-Newton rows\non the angle defects; beyond the paper, for draped "
+          "panels),\nboth, or auto (curve up to a fit residual of 5 degrees, else\ndefect; beyond "
+          "the paper)",
+          kDevelopability, p.developability);
+  valued(job, "--defect-weight", "W",
+         "w_d of the angle-defect rows, scale-invariant" + by_default(p.defect_weight),
+         [&p](const std::string& v) { p.defect_weight = positive("--defect-weight", v); });
+  choices(job, "--targets", "T",
+          "target normals: fixed (computed once, paper), reproject\n(re-projected onto the fitted "
+          "curve each iteration) or refit\n(curve re-fitted each iteration)",
+          kTargetModes, p.targets);
+  choices(job, "--seams", "S",
+          "fixed: seam vertices between patches do not move (paper);\nfree: all patches solved "
+          "jointly, seams move and stay\nclosed",
+          kSeamModes, p.seams);
+  choices(job, "--solver", "S",
+          "sparse Cholesky: cholmod (SuiteSparse supernodal), eigen-llt,\neigen-ldlt (Eigen's "
+          "simplicial) or auto (eigen-ldlt below\n" + std::to_string(kCholmodFromUnknowns) +
+              " unknowns per patch, else cholmod); same\nresult",
+          kSolverKinds, p.solver);
+  std::ostringstream method;
+  method << "direct: factorise the coupled system; iterative: conjugate\ngradients with two scalar "
+            "factors, to a relative error of\n"
+         << kCgTolerance << "; auto: iterative from " << kIterativeFromUnknowns
+         << " unknowns\nper patch";
+  choices(job, "--method", "M", method.str(), kSolveMethods, p.method);
+  valued(job, "--threads", "N",
+         "patches solved at once (fixed seams); 0 = all cores; the\nresult does not depend on it" +
+             by_default(p.threads),
+         [&p](const std::string& v) { p.threads = whole_number("--threads", v, 0, 1024, "0 (all cores)"); });
+  const auto on = [](bool b) { return std::string(b ? " (default)" : ""); };
+  flag(job, "--keep-boundary", "open-boundary vertices do not move" + on(p.keep_boundary),
+       [&p] { p.keep_boundary = true; });
+  flag(job, "--free-boundary", "open-boundary vertices may move" + on(!p.keep_boundary),
+       [&p] { p.keep_boundary = false; });
+  valued(job, "--constraints", "FILE",
+         "vertices that must not move: 0-based indices, one per line,\n'#' starts a comment "
+         "(added to the PLY selection)",
+         [&o](const std::string& v) { o.constraints = v; });
+  choices(job, "--quality", "Q",
+          "vertex quality written: curvature (Gaussian curvature K after)\nor displacement "
+          "(|v' - v|, model units)",
+          kQualityKinds, o.quality);
+  flag(job, "--no-color", "write no colour ramp (the input's vertex colours are kept)",
+       [&o] { o.color = false; });
+  valued(job, "--report", "FILE.json", "write every figure (per patch and per iteration) as JSON",
+         [&o](const std::string& v) { o.report = v; });
+  flag(job, "--overwrite-input", "allow OUTPUT to be the INPUT file", [&o] { o.overwrite_input = true; });
+  add_progress_flags(job, o.progress, o.quiet);
+}
+
+// --help and --version, which every level of the command has; the footer is inherited.
+void add_help_and_version(CLI::App& app) {
+  app.set_help_flag("-h,--help", "print this help and exit");
+  app.set_version_flag("--version", std::string("quasidev ") + QD_VERSION, "print the version and exit");
+}
+
+// Unknown options first, then the number of file names, as the command has always checked.
+void check_leftovers(const CLI::App& job) {
+  std::size_t files = job.count("INPUT") + job.count("OUTPUT");
+  bool only_files = false;
+  for (const std::string& a : job.remaining()) {
     if (a == "--") {
-      only_positional = true;
+      only_files = true;
       continue;
     }
-    const std::size_t eq = a.find('=');
-    const std::string name = a.substr(0, eq);
-    const auto valued = valued_options().find(name);
-    if (valued != valued_options().end()) {
-      if (eq == std::string::npos && i + 1 >= args.size()) usage(name + " needs a value");
-      valued->second(o, eq == std::string::npos ? args[++i] : a.substr(eq + 1));
-      continue;
-    }
-    const auto flag = flag_options().find(a);
-    if (flag == flag_options().end()) usage("unknown option '" + a + "'");
-    flag->second(o);
+    if (!only_files && a.size() >= 2 && a[0] == '-') usage("unknown option '" + a + "'");
+    ++files;
   }
-  if (o.help || o.version) return o;
-  if (positional.size() != 2)
-    usage("expected INPUT and OUTPUT, got " + std::to_string(positional.size()) + " file name(s)");
-  o.input = positional[0];
-  o.output = positional[1];
+  if (files != 2) usage("expected INPUT and OUTPUT, got " + std::to_string(files) + " file name(s)");
+}
+
+void check_files(const Options& o) {
   if (o.output == o.input && !o.overwrite_input)
     usage("OUTPUT is the INPUT file; pass --overwrite-input to replace it");
   if (!o.report.empty() && (o.report == o.output || o.report == o.input))
     usage("the --report file must differ from INPUT and OUTPUT");
-  return o;
 }
 
-std::string help_text() {
-  const Params d;
-  const auto on_off = [](bool b) { return b ? " (default)" : ""; };
-  std::ostringstream h;
-  h << "Usage: quasidev INPUT OUTPUT [options]\n"
-       "\n"
-       "Makes the patches of a triangle mesh nearly developable (Zeng et al., \"Least squares\n"
-       "quasi-developable mesh approximation\", CAGD 2012) and writes the result as a binary PLY.\n"
-       "\n"
-       "INPUT   PLY (ascii or binary), OBJ or OFF. Patches come from the PLY face `quality`\n"
-       "        (rounded; else an integer face `patch`) or OBJ `g`/`o` groups; without them the\n"
-       "        whole mesh is one patch. PLY vertices whose `flags` have the selection bit 0x20\n"
-       "        are constrained (never move). Polygons are fan-triangulated (said on stderr).\n"
-       "OUTPUT  binary little-endian PLY: same vertex and face order, x y z as double, every\n"
-       "        other input property and element unchanged (texture coordinates, face quality,\n"
-       "        flags, ...; vertex normals are recomputed), plus vertex `quality` and a\n"
-       "        `red green blue alpha` colour ramp (red = low, blue = high, range = the 2nd to\n"
-       "        98th percentile). Written to a temporary file and renamed into place only on\n"
-       "        success; an existing OUTPUT is left untouched on error.\n"
-       "\n"
-       "Lengths X are in units of AE, the input's average edge length.\n"
-       "\n"
-       "  --tolerance X          δ_err, the largest move of a vertex in one iteration (step\n"
-       "                         mode) or in all (total mode) (default "
-    << kDefaultToleranceAE << ")\n"
-    << "  --tolerance-mode M     step: δ_err caps each iteration's move (paper); total: caps the\n"
-       "                         total move from the input (default "
-    << (d.tolerance_mode == ToleranceMode::Step ? "step" : "total") << ")\n"
-    << "  --clamp C              step mode: scale the whole step so no vertex moves more than\n"
-       "                         δ_err (scale), or clamp each vertex's step (vertex, paper §5.2)\n"
-       "                         (default "
-    << (d.clamp == ClampMode::Scale ? "scale" : "vertex") << ")\n"
-    << "  --patch-tolerance ID=X δ_err for patch ID, overrides --tolerance (repeatable)\n"
-    << "  --max-iter N           at most N iterations per patch, N >= 1 (default " << d.max_iter << ")\n"
-    << "  --stop-abd P           stop when G_ABD falls by less than P percent in an iteration\n"
-       "                         (ratio_ABD, Eq. 19; default "
-    << d.stop_abd << ")\n"
-    << "  --stop-obd P           stop when the OBD falls by less than P percent (ratio_OBD,\n"
-       "                         Eq. 20; default "
-    << d.stop_obd << ")\n"
-    << "  --weight W             w of Eq. (8): developability rows vs shape rows (default " << d.weight << ")\n"
-    << "  --anchor A             weight of the soft anchor rows (Eq. 15) (default " << d.anchor << ")\n"
-    << "  --developability D     developability rows per patch: curve (the paper's target\n"
-       "                         normals on the Gauss-image curve), defect (Gauss-Newton rows\n"
-       "                         on the angle defects; beyond the paper, for draped panels),\n"
-       "                         both, or auto (curve up to a fit residual of 5 degrees, else\n"
-       "                         defect; beyond the paper) (default auto)\n"
-    << "  --defect-weight W      w_d of the angle-defect rows, scale-invariant (default " << d.defect_weight << ")\n"
-    << "  --targets T            target normals: fixed (computed once, paper), reproject\n"
-       "                         (re-projected onto the fitted curve each iteration) or refit\n"
-       "                         (curve re-fitted each iteration) (default "
-    << (d.targets == TargetMode::Fixed ? "fixed" : d.targets == TargetMode::Reproject ? "reproject" : "refit")
-    << ")\n"
-    << "  --seams S              fixed: seam vertices between patches do not move (paper);\n"
-       "                         free: all patches solved jointly, seams move and stay closed\n"
-       "                         (default "
-    << (d.seams == SeamMode::Fixed ? "fixed" : "free") << ")\n"
-    << "  --solver S             sparse Cholesky: cholmod (SuiteSparse supernodal), eigen-llt,\n"
-       "                         eigen-ldlt (Eigen's simplicial) or auto (eigen-ldlt below\n"
-       "                         " << kCholmodFromUnknowns << " unknowns per patch, else cholmod); same result (default auto)\n"
-    << "  --method M             direct: factorise the coupled system; iterative: conjugate\n"
-       "                         gradients with two scalar factors, to a relative error of\n"
-       "                         " << kCgTolerance << "; auto: iterative from " << kIterativeFromUnknowns << " unknowns per patch\n"
-       "                         (default auto)\n"
-    << "  --threads N            patches solved at once (fixed seams); 0 = all cores; the\n"
-       "                         result does not depend on it (default " << d.threads << ")\n"
-    << "  --keep-boundary        open-boundary vertices do not move" << on_off(d.keep_boundary) << "\n"
-    << "  --free-boundary        open-boundary vertices may move" << on_off(!d.keep_boundary) << "\n"
-    << "  --constraints FILE     vertices that must not move: 0-based indices, one per line,\n"
-       "                         '#' starts a comment (added to the PLY selection)\n"
-       "  --quality Q            vertex quality written: curvature (Gaussian curvature K after)\n"
-       "                         or displacement (|v' - v|, model units) (default curvature)\n"
-       "  --no-color             write no colour ramp (the input's vertex colours are kept)\n"
-       "  --report FILE.json     write every figure (per patch and per iteration) as JSON\n"
-       "  --overwrite-input      allow OUTPUT to be the INPUT file\n"
-       "  --progress             show a progress line on stderr (default: when stderr is a\n"
-       "                         terminal); --no-progress never shows it\n"
-       "  --quiet                print neither the per-patch log (stdout) nor notes (stderr)\n"
-       "  --version              print the version and exit\n"
-       "  -h, --help             print this help and exit\n"
-       "\n"
-       "Exit status: 0 success; 1 bad input or engine error; 2 bad command line. On error one\n"
-       "line 'quasidev: error: REASON' goes to stderr and OUTPUT is not written.\n";
-  return h.str();
+}  // namespace
+
+CommandLine parse_command_line(std::vector<std::string> args) {
+  CommandLine line;
+  CLI::App app("Makes triangle mesh patches nearly developable: cuttable from flat sheet\n"
+               "material without stretching. Without a subcommand, `quasidev INPUT OUTPUT\n"
+               "[options]` runs `approximate`.\n",
+               "quasidev");
+  app.get_formatter()->column_width(25);
+  app.footer("Lengths X are in units of AE, the input's average edge length.\n"
+             "Exit status: 0 success; 1 bad input or engine error; 2 bad command line. On error\n"
+             "one line 'quasidev: error: REASON' goes to stderr and OUTPUT is not written.");
+  add_help_and_version(app);
+  CLI::App* approximate = app.add_subcommand(
+      "approximate",
+      "Makes the patches of a triangle mesh nearly developable (Zeng et al., \"Least squares\n"
+      "quasi-developable mesh approximation\", CAGD 2012) and writes the result as a binary PLY.\n");
+  add_help_and_version(*approximate);
+  approximate->allow_extras();
+  add_approximate_options(*approximate, line.approximate);
+  // The subcommands `segment` and `flatten` join here, each with add_progress_flags.
+  const bool names_job =
+      !args.empty() && (args[0] == "-h" || args[0] == "--help" || args[0] == "--version" ||
+                        !app.get_subcommands([&](const CLI::App* s) { return s->check_name(args[0]); })
+                             .empty());
+  if (!names_job) args.insert(args.begin(), approximate->get_name());
+  std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
+  try {
+    app.parse(args);
+  } catch (const CLI::CallForHelp&) {
+    line.print = app.help("", CLI::AppFormatMode::All);
+    return line;
+  } catch (const CLI::CallForVersion& e) {
+    line.print = std::string(e.what()) + "\n";
+    return line;
+  } catch (const CLI::ArgumentMismatch& e) {  // "NAME: 1 required TEXT missing"
+    const std::string what = e.what();
+    usage(what.substr(0, what.find(':')) + " needs a value");
+  } catch (const CLI::RequiredError&) {  // INPUT or OUTPUT missing
+    check_leftovers(*approximate);
+  } catch (const CLI::ParseError& e) {
+    usage(e.what());
+  }
+  check_leftovers(*approximate);
+  check_files(line.approximate);
+  return line;
 }
 
 }  // namespace qd::cli

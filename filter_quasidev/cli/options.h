@@ -1,15 +1,16 @@
-// Command-line options of `quasidev` and its --help text.
-// Input: argv. Output: an Options value whose defaults come from qd::Params (so the command,
-// the plugins and the help text never disagree). Throws UsageError (exit status 2) for an
-// unknown option, a missing or malformed value, or an out-of-range parameter.
+// The command line of `quasidev`, parsed with CLI11: the subcommand `approximate` (also the job
+// when no subcommand is named, so `quasidev INPUT OUTPUT [options]` works as it always has), its
+// options with their defaults from qd::Params, --help and --version. Bad command lines throw
+// UsageError (exit status 2) naming the option, the bad value and what to do.
 #pragma once
 
 #include <map>
 #include <string>
 #include <vector>
 
-#include "error.h"
-#include "params.h"
+#include "approximate/params.h"
+#include "common/error.h"
+#include "option_choices.h"
 
 namespace qd::cli {
 
@@ -21,9 +22,9 @@ struct UsageError : Error {
 // units and is set from this once AE is known).
 constexpr double kDefaultToleranceAE = 1.0;
 
-enum class QualityKind { Curvature, Displacement };
 enum class ProgressMode { Auto, On, Off };
 
+// The options of `quasidev approximate`.
 struct Options {
   std::string input;
   std::string output;
@@ -37,12 +38,16 @@ struct Options {
   ProgressMode progress = ProgressMode::Auto;
   bool quiet = false;
   bool overwrite_input = false;
-  bool help = false;
-  bool version = false;
 };
 
-Options parse_options(const std::vector<std::string>& args);
+// What the command line asks for: text to print on stdout before exiting with status 0 (--help,
+// --version), or else the job to run.
+struct CommandLine {
+  std::string print;
+  Options approximate;
+};
 
-std::string help_text();
+// args: argv without the program name.
+CommandLine parse_command_line(std::vector<std::string> args);
 
 }  // namespace qd::cli

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "error.h"
+#include "common/error.h"
 
 namespace qd::meshio {
 

@@ -1,3 +1,9 @@
+// Ours, not vcglib's PLY importer (wrap/ply/plylib + import_ply), on purpose: the command must
+// hand back every property and element of the input bit-identical (any scalar type, any list,
+// elements it does not know), while vcglib's reads only what maps onto a mesh type, converting
+// types on the way; and a malformed, truncated or hostile file must give one clear error, never
+// an abort, while plylib checks much of its input with assert (162 in plylib.cpp). Fuzzed with
+// the other readers (tests/cli/fuzz).
 #include "ply_reader.h"
 
 #include <charconv>
@@ -5,7 +11,7 @@
 #include <cstring>
 #include <limits>
 
-#include "error.h"
+#include "common/error.h"
 #include "scalar_value.h"
 #include "text_scan.h"
 

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstring>
 
-#include "error.h"
+#include "common/error.h"
 #include "scalar_value.h"
 
 namespace qd::meshio {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "approximate/result.h"
 #include "options.h"
-#include "result.h"
 
 namespace qd::cli {
 

@@ -1,7 +1,8 @@
-// The MeshLab 2020.09 filter plugin (MeshFilterInterface): maps the shared adapter's parameter
-// table to RichParameterList, runs qdml::apply on the current mesh, logs with Log() and reports
-// failures through errorMessage (after logging the reason: meshlabserver 2020.09 prints only
-// "Problem with filter").
+// The MeshLab 2020.09 filter plugin (MeshFilterInterface): one filter per entry of
+// qdml::filter_table() (its index is the filter id), parameters mapped to RichParameterList,
+// the entry's run on the current mesh, logging with Log() and failures reported through
+// errorMessage (after logging the reason: meshlabserver 2020.09 prints only "Problem with
+// filter").
 #pragma once
 
 #include <common/interfaces.h>
@@ -12,8 +13,6 @@ class QuasiDevFilterPlugin : public QObject, public MeshFilterInterface {
   Q_INTERFACES(MeshFilterInterface)
 
  public:
-  enum { FP_QUASI_DEVELOPABLE };
-
   QuasiDevFilterPlugin();
   QString pluginName() const override;
   QString filterName(FilterIDType filter) const override;

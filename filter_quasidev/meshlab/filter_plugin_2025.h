@@ -1,9 +1,10 @@
-// The MeshLab 2025.07 face of the quasi-developable approximation (FilterPlugin API), built twice:
-// double / "2025.07d" for pymeshlab 2025.7.post1 and float / "2025.07" for the MeshLab 2025.07
-// application. All filter logic lives in the shared adapter (quasidev_adapter.h); this class only
-//   in:  maps the adapter's ParamSpec table to a RichParameterList and reads it back by name;
-//   out: logs the adapter's lines, throws MLException with the adapter's message on failure, and
-//        returns the engine's figures as std::map<std::string, QVariant> (pymeshlab: a dict).
+// The MeshLab 2025.07 face of the plugin (FilterPlugin API), built twice: double / "2025.07d"
+// for pymeshlab 2025.7.post1 and float / "2025.07" for the MeshLab 2025.07 application. One
+// filter per entry of qdml::filter_table() (its index is the filter id); all filter logic lives
+// in the shared adapter. This class only
+//   in:  maps the entry's ParamSpec table to a RichParameterList and reads it back by name;
+//   out: logs the run's lines, throws MLException with its message on failure, and returns its
+//        figures as std::map<std::string, QVariant> (pymeshlab: a dict).
 #pragma once
 
 #include <map>
@@ -17,8 +18,6 @@ class QuasiDevFilterPlugin : public QObject, public FilterPlugin {
   Q_INTERFACES(FilterPlugin)
 
  public:
-  enum { FP_QUASI_DEVELOPABLE };
-
   QuasiDevFilterPlugin();
 
   QString pluginName() const override;
@@ -30,11 +29,11 @@ class QuasiDevFilterPlugin : public QObject, public FilterPlugin {
   FilterArity filterArity(const QAction* action) const override;
   int postCondition(const QAction* action) const override;
 
-  // Parameters from qdml::parameter_specs(m): same names, order, types and defaults as 2020.09.
+  // The entry's parameters for m: same names, order, types and defaults as 2020.09.
   RichParameterList initParameterList(const QAction* action, const MeshModel& m) override;
 
-  // Runs qdml::apply on the current mesh. Throws MLException (the adapter's message) on failure,
-  // the mesh then unchanged; returns the figures (see figures_dict in the .cpp) on success.
+  // Runs the entry on the current mesh. Throws MLException (the run's message) on failure, the
+  // mesh then unchanged; returns the run's figures on success.
   std::map<std::string, QVariant> applyFilter(const QAction* action,
                                               const RichParameterList& params, MeshDocument& md,
                                               unsigned int& postConditionMask,

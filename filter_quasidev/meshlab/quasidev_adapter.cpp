@@ -7,6 +7,7 @@
 #include <new>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #if __has_include(<common/ml_document/cmesh.h>)
 #include <common/ml_document/cmesh.h>  // MeshLab 2025.07
@@ -16,11 +17,12 @@
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
-#include "error.h"
-#include "mesh.h"
-#include "quality_range.h"
-#include "quasidev.h"
-#include "validate.h"
+#include "approximate/quasidev.h"
+#include "approximate/validate.h"
+#include "common/error.h"
+#include "common/mesh.h"
+#include "common/quality_range.h"
+#include "result_figures.h"
 
 namespace qdml {
 
@@ -156,12 +158,7 @@ qd::Problem make_problem(const CMeshO& m, bool has_face_quality, const Settings&
   return problem;
 }
 
-}  // namespace
-
-std::string filter_name() { return "Quasi-Developable Approximation"; }
-
-std::string python_filter_name() { return "apply_coord_quasi_developable_approximation"; }
-
+// The filterInfo text: what the filter does, its inputs and outputs, and the paper.
 std::string filter_info() {
   return "Makes every patch of the mesh nearly <b>developable</b> (flattenable from sheet material "
          "without stretching) while moving the vertices as little as possible. For each patch the "
@@ -184,6 +181,25 @@ std::string filter_info() {
          "Zeng L., Liu Y.-J., Chen M., Yuen M.-F., <i>Least squares quasi-developable mesh "
          "approximation</i>, Computer Aided Geometric Design 29(7):565&ndash;578, 2012.";
 }
+
+
+// The table's run: the values as Settings, apply(), and on success the figures and what was
+// written (the colour only when asked for).
+FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
+  const Settings settings = settings_from_values(values);
+  Outcome outcome = apply(m, has_face_quality, settings, cb);
+  FilterRun out;
+  out.ok = outcome.ok;
+  out.error = std::move(outcome.error);
+  out.log = std::move(outcome.log);
+  if (!out.ok) return out;
+  out.figures = result_figures(outcome.result);
+  out.written = {MeshPart::VertexQuality};
+  if (settings.colorize) out.written.push_back(MeshPart::VertexColor);
+  return out;
+}
+
+}  // namespace
 
 std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
   const qd::Params d;
@@ -258,7 +274,7 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
   };
 }
 
-Settings settings_from_values(const std::map<std::string, double>& values) {
+Settings settings_from_values(const ParamValues& values) {
   Settings s;
   qd::Params& p = s.params;
   const auto get = [&](const char* name, double fallback) {
@@ -307,6 +323,18 @@ Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBack
     out.error = std::string("internal error (please report it with the mesh): ") + error.what();
   }
   return out;
+}
+
+FilterSpec approximate_filter() {
+  using C = FilterCategory;
+  using P = MeshPart;
+  return {"Quasi-Developable Approximation",
+          "apply_coord_quasi_developable_approximation",
+          filter_info(),
+          {C::Smoothing, C::Quality, C::VertexColoring},
+          {P::VertexPositions, P::VertexNormals, P::FaceNormals, P::VertexQuality, P::VertexColor},
+          parameter_specs,
+          run};
 }
 
 }  // namespace qdml

@@ -1,41 +1,23 @@
 // The shared MeshLab adapter of the quasi-developable approximation: one source for every MeshLab
 // generation (compiled once per plugin variant against that variant's CMeshO: 2020.09 float,
-// 2025.07 float, 2025.07d double). It holds the filter's texts, its parameter table, the
-// conversion CMeshO <-> qd::Problem / qd::Result and the write-back. No numerics (the engine
-// does them) and no plugin-API types (the per-generation plugin files map RichParameterList,
-// logging and error reporting).
+// 2025.07 float, 2025.07d double). It holds the filter's entry in filter_table() (texts,
+// parameter table, figures), the conversion CMeshO <-> qd::Problem / qd::Result and the
+// write-back. No numerics (the engine does them) and no plugin-API types (the per-generation
+// plugin files map RichParameterList, logging and error reporting).
 #pragma once
 
-#include <map>
 #include <string>
 #include <vector>
 
-#include <cstring>          // wrap/callback.h uses strcpy without including <cstring>
-#include <wrap/callback.h>  // vcg::CallBackPos
-
-#include "params.h"
-#include "result.h"
-
-class CMeshO;
+#include "approximate/params.h"
+#include "approximate/result.h"
+#include "filter_table.h"
 
 namespace qdml {
 
-// Menu text (= .mlx filter name), pymeshlab name, and the filterInfo text (HTML allowed).
-std::string filter_name();
-std::string python_filter_name();
-std::string filter_info();
-
-// One user parameter. Every generation declares exactly these, in this order, with these names
-// and types, so one .mlx serves meshlabserver 2020.09 and pymeshlab 2025.07.
-enum class ParamKind { Float, Int, Bool, Enum };
-struct ParamSpec {
-  std::string name;                // snake_case, = pymeshlab keyword
-  std::string label;               // dialog label
-  std::string tooltip;             // dialog tooltip
-  ParamKind kind = ParamKind::Float;
-  double value = 0;                // default: the float, the int, 0/1, or the enum index
-  std::vector<std::string> items;  // Enum only: item texts (pymeshlab accepts them by text)
-};
+// The filter's entry in filter_table(): its texts, classes, post-condition, parameter_specs
+// and a run that maps the values with settings_from_values, calls apply and returns the figures.
+FilterSpec approximate_filter();
 
 // The parameter table of the filter for mesh m. Defaults come from qd::Params; the tolerance
 // default is the mesh's average edge length AE (shown in its tooltip); a tolerance of 0 (as
@@ -52,7 +34,7 @@ struct Settings {
 
 // Settings from the values read back by name (as ParamSpec::value: floats, ints, 0/1, enum
 // indices). A name missing from `values` keeps its default.
-Settings settings_from_values(const std::map<std::string, double>& values);
+Settings settings_from_values(const ParamValues& values);
 
 struct Outcome {
   bool ok = false;

@@ -4,7 +4,7 @@
 
 #include <random>
 
-#include "error.h"
+#include "common/error.h"
 #include "ply_reader.h"
 #include "ply_test_util.h"
 #include "ply_writer.h"

@@ -4,9 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "json_writer.h"
+#include "common/quality_range.h"
 #include "options.h"
-#include "quality_range.h"
 
 namespace {
 
@@ -49,7 +48,12 @@ TEST(QualityRange, RampGoesRedGreenBlueAndClamps) {
   }
 }
 
-qd::cli::Options parse(std::vector<std::string> args) { return qd::cli::parse_options(args); }
+qd::cli::Options parse(std::vector<std::string> args) {
+  return qd::cli::parse_command_line(args).approximate;
+}
+
+// What the command prints and exits 0 for (--help, --version), "" when it runs a job.
+std::string printed(std::vector<std::string> args) { return qd::cli::parse_command_line(args).print; }
 
 std::string usage_error(std::vector<std::string> args) {
   try {
@@ -133,13 +137,27 @@ TEST(Options, RejectsBadCommandLines) {
     EXPECT_NE(message.find(expected), std::string::npos) << "got '" << message << "'";
   }
   EXPECT_TRUE(usage_error({"a", "a", "--overwrite-input"}).empty());
-  EXPECT_TRUE(parse({"--help"}).help);
-  EXPECT_TRUE(parse({"--version"}).version);
+  EXPECT_FALSE(printed({"--help"}).empty());
+  EXPECT_EQ(printed({"--version"}), std::string("quasidev ") + QD_VERSION + "\n");
   EXPECT_EQ(parse({"--", "-in.ply", "out.ply"}).input, "-in.ply");
 }
 
+TEST(Options, SubcommandTakesTheSameOptionsAndMessages) {
+  EXPECT_EQ(parse({"approximate", "in.ply", "out.ply", "--seams", "free"}).params.seams,
+            qd::SeamMode::Free);
+  EXPECT_EQ(parse({"approximate", "in.ply", "out.ply"}).input, "in.ply");
+  const std::string message = usage_error({"approximate", "a", "b", "--weight", "-3"});
+  EXPECT_NE(message.find("--weight must be greater than 0, got -3"), std::string::npos) << message;
+  EXPECT_EQ(printed({"approximate", "--version"}), printed({"--version"}));
+  // The last of repeated or contradicting options wins, as on every command line.
+  const qd::cli::Options o =
+      parse({"a", "b", "--free-boundary", "--keep-boundary", "--max-iter", "3", "--max-iter=4"});
+  EXPECT_TRUE(o.params.keep_boundary);
+  EXPECT_EQ(o.params.max_iter, 4);
+}
+
 TEST(Options, HelpNamesEveryOptionAndTheDefaults) {
-  const std::string help = qd::cli::help_text();
+  const std::string help = printed({"approximate", "--help"});
   for (const char* option :
        {"--report", "--tolerance ", "--tolerance-mode", "--max-iter", "--seams", "--keep-boundary",
         "--free-boundary", "--weight", "--anchor", "--targets", "--stop-abd", "--stop-obd",
@@ -149,27 +167,10 @@ TEST(Options, HelpNamesEveryOptionAndTheDefaults) {
   const qd::Params d;
   EXPECT_NE(help.find("(default " + std::to_string(d.max_iter) + ")"), std::string::npos);
   EXPECT_NE(help.find("reproject)"), std::string::npos);
-}
-
-TEST(JsonWriter, NestsEscapesAndKeepsFullPrecision) {
-  qd::cli::JsonWriter j;
-  j.begin_object();
-  j.value("x", 0.1);
-  j.value("s", std::string("a\"b\\c\n"));
-  j.value("bad", std::numeric_limits<double>::quiet_NaN());
-  j.begin_array("empty");
-  j.end_array();
-  j.begin_array("list");
-  j.value(nullptr, 1);
-  j.value(nullptr, true);
-  j.end_array();
-  j.end_object();
-  const std::string& t = j.text();
-  EXPECT_NE(t.find("\"x\": 0.10000000000000001"), std::string::npos) << t;
-  EXPECT_NE(t.find("\"s\": \"a\\\"b\\\\c\\u000a\""), std::string::npos) << t;
-  EXPECT_NE(t.find("\"bad\": null"), std::string::npos);
-  EXPECT_NE(t.find("\"empty\": []"), std::string::npos) << t;
-  EXPECT_NE(t.find("1,\n    true"), std::string::npos) << t;
+  const std::string top = printed({"--help"});
+  EXPECT_NE(top.find("Subcommands:"), std::string::npos) << top;
+  EXPECT_NE(top.find("approximate"), std::string::npos) << top;
+  EXPECT_NE(top.find("--max-iter"), std::string::npos) << top;
 }
 
 }  // namespace

@@ -5,13 +5,13 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "angle_defect.h"
-#include "error.h"
-#include "deformer.h"
-#include "group_mesh.h"
-#include "quasidev.h"
+#include "approximate/angle_defect.h"
+#include "approximate/deformer.h"
+#include "approximate/group_mesh.h"
+#include "approximate/quasidev.h"
+#include "approximate/validate.h"
+#include "common/error.h"
 #include "test_meshes.h"
-#include "validate.h"
 
 namespace qd {
 namespace {

@@ -3,8 +3,8 @@
 
 #include <Eigen/Geometry>
 
-#include "error.h"
-#include "quasidev.h"
+#include "approximate/quasidev.h"
+#include "common/error.h"
 #include "test_meshes.h"
 
 namespace qd {

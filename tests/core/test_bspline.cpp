@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "bspline.h"
-#include "error.h"
+#include "approximate/bspline.h"
+#include "common/error.h"
 
 using qd::Vec2;
 

@@ -4,7 +4,7 @@
 
 #include <Eigen/Dense>
 
-#include "conjugate_gradients.h"
+#include "common/conjugate_gradients.h"
 
 namespace qd {
 namespace {

@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <random>
 
-#include "anchor_weights.h"
-#include "conjugate_gradients.h"
-#include "deformation_system.h"
-#include "group_mesh.h"
-#include "mesh.h"
+#include "approximate/anchor_weights.h"
+#include "approximate/deformation_system.h"
+#include "approximate/group_mesh.h"
+#include "common/conjugate_gradients.h"
+#include "common/mesh.h"
 #include "test_meshes.h"
 
 namespace qd {

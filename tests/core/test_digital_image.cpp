@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "digital_image.h"
+#include "approximate/digital_image.h"
 
 using qd::Vec2;
 

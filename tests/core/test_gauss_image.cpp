@@ -3,8 +3,8 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "error.h"
-#include "gauss_image.h"
+#include "approximate/gauss_image.h"
+#include "common/error.h"
 #include "test_gauss_samples.h"
 
 using namespace qd_test;

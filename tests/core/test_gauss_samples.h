@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "mesh.h"
+#include "common/mesh.h"
 
 namespace qd_test {
 

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "mesh.h"
+#include "common/mesh.h"
 
 namespace {
 

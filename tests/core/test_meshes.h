@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "problem.h"
+#include "approximate/problem.h"
 
 namespace qd::test {
 

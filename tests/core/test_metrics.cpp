@@ -5,8 +5,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "metrics.h"
-#include "topology.h"
+#include "common/metrics.h"
+#include "common/topology.h"
 
 namespace {
 

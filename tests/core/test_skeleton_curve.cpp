@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "skeleton_curve.h"
+#include "approximate/skeleton_curve.h"
 
 using qd::SkeletonPoint;
 using qd::Vec2;

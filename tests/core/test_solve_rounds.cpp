@@ -4,7 +4,7 @@
 
 #include <set>
 
-#include "solve_rounds.h"
+#include "approximate/solve_rounds.h"
 #include "test_meshes.h"
 
 namespace qd {

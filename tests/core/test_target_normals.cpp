@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <random>
 
-#include "error.h"
-#include "target_normals.h"
+#include "approximate/target_normals.h"
+#include "common/error.h"
 #include "test_gauss_samples.h"
 
 using namespace qd_test;

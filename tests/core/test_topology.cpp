@@ -1,7 +1,7 @@
 // Boundary, seams, used vertices and non-manifold elements of small hand-built meshes.
 #include <gtest/gtest.h>
 
-#include "topology.h"
+#include "common/topology.h"
 
 namespace {
 

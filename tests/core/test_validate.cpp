@@ -7,8 +7,8 @@
 #include <limits>
 #include <string>
 
-#include "error.h"
-#include "validate.h"
+#include "approximate/validate.h"
+#include "common/error.h"
 
 namespace {
 

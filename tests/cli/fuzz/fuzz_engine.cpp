@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <utility>
 
-#include "error.h"
-#include "quasidev.h"
+#include "approximate/quasidev.h"
+#include "common/error.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "error.h"
+#include "common/error.h"
 #include "obj_reader.h"
 #include "off_reader.h"
 #include "ply_mesh.h"

@@ -1,0 +1,47 @@
+// The names of the command's fixed-choice option values, one table per option: they parse the
+// option, show its default in --help and name the value in the JSON report.
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "approximate/params.h"
+
+namespace qd::cli {
+
+enum class QualityKind { Curvature, Displacement };
+
+template <typename T>
+using Choices = std::vector<std::pair<const char*, T>>;
+
+inline const Choices<ToleranceMode> kToleranceModes = {{"step", ToleranceMode::Step},
+                                                       {"total", ToleranceMode::Total}};
+inline const Choices<ClampMode> kClampModes = {{"scale", ClampMode::Scale},
+                                               {"vertex", ClampMode::Vertex}};
+inline const Choices<Developability> kDevelopability = {{"curve", Developability::Curve},
+                                                        {"defect", Developability::Defect},
+                                                        {"both", Developability::Both},
+                                                        {"auto", Developability::Auto}};
+inline const Choices<SeamMode> kSeamModes = {{"fixed", SeamMode::Fixed}, {"free", SeamMode::Free}};
+inline const Choices<TargetMode> kTargetModes = {{"fixed", TargetMode::Fixed},
+                                                 {"reproject", TargetMode::Reproject},
+                                                 {"refit", TargetMode::Refit}};
+inline const Choices<SolverKind> kSolverKinds = {{"auto", SolverKind::Auto},
+                                                 {"cholmod", SolverKind::Cholmod},
+                                                 {"eigen-llt", SolverKind::EigenLLT},
+                                                 {"eigen-ldlt", SolverKind::EigenLDLT}};
+inline const Choices<SolveMethod> kSolveMethods = {{"auto", SolveMethod::Auto},
+                                                   {"direct", SolveMethod::Direct},
+                                                   {"iterative", SolveMethod::Iterative}};
+inline const Choices<QualityKind> kQualityKinds = {{"curvature", QualityKind::Curvature},
+                                                   {"displacement", QualityKind::Displacement}};
+
+// The name of `value` in `choices` ("" if it has none).
+template <typename T>
+const char* name_of(const Choices<T>& choices, T value) {
+  for (const auto& [name, v] : choices)
+    if (v == value) return name;
+  return "";
+}
+
+}  // namespace qd::cli

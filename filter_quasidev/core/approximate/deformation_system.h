@@ -1,0 +1,121 @@
+// The least-squares system of Step 2 (paper §5.2–5.4) for one group.
+//
+// Per face t = (v1, v2, v3) with target normal n_t, the 12 rows of Eq. (13) as DESIGN.md reads
+// the garbled printed A_i:
+//   developability  w·n_tᵀ(v2'−v1') = 0,  w·n_tᵀ(v3'−v2') = 0,  w·n_tᵀ(v1'−v3') = 0
+//   shape           (v2'−v1') = (v2−v1),  (v3'−v1') = (v3−v1)          (Eq. 5)
+//   centroid        (v1'+v2'+v3')/3 = (v1+v2+v3)/3                      (Eq. 6)
+// where v are the reference positions (the current iterate). Columns of a vertex shared by
+// several faces are summed (§5.3), so seams cannot open. Constrained vertices are eliminated
+// exactly (moved to the right-hand side). Every free vertex gets the soft anchor rows
+// α·w(v)·(v' − v0) = 0 with the MLS weight w(v) of Eq. (15): stiffness fades away from the
+// constraints. The paper's ‖AWx − c‖ (Eq. 16) rescales the unknowns and constrains nothing, so
+// it is not used as written.
+//
+// The normal matrix M = AᵀA + anchors (Eq. 17) depends only on the targets and weights. Its
+// unknowns are numbered in 3×3 vertex blocks in a fill-reducing order of the vertex graph, and
+// it is assembled in place into a sparsity pattern built once. With fixed targets it is
+// factorised once and every iteration is one back substitution (Algorithm 1, steps 2.3–2.4);
+// re-projected or re-fitted targets change M, which is then factorised again numerically (the
+// analysis is reused). Conjugate gradients preconditioned by the previous factor were measured
+// as the alternative and cost more instructions at every size tried (README, Performance).
+//
+// Large groups are solved without factorising M at all (SolveMethod::Iterative, issue 5):
+// conjugate gradients preconditioned by the frame split of frame_preconditioner.h, whose two
+// scalar factors cost a fraction of M's. Each solve stops when the correction's error in M's
+// energy norm is below kCgTolerance of the correction, so the result is the least-squares
+// solution to that tolerance. The preconditioner is built once and kept while the targets
+// move. CG converges in 4–5 iterations on a smooth 1M-triangle sheet, in 15–35 on coarse ones;
+// where the targets stray far from the surface's normals (draped garments: 165) it is slower
+// than factorising, so a solve that CG gives up on (conjugate_gradients.h: too slow after
+// kCgPatience iterations, or not done in kCgIterations) factorises M instead, and so do the
+// group's later solves.
+#pragma once
+
+#include <Eigen/SparseCore>
+#include <memory>
+#include <vector>
+
+#include "approximate/angle_defect.h"
+#include "approximate/frame_preconditioner.h"
+#include "approximate/group_mesh.h"
+#include "approximate/result.h"
+#include "common/block_pattern.h"
+#include "common/sparse_cholesky.h"
+
+namespace qd {
+
+constexpr long kIterativeFromUnknowns = 10000;  // SolveMethod::Auto: CG from here on (measured)
+constexpr double kCgTolerance = 1e-5;
+constexpr int kCgIterations = 40;
+
+class DeformationSystem {
+ public:
+  // From params: w of Eq. (8), α of Eq. (15), the solver, the method and the threads this
+  // group may use; ae: average edge length for Eq. (15); defect_rows: per local vertex, 1 =
+  // it gets an angle-defect row (angle_defect.h; empty = none), whose star widens M's pattern
+  // to pairs of vertices with a common neighbour.
+  DeformationSystem(const GroupMesh& group, const Params& params, double ae,
+                    const std::vector<char>& defect_rows = {});
+
+  // Assembles M (Eq. 17) for one target normal per group face (a zero vector: no
+  // developability rows of Eq. 13 for that face) and the angle-defect rows linearised at the
+  // reference positions of the next solve (empty when the group has none).
+  void set_rows(const std::vector<Vec3>& targets, const DefectLinearisation& defects = {});
+
+  bool has_defect_rows() const { return !defects_.empty(); }
+  // The angle-defect rows linearised at X, for set_rows.
+  DefectLinearisation linearise_defects_at(const Positions& X) const {
+    return linearise_defects(defects_, g_, incident_, X);
+  }
+
+  // Right-hand side Aᵀc − M_fc·x_c + anchor terms for reference positions `ref`.
+  Eigen::VectorXd rhs(const Positions& ref) const;
+
+  // Least-squares positions for reference `ref`: free vertices solved, fixed ones kept.
+  Positions solve(const Positions& ref);
+
+  // Lower triangle of M; unknown 3k+d is coordinate d of block k.
+  const Eigen::SparseMatrix<double>& matrix() const { return M_; }
+  // Unknown block of each local vertex (-1 when fixed).
+  const std::vector<int>& unknown() const { return unknown_; }
+  const StageTimes& times() const { return times_; }
+
+ private:
+  void build_pattern(const std::vector<std::pair<int, int>>& edges);
+  void index_defect_entries();
+  void add_defect_rows(int k, Eigen::Matrix3d& diagonal, double* value, const int* outer) const;
+  void add_defect_rhs(const Positions& ref, Eigen::VectorXd& b) const;
+  void factorize();
+  Eigen::VectorXd solve_directly(const Eigen::VectorXd& b);
+  Eigen::VectorXd solve_iteratively(const Eigen::VectorXd& b, const Positions& ref);
+  void build_preconditioner();
+  Eigen::VectorXd unknowns_of(const Positions& X) const;
+
+  const GroupMesh& g_;
+  double w_;
+  VertexFaces incident_;            // faces of each local vertex, ascending
+  std::vector<int> block_vertex_;   // local vertex of each unknown block
+  std::vector<double> anchor2_;  // α²·w(v)² per unknown block
+  std::vector<int> unknown_;
+  int blocks_ = 0;
+  BlockPattern pattern_;
+  std::vector<int> face_slot_;     // per face and corner pair (0,1),(0,2),(1,2): off-diag block
+  std::vector<Vec3> targets_;
+  DefectStars defects_;
+  DefectLinearisation linearised_;
+  std::vector<int> entry_row_;     // row of each defect star entry
+  std::vector<int> entry_start_;   // star entries of unknown block k:
+  std::vector<int> entries_;       //   entries_[entry_start_[k] .. entry_start_[k+1])
+  Eigen::SparseMatrix<double> M_;
+  SolverKind solver_;
+  int threads_;
+  bool iterative_ = false;
+  SparseCholesky cholesky_;
+  bool factor_current_ = false;  // the factor belongs to the current M
+  std::unique_ptr<FramePreconditioner> preconditioner_;  // built at the first iterative solve
+  int scalar_factorizations_ = 0;                        // the preconditioner's
+  StageTimes times_;
+};
+
+}  // namespace qd

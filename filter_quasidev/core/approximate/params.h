@@ -1,0 +1,43 @@
+// User parameters of the quasi-developable approximation (DESIGN.md "The algorithm").
+// Lengths are in model units; adapters convert from multiples of the average edge length AE.
+#pragma once
+
+#include <map>
+
+#include "common/sparse_cholesky.h"
+
+namespace qd {
+
+enum class SeamMode { Fixed, Free };         // seam vertices fixed (paper) or shared unknowns
+enum class ToleranceMode { Step, Total };    // δ_err caps each step (paper) or the total move
+enum class ClampMode { Scale, Vertex };     // δ_err in Step mode: scale the whole step, or
+                                            // clamp each vertex's step (paper §5.2)
+enum class TargetMode { Fixed, Reproject, Refit };  // targets once (paper), re-projected, re-fitted
+enum class SolveMethod { Auto, Direct, Iterative };  // factorise M, or CG with scalar factors
+// Developability term per patch: the paper's normal targets on the Gauss-image curve (Eq. 13),
+// Gauss–Newton rows on the angle defects (angle_defect.h, beyond the paper), both, or chosen
+// per patch from its Step 1 fit residual (Auto, beyond the paper).
+enum class Developability { Curve, Defect, Both, Auto };
+
+struct Params {
+  double tolerance = 0.0;                    // δ_err in model units (> 0)
+  std::map<int, double> patch_tolerance;     // per patch id, overrides tolerance
+  ToleranceMode tolerance_mode = ToleranceMode::Step;
+  ClampMode clamp = ClampMode::Scale;        // Step mode only; Total mode clamps per vertex
+  int max_iter = 10;                         // stop criterion 1
+  double weight = 30.0;                      // w of Eq. (8): developability vs shape rows
+  Developability developability = Developability::Auto;
+  double defect_weight = 0.03;               // w_d of the angle-defect rows (angle_defect.h)
+  double anchor = 3.0;                       // α of the MLS soft anchor rows (Eq. 15)
+  SeamMode seams = SeamMode::Fixed;
+  bool keep_boundary = true;                 // open mesh boundary vertices are constrained
+  TargetMode targets = TargetMode::Reproject;
+  double stop_abd = 1.0;                     // δ_ABD, percent (Eq. 19); stop when ratio below
+  double stop_obd = 1.0;                     // δ_OBD, percent (Eq. 20)
+  SolverKind solver = SolverKind::Auto;      // Auto: by size, as measured (sparse_cholesky.h)
+  SolveMethod method = SolveMethod::Auto;    // Auto: by size, as measured (deformation_system.h)
+  int threads = 0;                           // patches solved at once (a lone patch uses them
+                                             // inside); 0 = all cores
+};
+
+}  // namespace qd

@@ -1,0 +1,15 @@
+// The engine's entry point: Algorithm 1 of the paper over every patch of a mesh.
+#pragma once
+
+#include "approximate/problem.h"
+#include "approximate/result.h"
+#include "common/progress.h"
+
+namespace qd {
+
+// Validates the problem, runs Step 1 (target normals) and Step 2 (deformation) on every patch
+// (or on all patches jointly with free seams), and returns the new positions and reports.
+// Throws qd::Error on bad input; the input is never modified.
+Result approximate(const Problem& problem, const Progress& progress = {});
+
+}  // namespace qd

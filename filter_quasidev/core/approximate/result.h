@@ -1,0 +1,77 @@
+// Output of the engine: new positions, per-vertex figures, per-patch and total reports.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/mesh.h"
+#include "common/metrics.h"
+
+namespace qd {
+
+struct IterationReport {
+  int iteration = 0;         // 1-based
+  Figures figures;           // after this iteration
+  double ratio_abd = 0;      // Eq. (19), percent, vs the previous iteration
+  double ratio_obd = 0;      // Eq. (20), percent
+  double step_scale = 1;     // 1 = full step; < 1 = shortened by the never-worse rule
+  std::string note;          // why a step was shortened or rejected, if it was
+};
+
+struct PatchReport {
+  int id = 0;
+  int faces = 0;
+  int vertices = 0;
+  int free_vertices = 0;
+  double tolerance = 0;          // δ_err used, model units
+  std::string target_kind;       // "curve", "closed curve", "plane"
+  std::string developability;    // rows used: "curve" (paper), "defect", "both", "none"
+  std::string developability_reason;  // why (Developability::Auto says which figure decided)
+  double fit_residual_deg = 0;   // area-weighted mean angle between n_f and its target
+  int iterations = 0;            // accepted iterations
+  std::string stop_reason;
+  Figures before;
+  Figures after;
+  double abd_reduction = 0;      // (G_before − G_after)/G_before, percent
+  double obd_reduction = 0;      // same for D(P), measured with the initial targets
+  double time_ms = 0;
+  std::vector<IterationReport> history;
+};
+
+// Where the time went, in milliseconds summed over groups (and threads), and solver counts.
+struct StageTimes {
+  double setup = 0;          // validation, topology, solve groups, MLS weights, ordering, pattern
+  double step1 = 0;          // DEGI, skeleton curve, target normals and their re-projection
+  double assembly = 0;       // the matrix M and the right-hand sides
+  double factorization = 0;  // symbolic analysis and numeric factorisations
+  double solve = 0;          // forward and back substitutions
+  double metrics = 0;        // figures for the stop criteria, the never-worse rule, the reports
+  int factorizations = 0;
+  int solves = 0;            // linear solves, one per iteration
+  int cg_iterations = 0;     // conjugate-gradient iterations of the iterative solves
+  StageTimes& operator+=(const StageTimes& o) {
+    setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
+    solve += o.solve, metrics += o.metrics;
+    factorizations += o.factorizations, solves += o.solves, cg_iterations += o.cg_iterations;
+    return *this;
+  }
+};
+
+struct Result {
+  Positions V;                       // new positions, same order as the input
+  double average_edge = 0;           // AE of the input
+  std::vector<double> k_before;      // K(v) per vertex, 0 on boundary / unused vertices
+  std::vector<double> k_after;
+  std::vector<double> displacement;  // |v' − v0| per vertex
+  std::vector<PatchReport> patches;  // in ascending patch id order
+  Figures total_before;              // whole mesh
+  Figures total_after;
+  double abd_reduction = 0;          // whole mesh, percent
+  int factorizations = 0;            // sparse Cholesky numeric factorisations performed
+  StageTimes times;                  // per stage; time_ms is the wall-clock total
+  double time_ms = 0;
+  std::vector<std::string> warnings; // parts of the mesh left as they are (validate.h warnings())
+  std::vector<std::string> log;      // human-readable lines: the warnings, one per patch, total
+};
+
+}  // namespace qd

@@ -1,0 +1,37 @@
+#include "approximate/solve_rounds.h"
+
+#include <algorithm>
+
+namespace qd {
+
+std::vector<std::vector<size_t>> solve_rounds(const std::vector<std::vector<int>>& groups,
+                                              const Triangles& F, Eigen::Index vertex_count) {
+  // Groups touching each vertex, then each group's neighbours.
+  std::vector<std::vector<size_t>> at_vertex(static_cast<size_t>(vertex_count));
+  for (size_t g = 0; g < groups.size(); ++g)
+    for (int f : groups[g])
+      for (int c = 0; c < 3; ++c) {
+        std::vector<size_t>& list = at_vertex[static_cast<size_t>(F(f, c))];
+        if (list.empty() || list.back() != g) list.push_back(g);
+      }
+  std::vector<std::vector<size_t>> neighbours(groups.size());
+  for (const std::vector<size_t>& list : at_vertex)
+    for (size_t a : list)
+      for (size_t b : list)
+        if (a != b) neighbours[a].push_back(b);
+
+  std::vector<int> round_of(groups.size(), -1);
+  std::vector<std::vector<size_t>> rounds;
+  for (size_t g = 0; g < groups.size(); ++g) {
+    std::vector<char> taken(rounds.size() + 1, 0);
+    for (size_t n : neighbours[g])
+      if (round_of[n] >= 0) taken[static_cast<size_t>(round_of[n])] = 1;
+    const size_t r = static_cast<size_t>(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+    if (r == rounds.size()) rounds.emplace_back();
+    rounds[r].push_back(g);
+    round_of[g] = static_cast<int>(r);
+  }
+  return rounds;
+}
+
+}  // namespace qd

@@ -1,0 +1,52 @@
+// Sparse Cholesky factorisation of the SPD normal matrix (paper §5.4, Eq. 17). The matrix
+// arrives already in a fill-reducing order (vertex_order.h), so no back end reorders it; the
+// symbolic analysis is done on the first factorisation and reused, since a group's sparsity
+// pattern never changes. Back ends: CHOLMOD supernodal LLᵀ (SuiteSparse), Eigen's SimplicialLLT
+// and SimplicialLDLT. SolverKind::Auto takes SimplicialLDLT below kCholmodFromUnknowns unknowns
+// and CHOLMOD from there on (the crossover measured by bench/qd_bench, README, Performance), or
+// SimplicialLDLT always in a build without CHOLMOD. The angle-defect rows (angle_defect.h)
+// widen the pattern to pairs of vertices with a common neighbour (about 29 stored non-zeros
+// per unknown instead of 11); the supernodal factor wins there from kCholmodFromUnknownsWide
+// (measured on the shirt's 4.5k-unknown panels: 20 ms CHOLMOD, 42 ms SimplicialLDLT).
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+
+namespace qd {
+
+enum class SolverKind { Auto, Cholmod, EigenLLT, EigenLDLT };  // back end (§5.4)
+
+constexpr long kCholmodFromUnknowns = 6000;
+constexpr long kWidePatternNonZerosPerUnknown = 20;
+constexpr long kCholmodFromUnknownsWide = 1500;
+
+class SparseCholesky {
+ public:
+  // many_solves: the factor will serve many solves, possibly two at once in two threads. CHOLMOD's
+  // supernodal factor is then converted to simplicial form after each factorisation: its solve
+  // makes no BLAS calls, whose buffer locks serialised the frame preconditioner's two concurrent
+  // solves (1M triangles, 5 iterations: solve stage 4.7 s supernodal, 3.4 s simplicial).
+  explicit SparseCholesky(SolverKind kind, bool many_solves = false);
+  ~SparseCholesky();
+  SparseCholesky(const SparseCholesky&) = delete;
+  SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+  // Factorises M (lower triangle used); throws qd::Error if M is not positive definite.
+  void factorize(const Eigen::SparseMatrix<double>& M);
+  // Solves M x = b by forward and back substitution with the current factor; b may have
+  // several columns (right-hand sides), which share one pass over the factor.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
+  int factorizations() const { return factorizations_; }
+
+  struct Backend;
+
+ private:
+  SolverKind kind_;
+  bool many_solves_;
+  std::unique_ptr<Backend> backend_;  // chosen on the first factorisation
+  int factorizations_ = 0;
+};
+
+}  // namespace qd

@@ -1,0 +1,12 @@
+#include "filter_table.h"
+
+#include "quasidev_adapter.h"
+
+namespace qdml {
+
+const std::vector<FilterSpec>& filter_table() {
+  static const std::vector<FilterSpec> table = {approximate_filter()};
+  return table;
+}
+
+}  // namespace qdml
