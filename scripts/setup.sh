@@ -119,5 +119,5 @@ if [ -f "$ROOT/scripts/setup_pymeshlab.sh" ]; then
 fi
 # ---- 5. the sid chroot with MeshLab 2025.07 ------------------------------------------------
 say "running scripts/setup_sid_chroot.sh"
-"${SUDO[@]}" bash "$ROOT/scripts/setup_sid_chroot.sh" || die "scripts/setup_sid_chroot.sh"
+bash "$ROOT/scripts/setup_sid_chroot.sh" || die "scripts/setup_sid_chroot.sh"
 say "done: build with  cmake -S $ROOT -B $ROOT/build -DCMAKE_BUILD_TYPE=Release && cmake --build $ROOT/build -j2"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Makes the Debian sid chroot in which the real MeshLab 2025.07 GUI runs for the tests
 # (tests/meshlab/test_gui_2025.py; MESHLAB.md §5b): Debian 12 ships only MeshLab 2020.09, sid ships
-# meshlab 2025.07~dfsg-4 (Qt 5). Called by scripts/setup.sh; can also be run alone, as root.
+# meshlab 2025.07~dfsg-4 (Qt 5). Called by scripts/setup.sh; can also be run alone (as root, or
+# it asks sudo when there is work to do).
 #
 #   debootstrap --variant=minbase sid, then apt-get install --no-install-recommends the pinned
 #   meshlab + the four libraries without which MeshLab 2025.07 opens its blocking "Unable to load
@@ -36,7 +37,14 @@ if [ -f "$MARKER" ] && [ "$(cat "$MARKER")" = "$SPEC" ]; then
   say "present: ${CHROOT#"$ROOT"/} (meshlab $MESHLAB_VERSION)"
   exit 0
 fi
-[ "$(id -u)" -eq 0 ] || die "must run as root (debootstrap, chroot)"
+if [ -f "$UNAVAILABLE" ] && grep -qF "meshlab $MESHLAB_VERSION " "$UNAVAILABLE"; then
+  echo "[setup_sid_chroot] WARNING: $(cat "$UNAVAILABLE") (found earlier; delete $UNAVAILABLE to look again)" >&2
+  exit 0
+fi
+if [ "$(id -u)" -ne 0 ]; then   # debootstrap and chroot need root
+  command -v sudo >/dev/null || die "not root and no sudo: run this script as root"
+  exec sudo env QD_SID_CHROOT="$CHROOT" QD_SID_MIRROR="$MIRROR" bash "$0" "$@"
+fi
 command -v debootstrap >/dev/null || die "debootstrap missing (apt-get install debootstrap)"
 
 # Refuses to delete a directory something is mounted in (rm -rf would descend into /dev, /proc).
@@ -84,7 +92,7 @@ in_chroot() {
 
 say "apt-get update in the chroot"
 in_chroot apt-get update -q >/dev/null || die "apt-get update in the sid chroot"
-available=$(in_chroot apt-cache madison meshlab | awk '{print $3}' | tr '\n' ' ')
+available=$(in_chroot apt-cache madison meshlab | awk '{print $3}' | paste -sd ' ')
 if ! grep -qwF -- "$MESHLAB_VERSION" <<<"$available"; then
   msg="Debian sid no longer has meshlab $MESHLAB_VERSION (it has: ${available:-none}); update MESHLAB_VERSION in scripts/setup_sid_chroot.sh"
   echo "[setup_sid_chroot] WARNING: $msg; the MeshLab 2025.07 GUI test will be skipped" >&2

@@ -11,5 +11,5 @@ bash scripts/setup.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DQD_WERROR=ON
 cmake --build build -j2
 (cd build && ctest --output-on-failure -j2)
-QD_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest -q -p no:cacheprovider tests
+QD_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest -q -rs -p no:cacheprovider tests  # -rs: say why a test skipped
 bash tests/cli/run_sanitizers.sh "$PWD/build-asan"

@@ -7,8 +7,8 @@
 // combo box and menu entry in them.
 // The tests read what the dialogs really show (parameter labels, the pymeshlab name, an error
 // box's message) and where a button is; all input still goes through X (xdotool).
-// Built by the tests with g++ against the host's Qt 5.15 (a Qt 5.15 library loads into any
-// Qt 5.15 host); uses no moc.
+// Built by the tests with g++ against the host's Qt (bookworm's 5.15.8; it loads into sid's
+// 5.15.19 as well); uses no moc.
 #include <QApplication>
 #include <QAbstractButton>
 #include <QComboBox>
