@@ -2,11 +2,14 @@
 # Installs everything the project needs on Debian 12 (idempotent; fast when already done):
 #   1. Debian packages for building (compiler, CMake, Qt5, Eigen, GLEW, SuiteSparse, GoogleTest,
 #      nanoflann, CLI11, nlohmann-json; clang and its libFuzzer for tests/cli/run_sanitizers.sh)
-#      and running (meshlab 2020.09, Xvfb, xdotool, ImageMagick, Mesa, python3-venv);
+#      and running (meshlab 2020.09, Xvfb, xdotool, ImageMagick, Mesa, python3-venv; debootstrap
+#      and pkgconf for the MeshLab 2025.07 GUI test);
 #   2. the MeshLab source trees whose headers the plugins compile against, from Debian's source
 #      packages (pinned by sha256), into third_party/meshlab-2020.09 and third_party/meshlab-2025.07;
 #   3. the Python venv .venv with every scripts/requirements-*.txt;
-#   4. scripts/setup_pymeshlab.sh if present (pymeshlab 2025.07 side).
+#   4. scripts/setup_pymeshlab.sh if present (pymeshlab 2025.07 side);
+#   5. scripts/setup_sid_chroot.sh: the Debian sid chroot third_party/sid-chroot in which the
+#      MeshLab 2025.07 GUI test runs (made once, ~1 min and ~490 MB; skipped when complete).
 # Run as root (CI) or as a user with sudo. Fails loudly, naming the step that failed.
 set -euo pipefail
 
@@ -27,7 +30,8 @@ PACKAGES=(cmake g++ make ninja-build qtbase5-dev libqt5opengl5-dev libglew-dev
           libeigen3-dev libsuitesparse-dev libopenblas0-pthread libgtest-dev libnanoflann-dev
           libcli11-dev nlohmann-json3-dev
           meshlab xvfb xauth xdotool imagemagick libgl1-mesa-dri python3-venv
-          ca-certificates debian-archive-keyring xz-utils clang libclang-rt-14-dev)
+          ca-certificates debian-archive-keyring xz-utils clang libclang-rt-14-dev
+          debootstrap pkgconf)
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -114,4 +118,7 @@ if [ -f "$ROOT/scripts/setup_pymeshlab.sh" ]; then
   say "running scripts/setup_pymeshlab.sh"
   bash "$ROOT/scripts/setup_pymeshlab.sh" || die "scripts/setup_pymeshlab.sh"
 fi
+# ---- 5. the sid chroot with MeshLab 2025.07 ------------------------------------------------
+say "running scripts/setup_sid_chroot.sh"
+bash "$ROOT/scripts/setup_sid_chroot.sh" || die "scripts/setup_sid_chroot.sh"
 say "done: build with  cmake -S $ROOT -B $ROOT/build -DCMAKE_BUILD_TYPE=Release && cmake --build $ROOT/build -j2"

@@ -1,5 +1,6 @@
-"""Fixtures of the MeshLab 2020.09 integration tests: the built plugin, and a private MeshLab
-prefix (MESHLAB.md §3.2) made by scripts/install_plugin.sh --user, one per test session."""
+"""Fixtures of the MeshLab integration tests: the built plugin, a private MeshLab 2020.09
+prefix (MESHLAB.md §3.2) made by scripts/install_plugin.sh --user, one per test session; and for
+the GUI tests of both generations (gui_support.py) a private Xvfb display and the window probe."""
 from __future__ import annotations
 
 import shutil
@@ -8,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from gui_support import Display, build_probe
 from ml2020_support import REPO, build_dir
 
 
@@ -38,3 +40,18 @@ def meshlab_prefix(plugin_path, tmp_path_factory) -> Path:
                           capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stdout + done.stderr
     return prefix
+
+
+@pytest.fixture(scope="session")
+def probe_lib(tmp_path_factory) -> Path:
+    """gui_probe.cpp built against the host's Qt, once per session."""
+    return build_probe(tmp_path_factory.mktemp("gui_probe"))
+
+
+@pytest.fixture
+def display(tmp_path):
+    d = Display(tmp_path)
+    try:
+        yield d
+    finally:
+        d.close()
