@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <thread>
 
+#include "error.h"
 #include "flatten/flatten_piece.h"
 #include "flatten/layout.h"
 #include "flatten/notches.h"
@@ -31,6 +33,27 @@ void validate_mesh(const FlattenProblem& problem) {
   check.params.seams = SeamMode::Free;
   check.params.keep_boundary = false;
   validate(check);
+}
+
+std::string str(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+void check_params(const FlattenParams& q) {
+  if (q.max_iterations < 0 || q.max_iterations > 100000)
+    throw Error("The maximum number of ARAP iterations is " + std::to_string(q.max_iterations) +
+                ": use a value from 0 (the initial layout only) to 100000, e.g. 100.");
+  if (!std::isfinite(q.tolerance) || q.tolerance < 0 || q.tolerance >= 1)
+    throw Error("The ARAP tolerance is " + str(q.tolerance) +
+                ": it is a relative change of the energy, use a value in [0, 1), e.g. 1e-4.");
+  if (!std::isfinite(q.gap) || q.gap < 0)
+    throw Error("The gap between pieces is " + str(q.gap) + ": use a distance >= 0 (0 = automatic).");
+  if (!std::isfinite(q.notch_spacing) || q.notch_spacing < 0)
+    throw Error("The notch spacing is " + str(q.notch_spacing) + ": use a distance >= 0 (0 = automatic).");
+  if (q.threads < 0)
+    throw Error("The number of threads is " + std::to_string(q.threads) + ": use 0 (all cores) or more.");
 }
 
 std::string label_of(const Piece& p) {
@@ -83,6 +106,7 @@ size_t thread_count(int requested) {
 FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   validate_mesh(problem);
+  check_params(problem.params);
   std::vector<Piece> pieces = extract_pieces(problem.V, problem.F, problem.patch);
   const FlattenParams& params = problem.params;
 

@@ -11,7 +11,8 @@
 //  4. The interior as the harmonic extension of both coordinates, L_II x_I = −L_IB x_B
 //     (a Tutte/harmonic embedding whose boundary shape is computed, not guessed).
 // Only scalar systems: one factorisation of L_II serves steps 1 and 4. LSCM (Lévy et al.
-// 2002) needs the coupled 2n×2n system, measured here 5× slower to factorise at 1M triangles.
+// 2002) with two pinned vertices needs the coupled 2n×2n system: CHOLMOD factorised a
+// 500k-vertex grid's Laplacian in 2.4 s and the same pattern in 2×2 blocks in 16 s.
 #pragma once
 
 #include <Eigen/SparseCore>

@@ -90,6 +90,16 @@ TEST(CutToDisk, TorusGetsTwoLoops) {
   expect_disk(p);
 }
 
+TEST(CutToDisk, TorusWithAHoleGetsTwoLoopsThroughItsBoundary) {
+  GridMesh m = torus(24, 12);
+  m.F = m.F.bottomRows(m.F.rows() - 4).eval();  // two quads out: one boundary loop
+  qd::Piece p = piece_of(m);
+  const qd::DiskCut cut = qd::cut_to_disk(p);
+  EXPECT_EQ(cut.joining_paths, 0);
+  EXPECT_EQ(cut.handle_loops, 2);
+  expect_disk(p);
+}
+
 TEST(CutToDisk, ClosedSphereIsSlitOpen) {
   // The spherical cap up to the equator, twice (mirrored), glued along the equator.
   const GridMesh cap = qd::test::spherical_cap(16, 6, M_PI / 2);

@@ -3,6 +3,8 @@
 // pieces lie apart on the sheet, notches mark seams, bad input fails clearly.
 #include <gtest/gtest.h>
 
+#include <functional>
+
 #include "error.h"
 #include "flatten/face_distortion.h"
 #include "flatten/face_geometry.h"
@@ -72,6 +74,23 @@ TEST(Flatten, DoublyCurvedCapIsFlattenedWithItsDistortionReported) {
   EXPECT_NE(r.log[0].find("length distortion max"), std::string::npos);
 }
 
+TEST(Flatten, RampThatDevelopsOntoItselfIsReportedNotFlattenable) {
+  // The tangent developable of a helix (pitch 0.3 per radian) over three turns: developable,
+  // but its development winds about 2.9 times around the circle its edge of regression becomes.
+  const GridMesh ramp = qd::test::grid_mesh(240, 4, false, [](int i, int j) {
+    const double t = 6 * M_PI * i / 240, b = 0.3, s = (0.4 + 0.2 * j) / std::sqrt(1 + b * b);
+    return qd::Vec3(std::cos(t) - s * std::sin(t), std::sin(t) + s * std::cos(t), b * (t + s));
+  });
+  const qd::FlattenResult r = qd::flatten(problem_of(ramp));
+  ASSERT_EQ(r.pieces.size(), 1u);
+  const qd::PieceReport& p = r.pieces[0];
+  EXPECT_GT(p.overlapping, 0);
+  EXPECT_FALSE(p.flattenable);
+  EXPECT_NE(r.log[0].find("not flattenable without a cut"), std::string::npos);
+  EXPECT_LT(p.max_distortion, 1.0);  // still flattened, and nearly isometric
+  EXPECT_TRUE(r.uv.allFinite());
+}
+
 TEST(Flatten, SameResultTwiceAndForAnyNumberOfThreads) {
   const GridMesh m = five_patches();
   const qd::FlattenResult a = qd::flatten(problem_of(m, 1));
@@ -124,6 +143,14 @@ TEST(Flatten, ProgressRisesToOneHundred) {
 TEST(Flatten, BadInputFailsWithAReason) {
   qd::FlattenProblem empty;
   EXPECT_THROW(qd::flatten(empty), qd::Error);
+  for (const auto& bad : std::vector<std::function<void(qd::FlattenParams&)>>{
+           [](qd::FlattenParams& q) { q.max_iterations = -1; }, [](qd::FlattenParams& q) { q.tolerance = NAN; },
+           [](qd::FlattenParams& q) { q.gap = -1; }, [](qd::FlattenParams& q) { q.notch_spacing = INFINITY; },
+           [](qd::FlattenParams& q) { q.threads = -2; }}) {
+    qd::FlattenProblem p = problem_of(qd::test::cylinder(8, 2, 1, 1, 2));
+    bad(p.params);
+    EXPECT_THROW(qd::flatten(p), qd::Error);
+  }
   qd::FlattenProblem nan = problem_of(qd::test::cylinder(8, 2, 1, 1, 2));
   nan.V(3, 1) = NAN;
   try {

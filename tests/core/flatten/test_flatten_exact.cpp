@@ -60,6 +60,19 @@ TEST(FlattenExact, ConeTubeFlattensToItsSector) {
   EXPECT_NE(p.cut.find("1 shortest path"), std::string::npos) << p.cut;
 }
 
+// The boundary-first start alone (no ARAP iteration) is already the development.
+TEST(FlattenExact, TheStartIsTheDevelopmentAlready) {
+  for (const GridMesh& m : {qd::test::cylinder(32, 8, 1.0, 2.0), qd::test::cone(40, 10, 1.0, 0.4, 1.5)}) {
+    qd::FlattenProblem p;
+    p.V = m.V;
+    p.F = m.F;
+    p.params.max_iterations = 0;
+    const qd::FlattenResult r = qd::flatten(p);
+    EXPECT_EQ(r.pieces[0].iterations, 0);
+    EXPECT_LT(max_edge_error(m, r), 1e-9);
+  }
+}
+
 // Open strips need no cut; the pattern is the same rectangle / sector, at true scale.
 TEST(FlattenExact, OpenCylinderAndConeStripsNeedNoCut) {
   for (const GridMesh& m : {qd::test::cylinder(24, 6, 2.0, 1.0, 2.5), qd::test::cone(24, 6, 2.0, 0.5, 1.0, 3.0)}) {
