@@ -3,18 +3,17 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <thread>
 
-#include "error.h"
 #include "flatten/flatten_piece.h"
+#include "flatten/flatten_validate.h"
 #include "flatten/layout.h"
 #include "flatten/notches.h"
+#include "flatten/piece_report.h"
 #include "parallel_for.h"
 #include "serial_blas.h"
-#include "validate.h"
 
 namespace qd {
 
@@ -22,79 +21,22 @@ namespace {
 
 constexpr double kAutoNotchSpacing = 0.125;  // of the largest piece's longer side
 
-// The mesh checks of the approximation (validate.h) with neutral parameters: nothing
-// constrained, so only what makes a mesh unusable fails.
-void validate_mesh(const FlattenProblem& problem) {
-  Problem check;
-  check.V = problem.V;
-  check.F = problem.F;
-  check.patch = problem.patch;
-  check.params.tolerance = 1;
-  check.params.seams = SeamMode::Free;
-  check.params.keep_boundary = false;
-  validate(check);
-}
-
-std::string str(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
-void check_params(const FlattenParams& q) {
-  if (q.max_iterations < 0 || q.max_iterations > 100000)
-    throw Error("The maximum number of ARAP iterations is " + std::to_string(q.max_iterations) +
-                ": use a value from 0 (the initial layout only) to 100000, e.g. 100.");
-  if (!std::isfinite(q.tolerance) || q.tolerance < 0 || q.tolerance >= 1)
-    throw Error("The ARAP tolerance is " + str(q.tolerance) +
-                ": it is a relative change of the energy, use a value in [0, 1), e.g. 1e-4.");
-  if (!std::isfinite(q.gap) || q.gap < 0)
-    throw Error("The gap between pieces is " + str(q.gap) + ": use a distance >= 0 (0 = automatic).");
-  if (!std::isfinite(q.notch_spacing) || q.notch_spacing < 0)
-    throw Error("The notch spacing is " + str(q.notch_spacing) + ": use a distance >= 0 (0 = automatic).");
-  if (q.threads < 0)
-    throw Error("The number of threads is " + std::to_string(q.threads) + ": use 0 (all cores) or more.");
-}
-
 std::string label_of(const Piece& p) {
   return std::to_string(p.patch) + (p.components > 1 ? "." + std::to_string(p.component) : "");
 }
 
-PieceReport report_of(const FlatPiece& flat, const std::string& label, const Eigen::AlignedBox2d& box) {
-  PieceReport r;
-  r.patch = flat.piece.patch;
-  r.component = flat.piece.component;
-  r.label = label;
-  r.faces = static_cast<int>(flat.piece.F.rows());
-  r.vertices = static_cast<int>(flat.piece.V.rows());
-  r.cut = flat.cut.note;
-  r.iterations = flat.arap.iterations;
-  r.stop_reason = flat.arap.stop_reason;
-  r.energy = flat.arap.energy;
-  const PieceMeasures& m = flat.measures;
-  r.max_distortion = m.max_distortion;
-  r.mean_distortion = m.mean_distortion;
-  r.area_change = m.area_change;
-  r.boundary_change = m.boundary_change;
-  r.flipped = m.flipped;
-  r.overlapping = m.overlapping;
-  r.flattenable = m.flattenable();
-  r.box = box;
-  r.time_ms = flat.time_ms;
-  return r;
-}
-
-std::string log_line(const PieceReport& r) {
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(2) << std::showpos;
-  s << "patch " << r.label << ": " << std::noshowpos << r.faces << " faces";
-  if (!r.cut.empty()) s << ", " << r.cut;
-  s << "; " << r.iterations << " ARAP iterations (" << r.stop_reason << "); length distortion max "
-    << r.max_distortion << " %, mean " << r.mean_distortion << " %; area " << std::showpos << r.area_change
-    << " %, boundary " << r.boundary_change << " %; " << std::noshowpos << r.flipped << " flipped, "
-    << r.overlapping << " overlapping";
-  if (!r.flattenable) s << ": not flattenable without a cut";
-  return s.str();
+// Notch flags per mesh vertex for the pieces' boundaries (notches.h); spacing 0 = automatic.
+std::vector<char> notches_of(const Positions& V, const std::vector<FlatPiece>& flat,
+                             const std::vector<Eigen::AlignedBox2d>& boxes, double spacing) {
+  std::vector<std::array<int, 2>> boundary_edges;  // in mesh vertices
+  double longest = 0;
+  for (size_t i = 0; i < flat.size(); ++i) {
+    const std::vector<int>& vertex = flat[i].piece.vertex;
+    for (const std::vector<int>& loop : flat[i].loops)
+      for (size_t k = 0; k < loop.size(); ++k) boundary_edges.push_back({vertex[loop[k]], vertex[loop[(k + 1) % loop.size()]]});
+    longest = std::max(longest, boxes[i].sizes().maxCoeff());
+  }
+  return notch_vertices(V, std::move(boundary_edges), spacing > 0 ? spacing : kAutoNotchSpacing * longest);
 }
 
 size_t thread_count(int requested) {
@@ -105,8 +47,7 @@ size_t thread_count(int requested) {
 
 FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
   const auto t0 = std::chrono::steady_clock::now();
-  validate_mesh(problem);
-  check_params(problem.params);
+  validate_flatten(problem);
   std::vector<Piece> pieces = extract_pieces(problem.V, problem.F, problem.patch);
   const FlattenParams& params = problem.params;
 
@@ -133,16 +74,7 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
   for (FlatPiece& p : flat) uvs.push_back(std::move(p.uv));
   const std::vector<Eigen::AlignedBox2d> boxes = lay_out(uvs, params.gap);
 
-  std::vector<std::array<int, 2>> boundary_edges;  // all pieces', in mesh vertices
-  double longest = 0;
-  for (size_t i = 0; i < flat.size(); ++i) {
-    for (const std::vector<int>& loop : flat[i].loops)
-      for (size_t k = 0; k < loop.size(); ++k)
-        boundary_edges.push_back({flat[i].piece.vertex[loop[k]], flat[i].piece.vertex[loop[(k + 1) % loop.size()]]});
-    longest = std::max(longest, boxes[i].sizes().maxCoeff());
-  }
-  const std::vector<char> notch = notch_vertices(problem.V, std::move(boundary_edges),
-                                                 params.notch_spacing > 0 ? params.notch_spacing : kAutoNotchSpacing * longest);
+  const std::vector<char> notch = notches_of(problem.V, flat, boxes, params.notch_spacing);
 
   FlattenResult r;
   r.uv.resize(problem.F.rows(), 6);
@@ -161,7 +93,7 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
     for (size_t v = 0; v < notched.size(); ++v) notched[v] = notch[p.vertex[v]];
     const std::string label = label_of(p);
     pattern.push_back(pattern_piece(p.patch, label, p.F, uvs[i], flat[i].loops, notched));
-    r.pieces.push_back(report_of(flat[i], label, boxes[i]));
+    r.pieces.push_back(piece_report(flat[i], label, boxes[i]));
     r.log.push_back(log_line(r.pieces.back()));
     if (r.pieces.back().max_distortion >= worst) {
       worst = r.pieces.back().max_distortion;

@@ -132,6 +132,22 @@ TEST(Flatten, PiecesLieApartAndSeamsGetNotches) {
   }
 }
 
+TEST(Flatten, OneTrianglePatchesAreExactPieces) {
+  GridMesh m = qd::test::cylinder(8, 2, 1.0, 1.0);
+  m.patch.assign(static_cast<size_t>(m.F.rows()), 0);
+  m.patch[5] = 1;  // a single triangle
+  m.patch[6] = 2;  // and another one beside it: they share an edge but not a patch
+  const qd::FlattenResult r = qd::flatten(problem_of(m));
+  ASSERT_EQ(r.pieces.size(), 3u);
+  for (int piece = 1; piece <= 2; ++piece) {
+    EXPECT_EQ(r.pieces[piece].faces, 1);
+    EXPECT_LT(r.pieces[piece].max_distortion, 1e-9);
+  }
+  EXPECT_EQ(r.pieces[0].faces, 30);  // still a tube, whose two loops the notch does not join
+  EXPECT_NE(r.pieces[0].cut.find("1 shortest path"), std::string::npos) << r.pieces[0].cut;
+  EXPECT_LT(r.pieces[0].max_distortion, 1e-6);
+}
+
 TEST(Flatten, ProgressRisesToOneHundred) {
   std::vector<int> percent;
   qd::flatten(problem_of(five_patches(), 1), [&](int p, const std::string&) { percent.push_back(p); });
