@@ -13,7 +13,7 @@ namespace {
 // Below this E / Σ A the flattening is an isometry to rounding: nothing is left to improve.
 constexpr double kExactEnergy = 1e-24;
 
-// The rotation nearest to J in the Frobenius norm (local step, Liu et al. 2008 Eq. 5).
+// The rotation nearest to J in the Frobenius norm (the local step).
 Eigen::Matrix2d nearest_rotation(const Eigen::Matrix2d& J) {
   const double c = J(0, 0) + J(1, 1), s = J(1, 0) - J(0, 1), r = std::hypot(c, s);
   if (r == 0) return Eigen::Matrix2d::Identity();
@@ -23,7 +23,7 @@ Eigen::Matrix2d nearest_rotation(const Eigen::Matrix2d& J) {
 }
 
 // Per face, Y_t = X_t K_t: column k is Σ_j ½cot θ_kj (x_k − x_j), so that face t adds R_t Y_t(:, k)
-// to b at its corner k (global step, Liu et al. 2008 Eq. 8).
+// to b at its corner k (the global step).
 std::vector<Eigen::Matrix<double, 2, 3>> weighted_frame_edges(const FaceGeometry& g) {
   std::vector<Eigen::Matrix<double, 2, 3>> Y(g.corner.size());
   for (size_t f = 0; f < Y.size(); ++f)

@@ -1,9 +1,9 @@
 // As-rigid-as-possible flattening by local/global iterations (Liu, Zhang, Xu, Gotsman, Gortler
-// 2008, "A local/global approach to mesh parameterization", SGP). Energy (their Eq. 3 with
-// cotangent weights, written per face with the identity Σ_k ½cot θ_k |M e_k|² = A‖M‖²_F):
+// 2008, "A local/global approach to mesh parameterization", SGP). Their energy with cotangent
+// weights, written per face with the identity Σ_k ½cot θ_k |M e_k|² = A‖M‖²_F:
 //     E(u, R) = Σ_t A_t ‖J_t − R_t‖²_F,    R_t ∈ SO(2).
-// Local step (Eq. 5): R_t = the rotation nearest J_t; for a 2×2 matrix that is the rotation by
-// atan2(J10 − J01, J00 + J11), never a reflection. Global step (Eq. 8): L u = b with L the
+// Local step: R_t = the rotation nearest J_t; for a 2×2 matrix that is the rotation by
+// atan2(J10 − J01, J00 + J11), never a reflection. Global step: L u = b with L the
 // cotangent Laplacian and b_i = Σ_t Σ_{j∈t} ½cot θ_ij R_t (x_i − x_j); L does not depend on
 // the iterate, so it is factorised once per piece (one vertex pinned: E is blind to
 // translation) and each iteration costs one solve with two right-hand sides.

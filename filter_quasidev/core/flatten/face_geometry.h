@@ -1,7 +1,7 @@
 // Each triangle laid flat in its own plane, and what the flattening steps need of it.
 // Corner coordinates in an isometric 2D frame: x0 = (0, 0), x1 = (|v1 − v0|, 0), x2 above the
 // x axis; the 3D→2D map of a face is then the 2×2 Jacobian J = [u1 − u0, u2 − u0]·E⁻¹ with
-// E = [x1 − x0, x2 − x0] (Liu et al. 2008, §3: the per-triangle linear map).
+// E = [x1 − x0, x2 − x0] (the per-triangle linear map of Liu et al. 2008).
 #pragma once
 
 #include <vector>
