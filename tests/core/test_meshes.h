@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "approximate/problem.h"
+#include "grid_mesh.h"
 
 namespace qd::test {
 
@@ -13,25 +14,20 @@ namespace qd::test {
 // `sectors` > 1. Faces are oriented outward.
 inline Problem bumpy_cylinder(int nu, int nv, double bump, double cone = 0.0, int sectors = 1,
                               double h = 2.0) {
+  const GridMesh grid = grid_mesh(nu, nv, true, [&](int i, int j) {
+    const double t = 2 * M_PI * i / nu, z = h * j / nv;
+    const double d2 = std::pow(std::remainder(t - 1.0, 2 * M_PI), 2) + std::pow(z - h / 2, 2);
+    const double r = 1.0 + cone * z + bump * std::exp(-d2 / 0.18) +
+                     0.5 * bump * std::exp(-(std::pow(std::remainder(t + 2.0, 2 * M_PI), 2) +
+                                             std::pow(z - h / 3, 2)) / 0.1);
+    return Vec3(r * std::cos(t), r * std::sin(t), z);
+  });
   Problem p;
-  p.V.resize(nu * (nv + 1), 3);
-  for (int j = 0; j <= nv; ++j)
-    for (int i = 0; i < nu; ++i) {
-      const double t = 2 * M_PI * i / nu, z = h * j / nv;
-      const double d2 = std::pow(std::remainder(t - 1.0, 2 * M_PI), 2) + std::pow(z - h / 2, 2);
-      const double r = 1.0 + cone * z + bump * std::exp(-d2 / 0.18) +
-                       0.5 * bump * std::exp(-(std::pow(std::remainder(t + 2.0, 2 * M_PI), 2) +
-                                               std::pow(z - h / 3, 2)) / 0.1);
-      p.V.row(j * nu + i) << r * std::cos(t), r * std::sin(t), z;
-    }
-  p.F.resize(2 * nu * nv, 3);
-  int f = 0;
+  p.V = grid.V;
+  p.F = grid.F;
   for (int j = 0; j < nv; ++j)
     for (int i = 0; i < nu; ++i) {
-      const int a = j * nu + i, b = j * nu + (i + 1) % nu, c = a + nu, d = b + nu;
-      p.F.row(f++) << a, b, d;
-      p.F.row(f++) << a, d, c;
-      const int s = i * sectors / nu;
+      const int s = i * sectors / nu;  // the two triangles of quad (i, j)
       p.patch.push_back(s);
       p.patch.push_back(s);
     }

@@ -67,4 +67,10 @@ double average_edge_length(const Positions& V, const Triangles& F, const std::ve
   return unique > 0 ? total / static_cast<double>(unique) : 0.0;
 }
 
+int corner_of(const Triangles& F, int f, int v) {
+  for (int k = 0; k < 3; ++k)
+    if (F(f, k) == v) return 3 * f + k;
+  return -1;
+}
+
 }  // namespace qd

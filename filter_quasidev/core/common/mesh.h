@@ -14,6 +14,9 @@ using Triangles = Eigen::Matrix<int, Eigen::Dynamic, 3>;     // one row per face
 // Unit normal of face f (zero vector for a zero-area face).
 Vec3 face_normal(const Positions& V, const Triangles& F, int f);
 
+// Corner 3·f + k of face f at vertex v (its k-th corner), or -1 when f does not use v.
+int corner_of(const Triangles& F, int f, int v);
+
 // Area of face f.
 double face_area(const Positions& V, const Triangles& F, int f);
 

@@ -6,34 +6,11 @@
 #include <map>
 #include <numeric>
 
+#include "common/disjoint_sets.h"
+
 namespace qd {
 
 namespace {
-
-// Union-find over face corners (3·f + k); corners of one vertex end up in one set per fan.
-class Corners {
- public:
-  explicit Corners(size_t count) : parent_(count) {
-    std::iota(parent_.begin(), parent_.end(), 0);
-  }
-  int find(int c) {
-    while (parent_[c] != c) {
-      parent_[c] = parent_[parent_[c]];
-      c = parent_[c];
-    }
-    return c;
-  }
-  void join(int a, int b) { parent_[find(a)] = find(b); }
-
- private:
-  std::vector<int> parent_;
-};
-
-int corner_of(const Triangles& F, int f, int v) {
-  for (int k = 0; k < 3; ++k)
-    if (F(f, k) == v) return 3 * f + k;
-  return -1;
-}
 
 // Face f runs along its edge {a, b} from a to b.
 bool runs_forward(const Triangles& F, int f, int a, int b) {
@@ -150,7 +127,7 @@ Topology analyse_topology(const Triangles& F, int vertex_count, const std::vecto
 
   // Edges: faces per undirected edge; fans joined across every shared edge.
   const std::vector<FaceEdge> edges = sorted_face_edges(F, vertex_count);
-  Corners corners(3 * static_cast<size_t>(F.rows()));
+  DisjointSets corners(3 * static_cast<size_t>(F.rows()));  // a set of corners per vertex fan
   for (size_t i = 0; i < edges.size();) {
     size_t j = i + 1;
     while (j < edges.size() && edges[j].lo == edges[i].lo && edges[j].hi == edges[i].hi) ++j;

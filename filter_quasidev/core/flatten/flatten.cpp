@@ -1,0 +1,113 @@
+#include "flatten/flatten.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <iomanip>
+#include <sstream>
+#include <thread>
+
+#include "flatten/flatten_piece.h"
+#include "flatten/flatten_validate.h"
+#include "flatten/layout.h"
+#include "flatten/notches.h"
+#include "flatten/piece_report.h"
+#include "common/parallel_for.h"
+#include "common/serial_blas.h"
+
+namespace qd {
+
+namespace {
+
+constexpr double kAutoNotchSpacing = 0.125;  // of the largest piece's longer side
+
+std::string label_of(const Piece& p) {
+  return std::to_string(p.patch) + (p.components > 1 ? "." + std::to_string(p.component) : "");
+}
+
+// Notch flags per mesh vertex for the pieces' boundaries (notches.h); spacing 0 = automatic.
+std::vector<char> notches_of(const Positions& V, const std::vector<FlatPiece>& flat,
+                             const std::vector<Eigen::AlignedBox2d>& boxes, double spacing) {
+  std::vector<std::array<int, 2>> boundary_edges;  // in mesh vertices
+  double longest = 0;
+  for (size_t i = 0; i < flat.size(); ++i) {
+    const std::vector<int>& vertex = flat[i].piece.vertex;
+    for (const std::vector<int>& loop : flat[i].loops)
+      for (size_t k = 0; k < loop.size(); ++k) boundary_edges.push_back({vertex[loop[k]], vertex[loop[(k + 1) % loop.size()]]});
+    longest = std::max(longest, boxes[i].sizes().maxCoeff());
+  }
+  return notch_vertices(V, std::move(boundary_edges), spacing > 0 ? spacing : kAutoNotchSpacing * longest);
+}
+
+size_t thread_count(int requested) {
+  return requested > 0 ? static_cast<size_t>(requested) : std::max(1u, std::thread::hardware_concurrency());
+}
+
+}  // namespace
+
+FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  validate_flatten(problem);
+  std::vector<Piece> pieces = extract_pieces(problem.V, problem.F, problem.patch);
+  const FlattenParams& params = problem.params;
+
+  std::vector<FlatPiece> flat(pieces.size());
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<size_t> done{0};
+  const double total = static_cast<double>(pieces.size());
+  {
+    const SerialBlas serial_blas;  // BLAS threads would contend with the pieces' (serial_blas.h)
+    parallel_for(pieces.size(), thread_count(params.threads), [&](size_t i) {
+      const std::string what = "flattening patch " + label_of(pieces[i]);
+      const auto report = [&](double fraction) {  // only the caller's thread reports
+        if (progress && std::this_thread::get_id() == caller)
+          progress(static_cast<int>(100.0 * (static_cast<double>(done) + fraction) / total), what);
+      };
+      report(0);
+      flat[i] = flatten_piece(std::move(pieces[i]), params,
+                              [&](int k) { report(static_cast<double>(k) / std::max(1, params.max_iterations)); });
+      ++done;
+    });
+  }
+
+  std::vector<Eigen::MatrixX2d> uvs;
+  for (FlatPiece& p : flat) uvs.push_back(std::move(p.uv));
+  const std::vector<Eigen::AlignedBox2d> boxes = lay_out(uvs, params.gap);
+
+  const std::vector<char> notch = notches_of(problem.V, flat, boxes, params.notch_spacing);
+
+  FlattenResult r;
+  r.uv.resize(problem.F.rows(), 6);
+  r.stretch.resize(static_cast<size_t>(problem.F.rows()));
+  std::vector<PatternPiece> pattern;
+  double worst = 0;
+  std::string worst_label;
+  for (size_t i = 0; i < flat.size(); ++i) {
+    const Piece& p = flat[i].piece;
+    for (int f = 0; f < p.F.rows(); ++f) {
+      const int face = p.face[f];
+      for (int k = 0; k < 3; ++k) r.uv.block<1, 2>(face, 2 * k) = uvs[i].row(p.F(f, k));
+      r.stretch[face] = flat[i].measures.stretch[f];
+    }
+    std::vector<char> notched(p.vertex.size());
+    for (size_t v = 0; v < notched.size(); ++v) notched[v] = notch[p.vertex[v]];
+    const std::string label = label_of(p);
+    pattern.push_back(pattern_piece(p.patch, label, p.F, uvs[i], flat[i].loops, notched));
+    r.pieces.push_back(piece_report(flat[i], label, boxes[i]));
+    r.log.push_back(log_line(r.pieces.back()));
+    if (r.pieces.back().max_distortion >= worst) {
+      worst = r.pieces.back().max_distortion;
+      worst_label = label;
+    }
+  }
+  r.pattern = make_pattern(std::move(pattern));
+  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  std::ostringstream total_line;
+  total_line << std::fixed << std::setprecision(2) << "flattened " << r.pieces.size() << " pieces in " << r.time_ms / 1000
+             << " s; largest length distortion " << worst << " % (patch " << worst_label << ")";
+  r.log.push_back(total_line.str());
+  if (progress) progress(100, "done");
+  return r;
+}
+
+}  // namespace qd

@@ -1,0 +1,12 @@
+// Checks of a flattening problem before any work (DESIGN.md "Bad input"): the mesh checks of
+// the approximation (validate.h) and the flattening's own parameters. Throws qd::Error with a
+// message that says what was wrong and what to do.
+#pragma once
+
+#include "flatten/flatten_problem.h"
+
+namespace qd {
+
+void validate_flatten(const FlattenProblem& problem);
+
+}  // namespace qd

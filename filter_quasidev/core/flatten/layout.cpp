@@ -1,0 +1,72 @@
+#include "flatten/layout.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace qd {
+
+namespace {
+
+constexpr double kAutoGap = 0.05;       // of the largest piece's longer side
+constexpr double kShelfWidth = 1.5;     // of √(total box area)
+
+Eigen::AlignedBox2d box_of(const Eigen::MatrixX2d& points) {
+  return Eigen::AlignedBox2d(points.colwise().minCoeff().transpose(), points.colwise().maxCoeff().transpose());
+}
+
+}  // namespace
+
+Eigen::Matrix2d principal_rotation(const Eigen::MatrixX2d& points) {
+  const Eigen::MatrixX2d centred = points.rowwise() - points.colwise().mean();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(centred.transpose() * centred);
+  const Eigen::Vector2d major = eigen.eigenvectors().col(1);  // eigenvalues ascend
+  Eigen::Matrix2d R;
+  R << major.x(), major.y(), -major.y(), major.x();
+  return R;
+}
+
+std::vector<Eigen::Vector2d> shelf_pack(const std::vector<Eigen::AlignedBox2d>& boxes, double gap) {
+  std::vector<size_t> order(boxes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return boxes[a].sizes().y() > boxes[b].sizes().y(); });
+  double area = 0, widest = 0;
+  for (const Eigen::AlignedBox2d& b : boxes) {
+    area += (b.sizes().x() + gap) * (b.sizes().y() + gap);
+    widest = std::max(widest, b.sizes().x());
+  }
+  const double width = std::max(widest, kShelfWidth * std::sqrt(area));
+  std::vector<Eigen::Vector2d> corner(boxes.size());
+  double x = 0, y = 0, shelf_height = 0;
+  for (const size_t i : order) {
+    const Eigen::Vector2d size = boxes[i].sizes();
+    if (x > 0 && x + size.x() > width) {  // next shelf
+      y += shelf_height + gap;
+      x = shelf_height = 0;
+    }
+    corner[i] = Eigen::Vector2d(x, y);
+    x += size.x() + gap;
+    shelf_height = std::max(shelf_height, size.y());
+  }
+  return corner;
+}
+
+std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces, double gap) {
+  std::vector<Eigen::AlignedBox2d> boxes;
+  double longest = 0;
+  for (Eigen::MatrixX2d& uv : pieces) {
+    uv = uv * principal_rotation(uv).transpose();
+    boxes.push_back(box_of(uv));
+    longest = std::max(longest, boxes.back().sizes().maxCoeff());
+  }
+  const std::vector<Eigen::Vector2d> corner = shelf_pack(boxes, gap > 0 ? gap : kAutoGap * longest);
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    pieces[i].rowwise() += (corner[i] - boxes[i].min()).transpose();
+    boxes[i] = box_of(pieces[i]);
+  }
+  return boxes;
+}
+
+}  // namespace qd

@@ -1,0 +1,27 @@
+#include "flatten/ordered_cholesky.h"
+
+#include <utility>
+#include <vector>
+
+#include "common/vertex_order.h"
+
+namespace qd {
+
+OrderedCholesky::OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKind kind, bool many_solves)
+    : order_(M.rows()), cholesky_(kind, many_solves) {
+  std::vector<std::pair<int, int>> edges;
+  for (int c = 0; c < M.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(M, c); it; ++it)
+      if (it.row() > c) edges.emplace_back(static_cast<int>(it.row()), c);
+  const std::vector<int> rank = fill_reducing_rank(static_cast<int>(M.rows()), edges);
+  for (int i = 0; i < M.rows(); ++i) order_.indices()[i] = rank[i];
+  Eigen::SparseMatrix<double> ordered(M.rows(), M.cols());
+  ordered = M.selfadjointView<Eigen::Lower>().twistedBy(order_);
+  cholesky_.factorize(ordered);
+}
+
+Eigen::MatrixXd OrderedCholesky::solve(const Eigen::MatrixXd& b) const {
+  return order_.inverse() * cholesky_.solve(order_ * b);
+}
+
+}  // namespace qd

@@ -1,0 +1,44 @@
+#include "flatten/piece_report.h"
+
+#include <iomanip>
+#include <sstream>
+
+namespace qd {
+
+PieceReport piece_report(const FlatPiece& flat, const std::string& label, const Eigen::AlignedBox2d& box) {
+  PieceReport r;
+  r.patch = flat.piece.patch;
+  r.component = flat.piece.component;
+  r.label = label;
+  r.faces = static_cast<int>(flat.piece.F.rows());
+  r.vertices = static_cast<int>(flat.piece.V.rows());
+  r.cut = flat.cut.note;
+  r.iterations = flat.arap.iterations;
+  r.stop_reason = flat.arap.stop_reason;
+  r.energy = flat.arap.energy;
+  const PieceMeasures& m = flat.measures;
+  r.max_distortion = m.max_distortion;
+  r.mean_distortion = m.mean_distortion;
+  r.area_change = m.area_change;
+  r.boundary_change = m.boundary_change;
+  r.flipped = m.flipped;
+  r.overlapping = m.overlapping;
+  r.flattenable = m.flattenable();
+  r.box = box;
+  r.time_ms = flat.time_ms;
+  return r;
+}
+
+std::string log_line(const PieceReport& r) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << "patch " << r.label << ": " << r.faces << " faces";
+  if (!r.cut.empty()) s << ", " << r.cut;
+  s << "; " << r.iterations << " ARAP iterations (" << r.stop_reason << "); length distortion max "
+    << r.max_distortion << " %, mean " << r.mean_distortion << " %; area " << std::showpos << r.area_change
+    << " %, boundary " << r.boundary_change << " %; " << std::noshowpos << r.flipped << " flipped, "
+    << r.overlapping << " overlapping";
+  if (!r.flattenable) s << ": not flattenable without a cut";
+  return s.str();
+}
+
+}  // namespace qd

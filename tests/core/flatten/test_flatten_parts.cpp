@@ -1,0 +1,82 @@
+// The flattening's small parts: boundary curve, per-face stretch, boundary crossings, layout.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "flatten/boundary_crossings.h"
+#include "flatten/boundary_curve.h"
+#include "flatten/face_distortion.h"
+#include "flatten/layout.h"
+
+namespace {
+
+TEST(BoundaryCurve, SquareFromItsTurnsAndLengths) {
+  const Eigen::Vector4d lengths(2, 1, 2, 1), turning = Eigen::Vector4d::Constant(M_PI / 2);
+  const Eigen::MatrixX2d c = qd::closed_boundary_curve(lengths, turning);
+  for (int i = 0; i < 4; ++i)
+    EXPECT_NEAR((c.row((i + 1) % 4) - c.row(i)).norm(), lengths(i), 1e-12);
+}
+
+TEST(BoundaryCurve, LengthsThatDoNotCloseAreAdjustedLeastAndClose) {
+  const Eigen::Vector4d lengths(2, 1, 1.8, 1), turning = Eigen::Vector4d::Constant(M_PI / 2);
+  const Eigen::MatrixX2d c = qd::closed_boundary_curve(lengths, turning);
+  Eigen::Vector4d closed;
+  for (int i = 0; i < 4; ++i) closed(i) = (c.row((i + 1) % 4) - c.row(i)).norm();
+  // The gap of 0.2 is shared by the two long edges in proportion to their lengths (N = 1/l).
+  EXPECT_NEAR(closed(0), 2 - 0.2 * 2 / 3.8, 1e-12);
+  EXPECT_NEAR(closed(2), 1.8 + 0.2 * 1.8 / 3.8, 1e-12);
+  EXPECT_NEAR(closed(1), 1, 1e-12);
+  EXPECT_NEAR(closed(0), closed(2), 1e-12);
+}
+
+TEST(FaceDistortion, SingularValuesOfAScaledRotation) {
+  const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.7).toRotationMatrix();
+  const qd::Stretch s = qd::stretch(R * Eigen::Vector2d(2.0, 0.5).asDiagonal() * R.transpose() * R);
+  EXPECT_NEAR(s.s1, 2.0, 1e-12);
+  EXPECT_NEAR(s.s2, 0.5, 1e-12);
+  EXPECT_FALSE(s.flipped);
+  EXPECT_NEAR(qd::length_distortion(s), 1.0, 1e-12);
+  EXPECT_TRUE(qd::stretch(Eigen::Vector2d(1.0, -1.0).asDiagonal()).flipped);
+}
+
+TEST(FaceDistortion, SignedStretchReadsCompressionNegative) {
+  EXPECT_NEAR(qd::signed_stretch({1.1, 0.95, false}), 0.1, 1e-15);
+  EXPECT_NEAR(qd::signed_stretch({1.02, 0.9, false}), -0.1, 1e-15);
+  EXPECT_NEAR(qd::signed_stretch({0.99, 0.98, false}), -0.02, 1e-15);
+  EXPECT_NEAR(qd::signed_stretch({1.0, 1.0, false}), 0.0, 1e-15);
+}
+
+TEST(BoundaryCrossings, FigureEightCrossesASquareDoesNot) {
+  Eigen::MatrixX2d uv(4, 2);
+  uv << 0, 0, 1, 0, 1, 1, 0, 1;
+  const std::vector<std::array<int, 2>> square = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  EXPECT_EQ(qd::crossing_segments(uv, square), std::vector<char>(4, 0));
+  const std::vector<std::array<int, 2>> bow = {{0, 1}, {1, 3}, {3, 2}, {2, 0}};  // 1→3 crosses 2→0
+  EXPECT_EQ(qd::crossing_segments(uv, bow), (std::vector<char>{0, 1, 0, 1}));
+}
+
+TEST(Layout, PrincipalAxisEndsUpAlongX) {
+  Eigen::MatrixX2d points(4, 2);
+  points << 0, 0, 3, 3, 0.5, -0.5, 3.5, 2.5;  // a long thin parallelogram along (1, 1)
+  const Eigen::MatrixX2d turned = points * qd::principal_rotation(points).transpose();
+  const Eigen::Vector2d size = turned.colwise().maxCoeff() - turned.colwise().minCoeff();
+  EXPECT_GT(size.x(), 3 * size.y());
+  EXPECT_NEAR(qd::principal_rotation(points).determinant(), 1.0, 1e-12);
+}
+
+TEST(Layout, PackedBoxesDoNotOverlapAndKeepTheGap) {
+  std::vector<Eigen::AlignedBox2d> boxes;
+  for (int i = 0; i < 17; ++i)
+    boxes.emplace_back(Eigen::Vector2d(-i, 3), Eigen::Vector2d(-i + 1 + (i * 7) % 5, 4 + (i * 3) % 4));
+  const double gap = 0.25;
+  const std::vector<Eigen::Vector2d> corner = qd::shelf_pack(boxes, gap);
+  for (size_t a = 0; a < boxes.size(); ++a)
+    for (size_t b = a + 1; b < boxes.size(); ++b) {
+      const Eigen::AlignedBox2d A(corner[a], corner[a] + boxes[a].sizes() + Eigen::Vector2d::Constant(gap));
+      const Eigen::AlignedBox2d B(corner[b], corner[b] + boxes[b].sizes() + Eigen::Vector2d::Constant(gap));
+      const Eigen::AlignedBox2d overlap = A.intersection(B);
+      EXPECT_TRUE(overlap.isEmpty() || overlap.volume() < 1e-12) << a << " " << b;
+    }
+}
+
+}  // namespace
