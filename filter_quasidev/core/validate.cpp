@@ -26,13 +26,6 @@ std::string str(double x) {
   return out.str();
 }
 
-void check_not_empty(const Problem& p) {
-  if (p.V.rows() == 0) throw Error("The mesh has no vertices: load a triangle mesh first.");
-  if (p.F.rows() == 0)
-    throw Error("The mesh has no faces (a point cloud?): the filter needs a triangle mesh; "
-                "reconstruct a surface first.");
-}
-
 void check_sizes(const Problem& p) {
   if (!p.patch.empty() && p.patch.size() != static_cast<size_t>(p.F.rows()))
     throw Error("Got " + std::to_string(p.patch.size()) + " patch ids for " + str(int(p.F.rows())) +
@@ -69,57 +62,6 @@ void check_params(const Params& q) {
                 ": use a value >= 0, e.g. 10 (0 disables the anchor).");
   check_percent("ABD", q.stop_abd);
   check_percent("OBD", q.stop_obd);
-}
-
-void check_coordinates(const Positions& V) {
-  int bad = 0;
-  int first = -1;
-  for (int v = 0; v < V.rows(); ++v) {
-    if (V.row(v).allFinite()) continue;
-    if (bad++ == 0) first = v;
-  }
-  if (bad > 0)
-    throw Error("The mesh has " + count(bad, "vertex", "vertices") +
-                " with NaN or infinite coordinates (first: vertex " + str(first) + "): remove or repair them before running the filter.");
-}
-
-void check_face_indices(const Triangles& F, int vertex_count) {
-  for (int f = 0; f < F.rows(); ++f) {
-    const int a = F(f, 0), b = F(f, 1), c = F(f, 2);
-    for (const int v : {a, b, c})
-      if (v < 0 || v >= vertex_count)
-        throw Error("Face " + str(f) + " refers to vertex " + str(v) + " but the mesh has only " +
-                    str(vertex_count) + " vertices: the file is corrupt; re-export the mesh.");
-    if (a == b || b == c || c == a)
-      throw Error("Face " + str(f) + " uses vertex " + str(a == b || a == c ? a : b) +
-                  " twice: remove degenerate faces first (MeshLab: Filters > Cleaning and "
-                  "Repairing > Remove Zero Area Faces).");
-  }
-}
-
-void check_zero_area(const Positions& V, const Triangles& F) {
-  const double ae = average_edge_length(V, F);
-  const double threshold = kZeroAreaRatio * ae * ae;
-  int bad = 0;
-  int first = -1;
-  for (int f = 0; f < F.rows(); ++f) {
-    if (face_area(V, F, f) >= threshold && threshold > 0) continue;
-    if (bad++ == 0) first = f;
-  }
-  if (bad > 0)
-    throw Error("The mesh has " + count(bad, "zero-area face", "zero-area faces") + " (first: face " + str(first) +
-                "): remove them first (MeshLab: Filters > Cleaning and Repairing > Remove Zero "
-                "Area Faces).");
-}
-
-// Duplicate faces also make their edges look misoriented: say what is really wrong first.
-void check_duplicate_faces(const Topology& t) {
-  if (t.duplicate_faces > 0)
-    throw Error("The mesh has " + count(t.duplicate_faces, "duplicate face", "duplicate faces") +
-                " (first: faces " + str(t.first_duplicate_faces[0]) + " and " +
-                str(t.first_duplicate_faces[1]) +
-                " use the same vertices): remove them first (MeshLab: Filters > Cleaning and "
-                "Repairing > Remove Duplicate Faces).");
 }
 
 // Fails only when no patch is large enough; smaller ones are left unchanged (see warnings()).
@@ -183,8 +125,66 @@ int count_flags(const std::vector<char>& flags) {
 
 }  // namespace
 
+void check_not_empty(const Positions& V, const Triangles& F) {
+  if (V.rows() == 0) throw Error("The mesh has no vertices: load a triangle mesh first.");
+  if (F.rows() == 0)
+    throw Error("The mesh has no faces (a point cloud?): the filter needs a triangle mesh; "
+                "reconstruct a surface first.");
+}
+
+void check_coordinates(const Positions& V) {
+  int bad = 0;
+  int first = -1;
+  for (int v = 0; v < V.rows(); ++v) {
+    if (V.row(v).allFinite()) continue;
+    if (bad++ == 0) first = v;
+  }
+  if (bad > 0)
+    throw Error("The mesh has " + count(bad, "vertex", "vertices") +
+                " with NaN or infinite coordinates (first: vertex " + str(first) + "): remove or repair them before running the filter.");
+}
+
+void check_face_indices(const Triangles& F, int vertex_count) {
+  for (int f = 0; f < F.rows(); ++f) {
+    const int a = F(f, 0), b = F(f, 1), c = F(f, 2);
+    for (const int v : {a, b, c})
+      if (v < 0 || v >= vertex_count)
+        throw Error("Face " + str(f) + " refers to vertex " + str(v) + " but the mesh has only " +
+                    str(vertex_count) + " vertices: the file is corrupt; re-export the mesh.");
+    if (a == b || b == c || c == a)
+      throw Error("Face " + str(f) + " uses vertex " + str(a == b || a == c ? a : b) +
+                  " twice: remove degenerate faces first (MeshLab: Filters > Cleaning and "
+                  "Repairing > Remove Zero Area Faces).");
+  }
+}
+
+void check_zero_area(const Positions& V, const Triangles& F) {
+  const double ae = average_edge_length(V, F);
+  const double threshold = kZeroAreaRatio * ae * ae;
+  int bad = 0;
+  int first = -1;
+  for (int f = 0; f < F.rows(); ++f) {
+    if (face_area(V, F, f) >= threshold && threshold > 0) continue;
+    if (bad++ == 0) first = f;
+  }
+  if (bad > 0)
+    throw Error("The mesh has " + count(bad, "zero-area face", "zero-area faces") + " (first: face " + str(first) +
+                "): remove them first (MeshLab: Filters > Cleaning and Repairing > Remove Zero "
+                "Area Faces).");
+}
+
+// Duplicate faces also make their edges look misoriented: say what is really wrong first.
+void check_duplicate_faces(const Topology& t) {
+  if (t.duplicate_faces > 0)
+    throw Error("The mesh has " + count(t.duplicate_faces, "duplicate face", "duplicate faces") +
+                " (first: faces " + str(t.first_duplicate_faces[0]) + " and " +
+                str(t.first_duplicate_faces[1]) +
+                " use the same vertices): remove them first (MeshLab: Filters > Cleaning and "
+                "Repairing > Remove Duplicate Faces).");
+}
+
 Topology validate(const Problem& problem) {
-  check_not_empty(problem);
+  check_not_empty(problem.V, problem.F);
   check_sizes(problem);
   check_coordinates(problem.V);  // before the parameters: a NaN mesh makes a NaN tolerance
   check_face_indices(problem.F, static_cast<int>(problem.V.rows()));
