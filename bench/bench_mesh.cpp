@@ -31,4 +31,23 @@ meshio::MeshFile curved_sheet(long triangles, int patches) {
   return mesh;
 }
 
+meshio::MeshFile torus(long triangles) {
+  const int tube = std::max(3, static_cast<int>(std::lround(std::sqrt(static_cast<double>(triangles) / 4.0))));
+  const int around = 2 * tube;
+  const double pi = std::acos(-1.0);
+  meshio::MeshFile mesh;
+  for (int j = 0; j < tube; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double u = 2 * pi * i / around, v = 2 * pi * j / tube, r = 2.0 + std::cos(v);
+      mesh.positions.push_back({r * std::cos(u), r * std::sin(u), std::sin(v)});
+    }
+  const auto at = [&](int i, int j) { return (j % tube) * around + i % around; };
+  for (int j = 0; j < tube; ++j)
+    for (int i = 0; i < around; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return mesh;
+}
+
 }  // namespace qd::bench

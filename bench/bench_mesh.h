@@ -10,4 +10,9 @@ namespace qd::bench {
 // About `triangles` triangles (2·columns·rows, aspect 1:1), split into `patches` bands.
 meshio::MeshFile curved_sheet(long triangles, int patches);
 
+// A closed torus (radii 2 and 1, no seam) of about `triangles` triangles on a regular grid,
+// twice as many columns around the axis as around the tube: doubly curved everywhere, the
+// segmentation's benchmark (no patch ids).
+meshio::MeshFile torus(long triangles);
+
 }  // namespace qd::bench
