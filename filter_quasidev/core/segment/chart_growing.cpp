@@ -65,8 +65,8 @@ class Grower {
   const FaceGeometry& g_;
   const std::vector<Chart>& charts_;
   std::vector<int>& label_;
-  std::vector<int> taken_;
   const GrowSettings& s_;
+  std::vector<int> taken_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
 };
 

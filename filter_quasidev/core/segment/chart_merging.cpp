@@ -17,6 +17,8 @@ namespace qd {
 
 namespace {
 
+constexpr size_t kParallelFaces = 20000;  // fewer faces to fit are not worth starting threads
+
 struct Candidate {
   double error;  // largest error of the union's cone, radians
   int a, b;      // a < b
@@ -96,10 +98,14 @@ class Merger {
     return best;
   }
 
-  // Fits the eligible pairs in parallel and queues those that may merge, in order.
+  // Fits the eligible pairs, in parallel when they hold many faces, and queues those that may
+  // merge, in order.
   void offer(const std::vector<std::pair<int, int>>& pairs) {
+    size_t work = 0;
+    for (const auto& [a, b] : pairs) work += p_.faces[a].size() + p_.faces[b].size();
+    const size_t threads = work > kParallelFaces ? static_cast<size_t>(s_.threads) : 1;
     std::vector<std::optional<ConeFit>> fits(pairs.size());
-    parallel_for(pairs.size(), static_cast<size_t>(s_.threads), [&](size_t i) {
+    parallel_for(pairs.size(), threads, [&](size_t i) {
       if (eligible(pairs[i].first, pairs[i].second))
         fits[i] = fit_union(pairs[i].first, pairs[i].second);
     });

@@ -16,8 +16,9 @@ namespace {
 constexpr int kAdaptRounds = 8;   // refits of a new chart as it grows, at most
 constexpr size_t kAdaptGrowth = 20;  // it stops when a refit adds less than 1/20 of its faces
 
-// The cone fitted to `faces` with the chart's previous axis among the candidates: the faces fit
-// it within the limit when they fit the previous cone, which had a worse apex angle at best.
+// The cone fitted to `faces` with the chart's previous axis among the candidates. That axis with
+// its midrange apex angle fits the faces at least as well as the previous cone, so faces that
+// fit the previous cone within the limit fit the new one too.
 ConeProxy refit(const FaceGeometry& g, const std::vector<int>& faces, const Vec3& axis,
                 double limit) {
   return fit_cone(g, faces, limit, {axis}).proxy;
@@ -98,6 +99,9 @@ LloydResult lloyd_charts(const FaceGraph& graph, const FaceGeometry& g, std::vec
   const auto active = static_cast<size_t>(std::count(start.begin(), start.end(), kFree));
   r.label = start;
   fill_free(graph, g, settings, r);
+  if (progress)
+    progress(percent_from, "Segmenting: first growth, " + std::to_string(r.charts.size()) +
+                               " charts");
   for (int round = 1; round <= max_rounds; ++round) {
     const std::vector<int> previous = r.label;
     const size_t charts = r.charts.size();

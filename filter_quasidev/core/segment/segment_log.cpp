@@ -83,6 +83,12 @@ std::vector<std::string> segment_warnings(int nonmanifold_edges, int misoriented
   if (over > 0)
     out.push_back(count_text(over, "patch is", "patches are") + " over the largest fit error (" +
                   "first: patch " + std::to_string(first_over) + "); their lines say why.");
+  const int made = static_cast<int>(r.patches.size());
+  if (q.target_patches > 0 && made != q.target_patches)
+    out.push_back("Made " + count_text(made, "patch", "patches") + ", not the target " +
+                  std::to_string(q.target_patches) +
+                  ": patches never join across kept borders or separate components, and a "
+                  "patch is split only into halves of at least the smallest size.");
   if (small > 0)
     out.push_back(count_text(small, "patch is", "patches are") + " below the smallest size (" +
                   "first: patch " + std::to_string(first_small) + ", " +

@@ -20,8 +20,8 @@ std::string over_limit_text(OverLimit over, const SegmentParams& params);
 // over the limit if it is.
 std::string patch_line(int id, const SegmentPatch& patch, const SegmentParams& params);
 
-// What was kept as a border (non-manifold or inconsistently oriented edges) or left over the
-// limit or below the smallest size, and what to do about it.
+// What was kept as a border (non-manifold or inconsistently oriented edges), left over the limit
+// or below the smallest size, or kept the target count from being met, and what to do about it.
 std::vector<std::string> segment_warnings(int nonmanifold_edges, int misoriented_edges,
                                           const SegmentResult& r, const SegmentParams& q);
 

@@ -114,5 +114,16 @@ TEST(SegmentProperties, TargetCountSplitsWhenTheFitNeedsFewer) {
   for (const auto& [patch, pieces] : pieces_of_patch) EXPECT_EQ(pieces.size(), 1u);
 }
 
+TEST(SegmentProperties, TargetCountOutOfReachIsSaid) {
+  SegmentProblem p = book().problem();  // three pages that no merge may join
+  p.params.target_patches = 2;
+  const SegmentResult r = segment(p);
+  expect_valid(p, r);
+  EXPECT_EQ(r.patches.size(), 3u);
+  bool said = false;
+  for (const std::string& line : r.warnings) said = said || line.find("not the target 2") != std::string::npos;
+  EXPECT_TRUE(said);
+}
+
 }  // namespace
 }  // namespace qd::test
