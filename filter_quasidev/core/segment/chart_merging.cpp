@@ -19,13 +19,16 @@ namespace {
 
 constexpr size_t kParallelFaces = 20000;  // fewer faces to fit are not worth starting threads
 
+// A pair and the cone of its union, ordered as better_fit() orders cones: within the limit by
+// the largest error, then over it by the root mean square, then by the charts' indices.
 struct Candidate {
-  double error;  // largest error of the union's cone, radians
+  bool over;     // the union's largest error is over the limit
+  double error;  // its largest error if not, else its root mean square, radians
   int a, b;      // a < b
   int version_a, version_b;
   ConeFit fit;
   bool operator>(const Candidate& o) const {
-    return std::tie(error, a, b) > std::tie(o.error, o.a, o.b);
+    return std::tie(over, error, a, b) > std::tie(o.over, o.error, o.a, o.b);
   }
 };
 
@@ -112,7 +115,9 @@ class Merger {
     for (size_t i = 0; i < pairs.size(); ++i) {
       if (!fits[i]) continue;
       const auto [a, b] = pairs[i];
-      heap_.push({fits[i]->max_error, a, b, version_[a], version_[b], *fits[i]});
+      const bool over = fits[i]->max_error > s_.limit;
+      heap_.push({over, over ? fits[i]->rms_error : fits[i]->max_error, a, b, version_[a],
+                  version_[b], *fits[i]});
     }
   }
 

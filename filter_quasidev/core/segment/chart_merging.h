@@ -1,5 +1,5 @@
 // Merging adjacent charts, best-fitting pair first: the union of two charts is fitted with a
-// cone (cone_fit.h) and pairs are merged in ascending order of the union's largest error,
+// cone (cone_fit.h) and pairs are merged in the order better_fit() gives their unions' cones,
 // re-fitting the pairs of a merged chart as they change. Three rules share this loop:
 //   WithinLimit  D-Charts' chart merging (Julius, Kraevoy, Sheffer 2005): adjacent charts whose
 //                union still fits within the limit;

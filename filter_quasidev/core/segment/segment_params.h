@@ -18,10 +18,11 @@ struct SegmentParams {
   // Largest angle between a face normal and its patch's cone (the fit error the report gives):
   // patches are split until every face is within it (D-Charts' largest fitting error). 20° by
   // measurement (qd_segment_bench --approximate -- --seams free, on the shared low-resolution
-  // spot, wingnut, bowl and shirt): at 10° they give 59, 25, 29, 152 patches, 38 and 27 of
+  // spot, wingnut, bowl and shirt): at 10° they give 57, 25, 29, 152 patches, 38 and 28 of
   // spot's and the shirt's over the limit at the smallest size; at 20° 43, 9, 11, 42 patches,
-  // 6 and 1 over, and the approximation after it removes more G_ABD on spot, bowl and shirt
-  // (4.4, 14.3, 30.1 % against 3.1, 5.7, 11.5 %). Larger limits give fewer patches still, but
+  // 7 and 1 over, and the approximation after it removes more G_ABD on bowl and shirt (14.3
+  // and 30.1 % against 5.7 and 9.7 %), about as much on spot (4.5 against 4.8 %) and less on
+  // wingnut (0.4 against 1.3 %). Larger limits give fewer patches still, but
   // two developable pieces whose normals meet at an angle δ below the crease angle fit one cone
   // once the limit reaches δ/2: at 20° pieces meeting at 40–60° (a cone on a cylinder) are
   // still told apart, at 30° none are.

@@ -40,8 +40,8 @@ TEST(SegmentProperties, SameTorusPatchesForAnyThreadCount) {
   }
 }
 
-// At a 5° limit no 20 faces of the bump fit one cone: its patches are at about the smallest
-// size and over the limit, and the report says why; the flat rest fits.
+// At a 5° limit no 20 faces of the bump fit one cone: its patches are over the limit at about
+// the smallest size, or took in such a part, and the report says which; the flat rest fits.
 TEST(SegmentProperties, TooCurvedPartsArePatchesOfTheSmallestSizeOverTheLimit) {
   SegmentProblem p = bumped_plane().problem();
   p.params.max_error_deg = 5;
@@ -53,7 +53,9 @@ TEST(SegmentProperties, TooCurvedPartsArePatchesOfTheSmallestSizeOverTheLimit) {
     if (s.over_limit == OverLimit::No) continue;
     ++flagged;
     ASSERT_TRUE(s.over_limit == OverLimit::SmallestSize || s.over_limit == OverLimit::SmallPart);
-    EXPECT_LT(s.faces, 2 * p.params.min_faces);
+    if (s.over_limit == OverLimit::SmallestSize) {
+      EXPECT_LT(s.faces, 2 * p.params.min_faces);
+    }
     const std::string line = r.log[r.warnings.size() + id];
     EXPECT_NE(line.find("smallest patch size (20 faces)"), std::string::npos) << line;
   }
