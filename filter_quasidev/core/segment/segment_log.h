@@ -9,9 +9,10 @@
 
 namespace qd {
 
-// "plane", "cylinder" or "cone" for a proxy whose apex angle is within kKindTolerance of 0 or 90°.
-const char* proxy_kind(const ConeProxy& proxy);
+// "plane", "cylinder" or "cone" for a proxy whose apex angle is within kKindToleranceDeg of 0°,
+// of 90°, or neither.
 constexpr double kKindToleranceDeg = 0.5;
+const char* proxy_kind(const ConeProxy& proxy);
 
 // Why a patch is over the limit, and what the user can do; empty for OverLimit::No.
 std::string over_limit_text(OverLimit over, const SegmentParams& params);
