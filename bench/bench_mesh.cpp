@@ -31,6 +31,21 @@ meshio::MeshFile curved_sheet(long triangles, int patches) {
   return mesh;
 }
 
+namespace {
+
+// Two triangles per quad (i, j) of a grid of `around` × `rows` quads closed around i, with
+// vertex at(i, j).
+template <typename At>
+void add_closed_quads(meshio::MeshFile& mesh, int around, int rows, const At& at) {
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+}
+
+}  // namespace
+
 meshio::MeshFile noisy_tube(long triangles) {
   const double quads = static_cast<double>(triangles) / 2.0;
   const int around = std::max(3, static_cast<int>(std::lround(std::sqrt(quads))));
@@ -47,12 +62,21 @@ meshio::MeshFile noisy_tube(long triangles) {
       const double a = 2 * pi * i / around, r = 1.0 + 0.1 * edge * noise();
       mesh.positions.push_back({r * std::cos(a), r * std::sin(a), edge * j});
     }
-  const auto at = [&](int i, int j) { return j * around + i % around; };
-  for (int j = 0; j < rows; ++j)
+  add_closed_quads(mesh, around, rows, [&](int i, int j) { return j * around + i % around; });
+  return mesh;
+}
+
+meshio::MeshFile torus(long triangles) {
+  const int tube = std::max(3, static_cast<int>(std::lround(std::sqrt(static_cast<double>(triangles) / 4.0))));
+  const int around = 2 * tube;
+  const double pi = std::acos(-1.0);
+  meshio::MeshFile mesh;
+  for (int j = 0; j < tube; ++j)
     for (int i = 0; i < around; ++i) {
-      mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      mesh.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      const double u = 2 * pi * i / around, v = 2 * pi * j / tube, r = 2.0 + std::cos(v);
+      mesh.positions.push_back({r * std::cos(u), r * std::sin(u), std::sin(v)});
     }
+  add_closed_quads(mesh, around, tube, [&](int i, int j) { return (j % tube) * around + i % around; });
   return mesh;
 }
 

@@ -15,4 +15,9 @@ meshio::MeshFile curved_sheet(long triangles, int patches);
 // edge lengths (the same for every call): the noisy tube of issue 11, one patch.
 meshio::MeshFile noisy_tube(long triangles);
 
+// A closed torus (radii 2 and 1, no seam) of about `triangles` triangles on a regular grid,
+// twice as many columns around the axis as around the tube: doubly curved everywhere, the
+// segmentation's benchmark (no patch ids).
+meshio::MeshFile torus(long triangles);
+
 }  // namespace qd::bench

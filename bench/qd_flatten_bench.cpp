@@ -20,6 +20,7 @@
 #include "flatten/dxf_writer.h"
 #include "flatten/flatten.h"
 #include "flatten/svg_writer.h"
+#include "mesh_problem.h"
 #include "mesh_reader.h"
 
 namespace {
@@ -54,12 +55,7 @@ Args parse(int argc, char** argv) {
 
 qd::FlattenProblem problem_of(const qd::meshio::MeshFile& mesh) {
   qd::FlattenProblem p;
-  p.V.resize(static_cast<Eigen::Index>(mesh.positions.size()), 3);
-  for (size_t v = 0; v < mesh.positions.size(); ++v)
-    for (int k = 0; k < 3; ++k) p.V(static_cast<Eigen::Index>(v), k) = mesh.positions[v][k];
-  p.F.resize(static_cast<Eigen::Index>(mesh.triangles.size()), 3);
-  for (size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) p.F(static_cast<Eigen::Index>(f), k) = mesh.triangles[f][k];
+  qd::cli::mesh_arrays(mesh, p.V, p.F);
   p.patch = mesh.patch;
   return p;
 }

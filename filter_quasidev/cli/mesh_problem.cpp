@@ -9,16 +9,18 @@
 
 namespace qd::cli {
 
+void mesh_arrays(const meshio::MeshFile& mesh, Positions& V, Triangles& F) {
+  V.resize(static_cast<Eigen::Index>(mesh.positions.size()), 3);
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    for (int k = 0; k < 3; ++k) V(static_cast<Eigen::Index>(i), k) = mesh.positions[i][static_cast<std::size_t>(k)];
+  F.resize(static_cast<Eigen::Index>(mesh.triangles.size()), 3);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) F(static_cast<Eigen::Index>(f), k) = mesh.triangles[f][static_cast<std::size_t>(k)];
+}
+
 Problem make_problem(const meshio::MeshFile& mesh, const Options& o) {
   Problem problem;
-  problem.V.resize(static_cast<Eigen::Index>(mesh.positions.size()), 3);
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      problem.V(static_cast<Eigen::Index>(i), k) = mesh.positions[i][static_cast<std::size_t>(k)];
-  problem.F.resize(static_cast<Eigen::Index>(mesh.triangles.size()), 3);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      problem.F(static_cast<Eigen::Index>(f), k) = mesh.triangles[f][static_cast<std::size_t>(k)];
+  mesh_arrays(mesh, problem.V, problem.F);
   problem.patch = mesh.patch;
   problem.constrained = mesh.constrained;
   if (!o.constraints.empty()) {

@@ -1,4 +1,5 @@
 // The bridge between the command's mesh tables and the engine.
+// mesh_arrays: the positions and triangles of a MeshFile as the engine's arrays (every job).
 // make_problem: MeshFile + Options -> qd::Problem (positions, triangles, patch ids, constrained
 //   vertices from the file's selection and the --constraints file, parameters with the AE-unit
 //   tolerances converted to model units using the input's average edge length AE).
@@ -15,6 +16,8 @@
 #include "output_mesh.h"
 
 namespace qd::cli {
+
+void mesh_arrays(const meshio::MeshFile& mesh, Positions& V, Triangles& F);
 
 Problem make_problem(const meshio::MeshFile& mesh, const Options& options);
 
