@@ -2,10 +2,11 @@
 """Deterministic generator of the project's sample meshes (Python 3.11 standard library only).
 
 Input:  optional --out DIR (default: sample_meshes/ beside scripts/).
-Output: DIR/{lampshade,bumpy_cylinder,bumpy_cone,patches,selected}.ply (binary little-endian
+Output: DIR/{lampshade,bumpy_cylinder,bumpy_cone,patches,selected,draped_panels,capped_cylinder}.ply (binary little-endian
         PLY: vertex double x y z [int flags, bit 0x20 = selected], face list uchar int
         vertex_indices + float quality = patch id) and DIR/SOURCES.md describing them.
-Running it twice gives byte-identical files. All meshes are open tubes/bands parametrised by
+Running it twice gives byte-identical files. All meshes but capped_cylinder (a closed tube with
+two discs) are open tubes/bands parametrised by
 u in [0,1) around and v in [0,1] along; faces are counter-clockwise in (u, v), so the normal
 d/du x d/dv points outwards and the orientation is consistent.
 """
@@ -211,6 +212,41 @@ def make_draped() -> tuple[PlyData, str]:
                     ["draped_panels: " + what]), what
 
 
+def cap_faces(outer: list[int], inner_rings: list[list[int]], centre: int, piece: int, up: bool):
+    """Triangles of a disc: bands between the rings (outer first, same count each) and a fan to
+    the centre; counter-clockwise seen from +z when up, else from -z. (a, b, c, piece, 0)."""
+    def oriented(a: int, b: int, c: int) -> tuple[int, int, int, int, int]:
+        return (a, b, c, piece, 0) if up else (a, c, b, piece, 0)
+    faces, n = [], len(outer)
+    for o, q in zip([outer] + inner_rings[:-1], inner_rings):
+        for i in range(n):
+            k = (i + 1) % n
+            faces += [oriented(o[i], o[k], q[k]), oriented(o[i], q[k], q[i])]
+    last = inner_rings[-1]
+    faces += [oriented(centre, last[i], last[(i + 1) % n]) for i in range(n)]
+    return faces
+
+
+def make_capped_cylinder() -> tuple[PlyData, str]:
+    """A closed cylinder of three developable pieces (side, bottom and top disc), the piece as
+    face quality: the segmentation's known answer."""
+    n_around, n_along, height = 48, 16, 2.0
+    pts = sample_grid(revolution(lambda _u, _v: 1.0, height), n_around, n_along)
+    faces = [(a, b, c, 0, 0) for a, b, c, _, _ in tube_faces(n_around, n_along)]
+    for piece, z, row in ((1, 0.0, 0), (2, height, n_along)):
+        rings = []
+        for r in (2.0 / 3.0, 1.0 / 3.0):
+            rings.append(list(range(len(pts), len(pts) + n_around)))
+            pts += [(r * math.cos(2 * math.pi * i / n_around), r * math.sin(2 * math.pi * i / n_around), z)
+                    for i in range(n_around)]
+        pts.append((0.0, 0.0, z))
+        outer = list(range(row * n_around, (row + 1) * n_around))
+        faces += cap_faces(outer, rings, len(pts) - 1, piece, up=piece == 2)
+    what = ("closed cylinder, radius 1, height 2, capped by two flat discs: 3 developable pieces "
+            "(face quality 0 = side, 1 = bottom, 2 = top), the pieces a segmentation must find")
+    return mesh_ply(pts, faces, lambda piece, _: piece, ["capped_cylinder: " + what]), what
+
+
 def samples() -> list[tuple[str, PlyData, str]]:
     cyl, cyl_what = bumpy("bumpy_cylinder", revolution(lambda _u, _v: 1.0, 2.0), "open cylinder, radius 1, height 2",
                           96, 32, 0.05, 0.18)
@@ -221,7 +257,8 @@ def samples() -> list[tuple[str, PlyData, str]]:
             ("bumpy_cone.ply", cone, cone_what),
             ("patches.ply", *make_patches()),
             ("selected.ply", *make_selected()),
-            ("draped_panels.ply", *make_draped())]
+            ("draped_panels.ply", *make_draped()),
+            ("capped_cylinder.ply", *make_capped_cylinder())]
 
 
 def sources_md(entries: list[tuple[str, PlyData, str]]) -> str:
@@ -231,7 +268,8 @@ def sources_md(entries: list[tuple[str, PlyData, str]]) -> str:
              "Format: binary little-endian PLY, vertex `double x y z` (selected.ply also `int flags`, "
              "bit 0x20 = selected, which MeshLab 2020.09 reads as vertex selection), face "
              "`list uchar int vertex_indices` and `float quality` = patch id (MeshLab: per-face "
-             "quality). Open, manifold, consistently oriented (outward normals), no zero-area faces.",
+             "quality). Open (but capped_cylinder.ply, closed), manifold, consistently oriented (outward "
+             "normals), no zero-area faces.",
              "", "| file | faces | vertices | patches | what it is |", "|---|---|---|---|---|"]
     for name, ply, what in entries:
         npatch = len(set(ply.get("face", "quality")))

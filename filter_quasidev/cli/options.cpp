@@ -1,6 +1,7 @@
 // CLI11 parses the command line's shape (subcommands, options anywhere, --opt=value, --,
-// repeated options, help); each value is converted here, so every message keeps the command's
-// wording: the option, the bad value and what to do.
+// repeated options, help); each value is converted here or in the subcommand's own options file
+// (segment_options.cpp) with the converters of option_values.h, so every message keeps the
+// command's wording: the option, the bad value and what to do.
 #include "options.h"
 
 #include <CLI/CLI.hpp>
@@ -11,11 +12,11 @@
 
 #include "approximate/deformation_system.h"
 #include "common/sparse_cholesky.h"
+#include "option_values.h"
+#include "segment_options.h"
 #include "text_scan.h"
 
 namespace qd::cli {
-
-namespace {
 
 [[noreturn]] void usage(const std::string& message) {
   throw UsageError(message + " (see quasidev --help)");
@@ -40,7 +41,6 @@ double non_negative(const std::string& option, const std::string& text) {
   return v;
 }
 
-// A whole number in [lo, hi]; `lo_label` names lo in the message (e.g. "0 (all cores)").
 int whole_number(const std::string& option, const std::string& text, long long lo, long long hi,
                  const std::string& lo_label) {
   long long v = 0;
@@ -50,35 +50,6 @@ int whole_number(const std::string& option, const std::string& text, long long l
   return static_cast<int>(v);
 }
 
-template <typename T>
-T choice(const std::string& option, const std::string& text, const Choices<T>& choices) {
-  std::string names;
-  for (const auto& [name, value] : choices) {
-    if (text == name) return value;
-    names += (names.empty() ? "" : "|") + std::string(name);
-  }
-  usage(option + " expects " + names + ", got '" + text + "'");
-}
-
-void patch_tolerance(const std::string& text, Options& o) {
-  const std::size_t eq = text.find('=');
-  long long id = 0;
-  if (eq == std::string::npos || !meshio::parse_integer(text.substr(0, eq), id) ||
-      std::llabs(id) > 1000000000)
-    usage("--patch-tolerance expects ID=X (e.g. 3=0.05), got '" + text + "'");
-  o.patch_tolerance_ae[static_cast<int>(id)] = positive("--patch-tolerance", text.substr(eq + 1));
-}
-
-// " (default X)" as a stream writes X.
-template <typename T>
-std::string by_default(const T& value) {
-  std::ostringstream out;
-  out << " (default " << value << ")";
-  return out.str();
-}
-
-// An option with a value, shown as `name value_name`; `set` converts each occurrence in order
-// (so the last one wins), throwing UsageError for a bad value.
 void valued(CLI::App& job, const std::string& name, const std::string& value_name,
             const std::string& description, std::function<void(const std::string&)> set) {
   job.add_option_function<std::string>(name, std::move(set), description)
@@ -91,15 +62,6 @@ void flag(CLI::App& job, const std::string& name, const std::string& description
   job.add_flag_callback(name, std::move(set), description)->trigger_on_parse();
 }
 
-// An option of fixed choices; the help shows them and the default (target's value now).
-template <typename T>
-void choices(CLI::App& job, const std::string& name, const std::string& value_name,
-             const std::string& description, const Choices<T>& names, T& target) {
-  valued(job, name, value_name, description + by_default(name_of(names, target)),
-         [name, &names, &target](const std::string& v) { target = choice(name, v, names); });
-}
-
-// The flags every job has: the progress line and quiet.
 void add_progress_flags(CLI::App& job, ProgressMode& progress, bool& quiet) {
   flag(job, "--progress",
        "show a progress line on stderr (default: when stderr is a\nterminal and not --quiet)",
@@ -107,6 +69,17 @@ void add_progress_flags(CLI::App& job, ProgressMode& progress, bool& quiet) {
   flag(job, "--no-progress", "never show the progress line", [&progress] { progress = ProgressMode::Off; });
   flag(job, "--quiet", "print neither the per-patch log (stdout) nor notes (stderr)",
        [&quiet] { quiet = true; });
+}
+
+namespace {
+
+void patch_tolerance(const std::string& text, Options& o) {
+  const std::size_t eq = text.find('=');
+  long long id = 0;
+  if (eq == std::string::npos || !meshio::parse_integer(text.substr(0, eq), id) ||
+      std::llabs(id) > 1000000000)
+    usage("--patch-tolerance expects ID=X (e.g. 3=0.05), got '" + text + "'");
+  o.patch_tolerance_ae[static_cast<int>(id)] = positive("--patch-tolerance", text.substr(eq + 1));
 }
 
 void add_approximate_options(CLI::App& job, Options& o) {
@@ -231,7 +204,8 @@ void check_leftovers(const CLI::App& job) {
   if (files != 2) usage("expected INPUT and OUTPUT, got " + std::to_string(files) + " file name(s)");
 }
 
-void check_files(const Options& o) {
+template <typename JobOptions>
+void check_files(const JobOptions& o) {
   if (o.output == o.input && !o.overwrite_input)
     usage("OUTPUT is the INPUT file; pass --overwrite-input to replace it");
   if (!o.report.empty() && (o.report == o.output || o.report == o.input))
@@ -258,12 +232,21 @@ CommandLine parse_command_line(std::vector<std::string> args) {
   add_help_and_version(*approximate);
   approximate->allow_extras();
   add_approximate_options(*approximate, line.approximate);
-  // The subcommands `segment` and `flatten` join here, each with add_progress_flags.
+  CLI::App* segment = app.add_subcommand(
+      "segment",
+      "Splits a triangle mesh into nearly developable patches (D-Charts: Julius, Kraevoy,\n"
+      "Sheffer, Eurographics 2005) and writes it as a binary PLY with the patch id per face.\n");
+  add_help_and_version(*segment);
+  segment->allow_extras();
+  add_segment_options(*segment, line.segment);
+  // The subcommand `flatten` joins here, with add_progress_flags.
   const bool names_job =
       !args.empty() && (args[0] == "-h" || args[0] == "--help" || args[0] == "--version" ||
                         !app.get_subcommands([&](const CLI::App* s) { return s->check_name(args[0]); })
                              .empty());
   if (!names_job) args.insert(args.begin(), approximate->get_name());
+  line.job = segment->check_name(args[0]) ? Job::Segment : Job::Approximate;
+  const CLI::App& job = line.job == Job::Segment ? *segment : *approximate;
   std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
   try {
     app.parse(args);
@@ -277,12 +260,15 @@ CommandLine parse_command_line(std::vector<std::string> args) {
     const std::string what = e.what();
     usage(what.substr(0, what.find(':')) + " needs a value");
   } catch (const CLI::RequiredError&) {  // INPUT or OUTPUT missing
-    check_leftovers(*approximate);
+    check_leftovers(job);
   } catch (const CLI::ParseError& e) {
     usage(e.what());
   }
-  check_leftovers(*approximate);
-  check_files(line.approximate);
+  check_leftovers(job);
+  if (line.job == Job::Segment)
+    check_files(line.segment);
+  else
+    check_files(line.approximate);
   return line;
 }
 

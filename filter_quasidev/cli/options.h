@@ -1,7 +1,8 @@
-// The command line of `quasidev`, parsed with CLI11: the subcommand `approximate` (also the job
-// when no subcommand is named, so `quasidev INPUT OUTPUT [options]` works as it always has), its
-// options with their defaults from qd::Params, --help and --version. Bad command lines throw
-// UsageError (exit status 2) naming the option, the bad value and what to do.
+// The command line of `quasidev`, parsed with CLI11: the subcommands `approximate` (also the job
+// when no subcommand is named, so `quasidev INPUT OUTPUT [options]` works as it always has) and
+// `segment`, their options with their defaults from qd::Params and qd::SegmentParams, --help and
+// --version. Bad command lines throw UsageError (exit status 2) naming the option, the bad value
+// and what to do.
 #pragma once
 
 #include <map>
@@ -11,6 +12,7 @@
 #include "approximate/params.h"
 #include "common/error.h"
 #include "option_choices.h"
+#include "segment/segment_params.h"
 
 namespace qd::cli {
 
@@ -40,11 +42,27 @@ struct Options {
   bool overwrite_input = false;
 };
 
+// The options of `quasidev segment`.
+struct SegmentOptions {
+  std::string input;
+  std::string output;
+  std::string report;  // empty = no JSON report
+  SegmentParams params;
+  bool keep_patches = false;  // existing patch ids are regions of their own, kept where they fit
+  ProgressMode progress = ProgressMode::Auto;
+  bool quiet = false;
+  bool overwrite_input = false;
+};
+
+enum class Job { Approximate, Segment };
+
 // What the command line asks for: text to print on stdout before exiting with status 0 (--help,
-// --version), or else the job to run.
+// --version), or else the job to run with its options.
 struct CommandLine {
   std::string print;
+  Job job = Job::Approximate;
   Options approximate;
+  SegmentOptions segment;
 };
 
 // args: argv without the program name.

@@ -8,6 +8,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -34,11 +35,28 @@ struct ParamSpec {
 using ParamValues = std::map<std::string, double>;
 
 // MeshLab filter classes (menus, search) and parts of a mesh a filter changes or writes.
-enum class FilterCategory { Smoothing, Quality, VertexColoring };
-enum class MeshPart { VertexPositions, VertexNormals, FaceNormals, VertexQuality, VertexColor };
+enum class FilterCategory { Smoothing, Quality, VertexColoring, FaceColoring };
+enum class MeshPart {
+  VertexPositions,
+  VertexNormals,
+  FaceNormals,
+  VertexQuality,
+  VertexColor,
+  FaceQuality,
+  FaceColor
+};
 
 // One figure a filter returns (pymeshlab: a value of the returned dict).
 using Figure = std::variant<int, double, std::vector<double>>;
+
+// The list figure of field(item) for every item (per patch, in id order).
+template <typename Item, typename Field>
+Figure figure_list(const std::vector<Item>& items, Field field) {
+  std::vector<double> v;
+  v.reserve(items.size());
+  for (const Item& item : items) v.push_back(static_cast<double>(field(item)));
+  return v;
+}
 
 // What one run of a filter did. On failure the mesh is unchanged and `error` says why.
 struct FilterRun {
@@ -48,6 +66,20 @@ struct FilterRun {
   std::map<std::string, Figure> figures;  // on success
   std::vector<MeshPart> written;          // on success: the per-element data the run wrote
 };
+
+// The FilterRun of an adapter's outcome (fields ok, error, log, result): on success with
+// figures(result) and `written`.
+template <typename Outcome, typename Figures>
+FilterRun filter_run(Outcome& outcome, Figures figures, std::vector<MeshPart> written) {
+  FilterRun out;
+  out.ok = outcome.ok;
+  out.error = std::move(outcome.error);
+  out.log = std::move(outcome.log);
+  if (!out.ok) return out;
+  out.figures = figures(outcome.result);
+  out.written = std::move(written);
+  return out;
+}
 
 struct FilterSpec {
   std::string name;         // menu text = .mlx filter name

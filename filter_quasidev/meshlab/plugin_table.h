@@ -35,6 +35,7 @@ typename Interface::FilterClass filter_class(const FilterSpec& f) {
       case FilterCategory::Smoothing: bits |= Interface::Smoothing; break;
       case FilterCategory::Quality: bits |= Interface::Quality; break;
       case FilterCategory::VertexColoring: bits |= Interface::VertexColoring; break;
+      case FilterCategory::FaceColoring: bits |= Interface::FaceColoring; break;
     }
   return typename Interface::FilterClass(bits);
 }
@@ -48,6 +49,8 @@ inline int mesh_mask(const std::vector<MeshPart>& parts) {
       case MeshPart::FaceNormals: mask |= MeshModel::MM_FACENORMAL; break;
       case MeshPart::VertexQuality: mask |= MeshModel::MM_VERTQUALITY; break;
       case MeshPart::VertexColor: mask |= MeshModel::MM_VERTCOLOR; break;
+      case MeshPart::FaceQuality: mask |= MeshModel::MM_FACEQUALITY; break;
+      case MeshPart::FaceColor: mask |= MeshModel::MM_FACECOLOR; break;
     }
   return mask;
 }

@@ -1,99 +1,25 @@
 #include "quasidev_adapter.h"
 
 #include <cmath>
-#include <cstdarg>
-#include <cstdio>
-#include <limits>
-#include <new>
-#include <set>
 #include <stdexcept>
 #include <utility>
 
-#if __has_include(<common/ml_document/cmesh.h>)
-#include <common/ml_document/cmesh.h>  // MeshLab 2025.07
-#else
-#include <common/ml_mesh_type.h>  // MeshLab 2020.09
-#endif
+#include "engine_mesh.h"  // first: MeshLab's mesh type before the vcg algorithms below
+
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
 #include "approximate/quasidev.h"
 #include "approximate/validate.h"
-#include "common/error.h"
 #include "common/mesh.h"
 #include "common/quality_range.h"
+#include "guarded_run.h"
+#include "printf_string.h"
 #include "result_figures.h"
 
 namespace qdml {
 
 namespace {
-
-// printf-style formatting into a std::string.
-__attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
-  char buffer[512];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(buffer, sizeof buffer, fmt, args);
-  va_end(args);
-  return buffer;
-}
-
-// The live (not deleted) part of a CMeshO in engine form, and where each engine vertex lives in
-// m.vert, so results can be written back in place.
-struct EngineMesh {
-  std::vector<std::size_t> vertex_slot;  // engine vertex i -> index into m.vert
-  std::vector<std::size_t> face_slot;    // engine face f -> index into m.face
-};
-
-// The one CMeshO -> engine copy: the live vertices and faces straight into the problem's V, F.
-EngineMesh read_geometry(const CMeshO& m, qd::Problem& problem) {
-  EngineMesh e;
-  std::vector<int> compact(m.vert.size(), -1);
-  for (std::size_t i = 0; i < m.vert.size(); ++i)
-    if (!m.vert[i].IsD()) {
-      compact[i] = static_cast<int>(e.vertex_slot.size());
-      e.vertex_slot.push_back(i);
-    }
-  for (std::size_t f = 0; f < m.face.size(); ++f)
-    if (!m.face[f].IsD()) e.face_slot.push_back(f);
-  problem.V.resize(static_cast<Eigen::Index>(e.vertex_slot.size()), 3);
-  for (std::size_t i = 0; i < e.vertex_slot.size(); ++i)
-    for (int a = 0; a < 3; ++a)
-      problem.V(static_cast<Eigen::Index>(i), a) = static_cast<double>(m.vert[e.vertex_slot[i]].cP()[a]);
-  problem.F.resize(static_cast<Eigen::Index>(e.face_slot.size()), 3);
-  for (std::size_t f = 0; f < e.face_slot.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      problem.F(static_cast<Eigen::Index>(f), k) =
-          compact[static_cast<std::size_t>(vcg::tri::Index(m, m.face[e.face_slot[f]].cV(k)))];
-  return e;
-}
-
-// Patch id per face from the per-face quality, rounded to the nearest integer.
-std::vector<int> read_patch_ids(const CMeshO& m, const EngineMesh& e) {
-  std::vector<int> patch(e.face_slot.size());
-  for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
-    const double q = static_cast<double>(m.face[e.face_slot[f]].cQ());
-    if (!std::isfinite(q) || std::fabs(q) > std::numeric_limits<int>::max())
-      throw qd::Error(format("face %zu has per-face quality %g, which is not a patch id: set the "
-                             "per-face quality to an integer patch id per face",
-                             f, q));
-    patch[f] = static_cast<int>(std::lround(q));
-  }
-  return patch;
-}
-
-// Selected vertices as constrained (1) per engine vertex; empty when none is selected.
-std::vector<char> read_selection(const CMeshO& m, const EngineMesh& e) {
-  std::vector<char> constrained(e.vertex_slot.size(), 0);
-  bool any = false;
-  for (std::size_t i = 0; i < e.vertex_slot.size(); ++i)
-    if (m.vert[e.vertex_slot[i]].IsS()) {
-      constrained[i] = 1;
-      any = true;
-    }
-  if (!any) constrained.clear();
-  return constrained;
-}
 
 std::size_t count_selected(const std::vector<char>& constrained) {
   std::size_t n = 0;
@@ -139,16 +65,9 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Setti
 qd::Problem make_problem(const CMeshO& m, bool has_face_quality, const Settings& s,
                          std::vector<std::string>& log, EngineMesh& e) {
   qd::Problem problem;
-  e = read_geometry(m, problem);
-  if (has_face_quality && s.use_patches) {
-    problem.patch = read_patch_ids(m, e);
-    const std::set<int> ids(problem.patch.begin(), problem.patch.end());
-    log.push_back(format("patches from per-face quality: %zu patch(es)", ids.size()));
-  } else {
-    log.push_back(has_face_quality ? "patches from face quality off: the whole mesh is one patch"
-                                   : "no per-face quality: the whole mesh is one patch");
-  }
-  problem.constrained = read_selection(m, e);
+  e = read_geometry(m, problem.V, problem.F);
+  problem.patch = read_patch_ids(m, e, has_face_quality, s.use_patches, log);
+  problem.constrained = read_selected(m.vert, e.vertex_slot);
   problem.params = s.params;
   problem.params.tolerance = 1;
   qd::validate(problem);
@@ -188,15 +107,9 @@ std::string filter_info() {
 FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
   const Settings settings = settings_from_values(values);
   Outcome outcome = apply(m, has_face_quality, settings, cb);
-  FilterRun out;
-  out.ok = outcome.ok;
-  out.error = std::move(outcome.error);
-  out.log = std::move(outcome.log);
-  if (!out.ok) return out;
-  out.figures = result_figures(outcome.result);
-  out.written = {MeshPart::VertexQuality};
-  if (settings.colorize) out.written.push_back(MeshPart::VertexColor);
-  return out;
+  std::vector<MeshPart> written = {MeshPart::VertexQuality};
+  if (settings.colorize) written.push_back(MeshPart::VertexColor);
+  return filter_run(outcome, result_figures, written);
 }
 
 }  // namespace
@@ -205,7 +118,7 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
   const qd::Params d;
   const Settings ds;
   qd::Problem geometry;
-  read_geometry(m, geometry);
+  read_geometry(m, geometry.V, geometry.F);
   const double ae = average_edge(geometry);
   const auto flag = [](bool b) { return b ? 1.0 : 0.0; };
   const auto index = [](auto e) { return static_cast<double>(static_cast<int>(e)); };
@@ -305,23 +218,14 @@ Settings settings_from_values(const ParamValues& values) {
 
 Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBackPos* cb) {
   Outcome out;
-  try {
+  out.error = guarded_run([&] {
     EngineMesh e;
     const qd::Problem problem = make_problem(m, has_face_quality, s, out.log, e);
-    const qd::Progress progress = [cb](int percent, const std::string& message) {
-      if (cb) cb(percent, message.c_str());
-    };
-    out.result = qd::approximate(problem, progress);
+    out.result = qd::approximate(problem, progress_of(cb));
     write_back(m, e, out.result, s);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
-    out.ok = true;
-  } catch (const qd::Error& error) {
-    out.error = error.what();
-  } catch (const std::bad_alloc&) {
-    out.error = "out of memory: try a smaller mesh or split it into smaller patches";
-  } catch (const std::exception& error) {
-    out.error = std::string("internal error (please report it with the mesh): ") + error.what();
-  }
+  });
+  out.ok = out.error.empty();
   return out;
 }
 

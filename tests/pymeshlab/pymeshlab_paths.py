@@ -21,6 +21,7 @@ CLI = os.path.join(BUILD, "bin", "quasidev")
 SAMPLES = os.path.join(ROOT, "sample_meshes")
 SHARED = os.environ.get("QD_SHARED_MESHES", "/work/shared/meshes")
 FILTER = "apply_coord_quasi_developable_approximation"
+SEGMENT_FILTER = "compute_segmentation_quasi_developable"
 
 sys.path.insert(0, os.path.join(ROOT, "scripts"))  # compare_developability: K, AE
 

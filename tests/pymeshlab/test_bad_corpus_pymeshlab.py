@@ -37,7 +37,7 @@ def test_corpus_case_through_pymeshlab(case, tmp_path):
     source = tmp_path / f"{name}.ply"
     source.write_bytes(data)
     parameters = json.dumps(make_bad_corpus.plugin_parameters(args))
-    run = subprocess.run([sys.executable, WORKER, PLUGIN, str(source), parameters,
+    run = subprocess.run([sys.executable, WORKER, PLUGIN, FILTER, str(source), parameters,
                           "arrays" if name in AS_ARRAYS else "file"],
                          capture_output=True, text=True, timeout=600, check=False)
     assert run.returncode == 0, f"worker ended with {run.returncode}:\n{run.stderr[-3000:]}"

@@ -1,0 +1,49 @@
+#include "segment_mesh.h"
+
+#include <string>
+
+#include "mesh_problem.h"
+#include "ply_mesh.h"
+#include "segment/patch_color.h"
+
+namespace qd::cli {
+
+namespace {
+
+// Per triangle, 1 where the face `flags` have the selection bit; empty when none is selected.
+std::vector<char> selected_faces(const meshio::MeshFile& mesh) {
+  for (const meshio::PlyProperty& p : mesh.face_extra) {
+    if (p.name != "flags" || p.is_list) continue;
+    std::vector<char> selected(mesh.triangles.size(), 0);
+    bool any = false;
+    for (std::size_t f = 0; f < selected.size(); ++f)
+      any |= (selected[f] = (static_cast<long long>(p.values[f]) & meshio::kSelectedFlag) != 0) != 0;
+    if (any) return selected;
+  }
+  return {};
+}
+
+}  // namespace
+
+SegmentProblem make_segment_problem(const meshio::MeshFile& mesh, const SegmentOptions& o) {
+  SegmentProblem problem;
+  mesh_arrays(mesh, problem.V, problem.F);
+  if (o.keep_patches) problem.patch = mesh.patch;
+  problem.selected = selected_faces(mesh);
+  problem.params = o.params;
+  return problem;
+}
+
+meshio::OutputFields segment_output_fields(const SegmentResult& result, const meshio::MeshFile& mesh) {
+  if (result.patch.size() != mesh.triangles.size())
+    throw Error("internal error: the segmentation returned " + std::to_string(result.patch.size()) +
+                " patch ids for " + std::to_string(mesh.triangles.size()) + " faces");
+  meshio::OutputFields fields;
+  fields.positions = mesh.positions;
+  fields.face_quality.assign(result.patch.begin(), result.patch.end());
+  fields.face_colors.reserve(result.patch.size());
+  for (int id : result.patch) fields.face_colors.push_back(patch_color(id));
+  return fields;
+}
+
+}  // namespace qd::cli

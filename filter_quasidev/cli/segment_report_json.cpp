@@ -1,0 +1,77 @@
+#include "segment_report_json.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "segment/segment_log.h"
+
+namespace qd::cli {
+
+namespace {
+
+using Json = nlohmann::ordered_json;  // keys in the order written
+
+double degrees(double radians) { return radians * 180.0 / M_PI; }
+
+const char* over_limit_name(OverLimit over) {
+  switch (over) {
+    case OverLimit::No: return "";
+    case OverLimit::SmallestSize: return "smallest_size";
+    case OverLimit::SmallPart: return "small_part";
+    case OverLimit::TargetCount: return "target_count";
+  }
+  return "";
+}
+
+Json patch(int id, const SegmentPatch& p, const SegmentParams& q) {
+  return {{"id", id},
+          {"faces", p.faces},
+          {"area", p.area},
+          {"proxy", {{"kind", proxy_kind(p.proxy)},
+                     {"axis", {p.proxy.axis.x(), p.proxy.axis.y(), p.proxy.axis.z()}},
+                     {"angle_deg", degrees(p.proxy.angle)}}},
+          {"max_error_deg", p.max_error_deg},
+          {"rms_error_deg", p.rms_error_deg},
+          {"boundary_loops", p.boundary_loops},
+          {"euler", p.euler},
+          {"disk", p.disk},
+          {"kept", p.kept},
+          {"source_patch", p.source_patch},
+          {"over_limit", p.over_limit != OverLimit::No},
+          {"over_limit_reason", over_limit_name(p.over_limit)},
+          {"over_limit_text", over_limit_text(p.over_limit, q)}};
+}
+
+Json parameters(const SegmentOptions& o) {
+  const SegmentParams& p = o.params;
+  return {{"max_error_deg", p.max_error_deg}, {"min_faces", p.min_faces},
+          {"min_area", p.min_area},           {"target_patches", p.target_patches},
+          {"keep_patches", o.keep_patches},   {"crease_deg", p.crease_deg},
+          {"max_rounds", p.max_rounds},       {"threads", p.threads}};
+}
+
+}  // namespace
+
+std::string segment_report_json(const SegmentResult& r, const SegmentReportContext& c) {
+  Json patches = Json::array();
+  for (std::size_t id = 0; id < r.patches.size(); ++id)
+    patches.push_back(patch(static_cast<int>(id), r.patches[id], c.options.params));
+  const Json report = {{"input", c.options.input},
+                       {"output", c.options.output},
+                       {"vertices", c.vertices},
+                       {"faces", c.faces},
+                       {"has_patch_ids", c.has_patch_ids},
+                       {"selected_faces", c.selected_faces},
+                       {"parameters", parameters(c.options)},
+                       {"patch_count", static_cast<int>(r.patches.size())},
+                       {"rounds", r.rounds},
+                       {"time_ms", r.time_ms},
+                       {"patches", patches},
+                       {"warnings", r.warnings},
+                       {"notes", c.notes},
+                       {"log", r.log}};
+  // NaN and infinities are written as null; bytes that are not UTF-8 as U+FFFD.
+  return report.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace qd::cli

@@ -1,0 +1,26 @@
+// The --report JSON of `quasidev segment`: what was run (files, mesh size, parameters) and every
+// figure of a qd::SegmentResult: per patch its faces, area, fitted proxy (kind, axis, apex
+// angle), fit error max/rms in degrees, boundary loops, Euler characteristic, disk or not, and
+// why it is over the limit; the warnings and the log. Input: the result and its context.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "options.h"
+#include "segment/segment_result.h"
+
+namespace qd::cli {
+
+struct SegmentReportContext {
+  const SegmentOptions& options;
+  int vertices;
+  int faces;
+  bool has_patch_ids;    // the input has patch ids (used only with --keep-patches)
+  int selected_faces;
+  const std::vector<std::string>& notes;  // the reader's remarks (e.g. polygons triangulated)
+};
+
+std::string segment_report_json(const SegmentResult& result, const SegmentReportContext& context);
+
+}  // namespace qd::cli

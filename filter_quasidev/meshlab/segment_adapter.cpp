@@ -1,0 +1,150 @@
+#include "segment_adapter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "engine_mesh.h"  // first: MeshLab's mesh type
+
+#include "guarded_run.h"
+#include "printf_string.h"
+#include "segment/patch_color.h"
+#include "segment/segment.h"
+#include "segment_figures.h"
+
+namespace qdml {
+
+namespace {
+
+// Enables per-face quality and colour if needed, then writes the patch id and its colour.
+void write_back(CMeshO& m, const EngineMesh& e, const qd::SegmentResult& r) {
+  if (r.patch.size() != e.face_slot.size())
+    throw std::logic_error("the segmentation returned a result of the wrong size");
+  if (!m.face.IsQualityEnabled()) m.face.EnableQuality();
+  if (!m.face.IsColorEnabled()) m.face.EnableColor();
+  for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
+    CMeshO::FaceType& face = m.face[e.face_slot[f]];
+    face.Q() = static_cast<CMeshO::FaceType::QualityType>(r.patch[f]);
+    const std::array<unsigned char, 3> c = qd::patch_color(r.patch[f]);
+    face.C() = vcg::Color4b(c[0], c[1], c[2], 255);
+  }
+}
+
+// The filterInfo text: what the filter does, its inputs and outputs, and the paper.
+std::string filter_info() {
+  return "Splits the mesh into nearly <b>developable</b> patches (each can be cut from flat "
+         "sheet material with little stretching), the step before <i>Quasi-Developable "
+         "Approximation</i>. Every patch is grown around a fitted cone, cylinder or plane "
+         "(D-Charts: Lloyd iterations on a cost of fit, compactness and boundary straightness, "
+         "then merging of neighbouring patches whose union still fits) until every face normal "
+         "is within <i>Largest fit error</i> of its patch's cone. The border of the face "
+         "selection always stays a patch border; where the mesh is split, so do sharp edges "
+         "(above <i>Crease angle</i>).<br>"
+         "<b>Per-face quality</b> on input: with <i>Keep existing patches</i>, the patch id "
+         "(rounded); each existing patch that fits is kept whole, the others are split.<br>"
+         "<b>Output</b>: per-face quality = patch id 0..k-1 (what the approximation reads) and a "
+         "face colour per patch; one log line per patch (faces, area, fitted proxy, fit error, "
+         "boundary loops, whether it is a disk) and a total. Vertices do not move.<br>"
+         "Julius D., Kraevoy V., Sheffer A., <i>D-Charts: Quasi-Developable Mesh "
+         "Segmentation</i>, Computer Graphics Forum 24(3), Eurographics 2005.";
+}
+
+// The table's run: the values as SegmentSettings, apply_segment(), and on success the figures.
+FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
+  const SegmentSettings settings = segment_settings_from_values(values);
+  SegmentOutcome outcome = apply_segment(m, has_face_quality, settings, cb);
+  return filter_run(outcome, segment_figures, {MeshPart::FaceQuality, MeshPart::FaceColor});
+}
+
+}  // namespace
+
+std::vector<ParamSpec> segment_parameter_specs() {
+  const qd::SegmentParams d;
+  const SegmentSettings ds;
+  const auto flag = [](bool b) { return b ? 1.0 : 0.0; };
+  return {
+      {"max_error_deg", "Largest fit error (deg)",
+       "The largest angle between a face normal and its patch's fitted cone, cylinder or plane: "
+       "patches are split until every face is within it. Smaller gives more, flatter patches "
+       "(20: pieces meeting at 40 degrees or more are told apart).",
+       ParamKind::Float, d.max_error_deg, {}},
+      {"min_faces", "Smallest patch (faces)",
+       "No patch has fewer faces (unless the part between kept borders is smaller). A part too "
+       "curved to fit at this size becomes one patch over the limit, and the log says so.",
+       ParamKind::Int, static_cast<double>(d.min_faces), {}},
+      {"min_area", "Smallest patch (area fraction)",
+       "When above 0, no patch has less than this fraction of the mesh area.", ParamKind::Float,
+       d.min_area, {}},
+      {"target_patches", "Target patch count",
+       "The number of patches wanted; 0 = as many as the fit needs. More are merged (best "
+       "fitting first, even over the limit), fewer are split.",
+       ParamKind::Int, static_cast<double>(d.target_patches), {}},
+      {"keep_patches", "Keep existing patches",
+       "On: the per-face quality holds existing patch ids; each existing patch whose faces fit "
+       "within the largest fit error is kept whole, only the others are split.",
+       ParamKind::Bool, flag(ds.keep_patches), {}},
+      {"selection_border", "Keep selection border",
+       "On: no patch crosses the border between selected and unselected faces.", ParamKind::Bool,
+       flag(ds.selection_border), {}},
+      {"crease_deg", "Crease angle (deg)",
+       "Where the mesh is split, edges whose two faces' normals differ by more than this stay "
+       "patch borders, so no patch folds over a sharp edge; 180 = none. (A part that fits one "
+       "cone as a whole, such as two planes meeting at a fold, is kept whole.)",
+       ParamKind::Float, d.crease_deg, {}},
+  };
+}
+
+SegmentSettings segment_settings_from_values(const ParamValues& values) {
+  SegmentSettings s;
+  qd::SegmentParams& p = s.params;
+  const auto get = [&](const char* name, double fallback) {
+    const auto it = values.find(name);
+    return it == values.end() ? fallback : it->second;
+  };
+  const auto whole = [&](const char* name, int fallback) {
+    return static_cast<int>(std::lround(get(name, fallback)));
+  };
+  p.max_error_deg = get("max_error_deg", p.max_error_deg);
+  p.min_faces = whole("min_faces", p.min_faces);
+  p.min_area = get("min_area", p.min_area);
+  p.target_patches = whole("target_patches", p.target_patches);
+  s.keep_patches = get("keep_patches", s.keep_patches) != 0;
+  s.selection_border = get("selection_border", s.selection_border) != 0;
+  p.crease_deg = get("crease_deg", p.crease_deg);
+  return s;
+}
+
+SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const SegmentSettings& s,
+                             vcg::CallBackPos* cb) {
+  SegmentOutcome out;
+  out.error = guarded_run([&] {
+    qd::SegmentProblem problem;
+    const EngineMesh e = read_geometry(m, problem.V, problem.F);
+    if (s.keep_patches) problem.patch = read_patch_ids(m, e, has_face_quality, true, out.log);
+    if (s.selection_border) problem.selected = read_selected(m.face, e.face_slot);
+    if (!problem.selected.empty())
+      out.log.push_back(format("the border of %zu selected faces kept",
+                               static_cast<std::size_t>(std::count(problem.selected.begin(),
+                                                                   problem.selected.end(), 1))));
+    problem.params = s.params;
+    out.result = qd::segment(problem, progress_of(cb));
+    write_back(m, e, out.result);
+    out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
+  });
+  out.ok = out.error.empty();
+  return out;
+}
+
+FilterSpec segment_filter() {
+  using C = FilterCategory;
+  using P = MeshPart;
+  return {"Quasi-Developable Segmentation",
+          "compute_segmentation_quasi_developable",
+          filter_info(),
+          {C::Quality, C::FaceColoring},
+          {P::FaceQuality, P::FaceColor},
+          [](const CMeshO&) { return segment_parameter_specs(); },
+          run};
+}
+
+}  // namespace qdml
