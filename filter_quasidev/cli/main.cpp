@@ -1,8 +1,10 @@
 // quasidev [approximate]: reads a mesh, runs the quasi-developable approximation (qd::approximate),
 // writes the deformed mesh as PLY with per-vertex quality and a colour ramp, and optionally a JSON
-// report. Subcommands and options: options.h.
+// report. quasidev flatten: reads a mesh, flattens its patches (qd::flatten), writes it as PLY
+// with wedge texture coordinates, the stretch per face and its colour ramp, and optionally a
+// JSON report and the pattern as SVG and DXF. Subcommands and options: options.h.
 // Exit 0 on success; 1 on bad input or an engine error; 2 on a bad command line. On error one
-// line "quasidev: error: REASON" goes to stderr and no OUTPUT (or report) file is written.
+// line "quasidev: error: REASON" goes to stderr and no file is written.
 #include <unistd.h>
 
 #include <csignal>
@@ -10,9 +12,17 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <sstream>
+#include <utility>
+#include <vector>
 
 #include "approximate/quasidev.h"
 #include "atomic_file.h"
+#include "flatten/dxf_writer.h"
+#include "flatten/flatten.h"
+#include "flatten/svg_writer.h"
+#include "flatten_fields.h"
+#include "flatten_report_json.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
 #include "options.h"
@@ -21,8 +31,6 @@
 #include "report_json.h"
 
 namespace {
-
-using qd::cli::Options;
 
 // The progress line on stderr: rewritten in place ("\r") on a terminal, else one line per
 // change of percentage. Closed with a newline before anything else is printed to stderr.
@@ -57,15 +65,52 @@ class ProgressLine {
 
 ProgressLine progress_line;
 
-// Refuses to replace the input (unless asked) or to write the report over the mesh.
-void check_paths(const Options& o) {
+// Refuses to replace the input (unless asked) or to write two outputs into one file, comparing
+// the files themselves (options.cpp compared their names).
+void check_paths(const qd::cli::JobOptions& o, const std::vector<std::pair<std::string, std::string>>& outputs) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!o.overwrite_input && fs::exists(o.output, ec) && fs::equivalent(o.input, o.output, ec))
+  const auto same = [&ec](const std::string& a, const std::string& b) {
+    return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
+  };
+  if (!o.overwrite_input && same(o.input, o.output))
     throw qd::cli::UsageError("OUTPUT is the INPUT file; pass --overwrite-input to replace it");
-  if (!o.report.empty() && fs::exists(o.report, ec) &&
-      (fs::equivalent(o.report, o.input, ec) || fs::equivalent(o.report, o.output, ec)))
-    throw qd::cli::UsageError("the --report file must differ from INPUT and OUTPUT");
+  for (std::size_t i = 1; i < outputs.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (same(outputs[i].second, o.input) || same(outputs[i].second, outputs[j].second))
+        throw qd::cli::UsageError("the " + outputs[i].first + " file must differ from INPUT, OUTPUT and the other files");
+}
+
+void start_progress(const qd::cli::JobOptions& o) {
+  if (o.progress == qd::cli::ProgressMode::On ||
+      (o.progress == qd::cli::ProgressMode::Auto && !o.quiet && isatty(STDERR_FILENO)))
+    progress_line.enable();
+}
+
+const qd::Progress show_progress = [](int percent, const std::string& message) {
+  progress_line.show(percent, message);
+};
+
+// Stages every file of a job (target, content) before renaming any into place, so an error
+// while writing leaves all of them as they were.
+void write_files(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::unique_ptr<qd::meshio::PendingFile>> pending;
+  for (const auto& [target, content] : files)
+    pending.push_back(std::make_unique<qd::meshio::PendingFile>(target, content));
+  for (const auto& file : pending) file->commit();
+}
+
+std::string ply_bytes(const qd::meshio::MeshFile& mesh, const qd::meshio::OutputFields& fields) {
+  return qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
+                                   qd::meshio::PlyFormat::BinaryLittleEndian);
+}
+
+// The job's log on stdout and the reader's notes on stderr, unless --quiet.
+void print_log(const qd::cli::JobOptions& o, const std::vector<std::string>& log,
+               const std::vector<std::string>& notes) {
+  if (o.quiet) return;
+  for (const std::string& line : log) std::cout << line << '\n';
+  for (const std::string& note : notes) std::cerr << "quasidev: note: " << note << '\n';
 }
 
 int count_constrained(const std::vector<char>& constrained) {
@@ -74,21 +119,15 @@ int count_constrained(const std::vector<char>& constrained) {
   return n;
 }
 
-void run(const Options& o) {
-  check_paths(o);
+void approximate(const qd::cli::ApproximateOptions& o) {
+  check_paths(o, qd::cli::output_files(o));
   const qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
   const qd::Problem problem = qd::cli::make_problem(mesh, o);
-  if (o.progress == qd::cli::ProgressMode::On ||
-      (o.progress == qd::cli::ProgressMode::Auto && !o.quiet && isatty(STDERR_FILENO)))
-    progress_line.enable();
-  const qd::Result result = qd::approximate(
-      problem, [](int percent, const std::string& message) { progress_line.show(percent, message); });
+  start_progress(o);
+  const qd::Result result = qd::approximate(problem, show_progress);
   progress_line.close();
-  const qd::meshio::OutputFields fields = qd::cli::output_fields(result, o, mesh.positions.size());
-  const std::string ply = qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
-                                                    qd::meshio::PlyFormat::BinaryLittleEndian);
-  qd::meshio::PendingFile output(o.output, ply);
-  std::unique_ptr<qd::meshio::PendingFile> report;
+  std::vector<std::pair<std::string, std::string>> files = {
+      {o.output, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size()))}};
   if (!o.report.empty()) {
     const qd::cli::ReportContext context{o,
                                          problem.params,
@@ -97,16 +136,45 @@ void run(const Options& o) {
                                          !mesh.patch.empty(),
                                          count_constrained(problem.constrained),
                                          mesh.notes};
-    report = std::make_unique<qd::meshio::PendingFile>(o.report, report_json(result, context));
+    files.emplace_back(o.report, report_json(result, context));
   }
-  output.commit();
-  if (report) report->commit();
+  write_files(files);
   // Warnings say part of the mesh was left as it is: shown even with --quiet, like errors.
   for (const std::string& warning : result.warnings)
     std::cerr << "quasidev: warning: " << warning << '\n';
-  if (o.quiet) return;
-  for (const std::string& line : result.log) std::cout << line << '\n';
-  for (const std::string& note : mesh.notes) std::cerr << "quasidev: note: " << note << '\n';
+  print_log(o, result.log, mesh.notes);
+}
+
+// The pattern drawn by one of the flattening's writers (svg_writer.h, dxf_writer.h).
+template <typename Write>
+std::string drawn(const Write& write) {
+  std::ostringstream out;
+  write(out);
+  return out.str();
+}
+
+void flatten(const qd::cli::FlattenOptions& o) {
+  check_paths(o, qd::cli::output_files(o));
+  const qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
+  const qd::FlattenProblem problem = qd::cli::make_flatten_problem(mesh, o);
+  start_progress(o);
+  const qd::FlattenResult result = qd::flatten(problem, show_progress);
+  progress_line.close();
+  std::vector<std::pair<std::string, std::string>> files = {
+      {o.output, ply_bytes(mesh, qd::cli::flatten_output_fields(result, mesh.triangles.size()))}};
+  if (!o.report.empty()) {
+    const qd::cli::FlattenReportContext context{o, static_cast<int>(mesh.positions.size()),
+                                                static_cast<int>(mesh.triangles.size()),
+                                                !mesh.patch.empty(), mesh.notes};
+    files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
+  }
+  const std::string unit = o.unit == qd::cli::PatternUnit::Model ? "" : name_of(qd::cli::kPatternUnits, o.unit);
+  if (!o.svg.empty())
+    files.emplace_back(o.svg, drawn([&](std::ostream& out) { qd::write_svg(out, result.pattern, unit); }));
+  if (!o.dxf.empty())
+    files.emplace_back(o.dxf, drawn([&](std::ostream& out) { qd::write_dxf(out, result.pattern); }));
+  write_files(files);
+  print_log(o, result.log, mesh.notes);
 }
 
 int fail(const std::string& reason, int status) {
@@ -129,7 +197,8 @@ int main(int argc, char** argv) {
       std::cout << line.print;
       return 0;
     }
-    run(line.approximate);
+    if (line.job == qd::cli::Job::Flatten) flatten(line.flatten);
+    else approximate(line.approximate);
     return 0;
   } catch (const qd::cli::UsageError& e) {
     return fail(e.what(), 2);

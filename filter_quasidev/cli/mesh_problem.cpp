@@ -6,19 +6,14 @@
 
 #include "common/quality_range.h"
 #include "constraint_file.h"
+#include "mesh_geometry.h"
 
 namespace qd::cli {
 
-Problem make_problem(const meshio::MeshFile& mesh, const Options& o) {
+Problem make_problem(const meshio::MeshFile& mesh, const ApproximateOptions& o) {
   Problem problem;
-  problem.V.resize(static_cast<Eigen::Index>(mesh.positions.size()), 3);
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      problem.V(static_cast<Eigen::Index>(i), k) = mesh.positions[i][static_cast<std::size_t>(k)];
-  problem.F.resize(static_cast<Eigen::Index>(mesh.triangles.size()), 3);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      problem.F(static_cast<Eigen::Index>(f), k) = mesh.triangles[f][static_cast<std::size_t>(k)];
+  problem.V = positions_of(mesh);
+  problem.F = triangles_of(mesh);
   problem.patch = mesh.patch;
   problem.constrained = mesh.constrained;
   if (!o.constraints.empty()) {
@@ -42,7 +37,7 @@ Problem make_problem(const meshio::MeshFile& mesh, const Options& o) {
   return problem;
 }
 
-meshio::OutputFields output_fields(const Result& result, const Options& o,
+meshio::OutputFields output_fields(const Result& result, const ApproximateOptions& o,
                                    std::size_t vertex_count) {
   const std::vector<double>& q =
       o.quality == QualityKind::Curvature ? result.k_after : result.displacement;

@@ -44,25 +44,51 @@ std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh,
   return n;
 }
 
+// Appends `red green blue alpha` (uchar, alpha 255) holding `colors`.
+void add_colors(PlyElement& e, const std::vector<std::array<unsigned char, 3>>& colors) {
+  const char* names[] = {"red", "green", "blue"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::vector<double> c(colors.size());
+    for (std::size_t i = 0; i < colors.size(); ++i) c[i] = colors[i][k];
+    e.properties.push_back(scalar_property(names[k], ScalarType::UInt8, c));
+  }
+  e.properties.push_back(scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
+}
+
+// True when `values` is empty (not written) or has one entry per element.
+template <typename T>
+bool fits(const std::vector<T>& values, std::size_t count) {
+  return values.empty() || values.size() == count;
+}
+
+// The input's extra properties, without those the fields replace: `quality` when quality is
+// written, the colour channels when colours are, `texcoord` when texture coordinates are.
+std::vector<PlyProperty> kept(const std::vector<PlyProperty>& extra, bool quality, bool colors, bool texcoords) {
+  std::vector<PlyProperty> out;
+  for (const PlyProperty& p : extra)
+    if (!(quality && p.name == "quality") && !(colors && is_color(p.name)) && !(texcoords && p.name == "texcoord"))
+      out.push_back(p);
+  return out;
+}
+
 PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
   const std::size_t nv = mesh.positions.size();
-  if (fields.positions.size() != nv || (!fields.quality.empty() && fields.quality.size() != nv) ||
-      (!fields.colors.empty() && fields.colors.size() != nv))
+  const bool moved = !fields.positions.empty();
+  if (!fits(fields.positions, nv) || !fits(fields.quality, nv) || !fits(fields.colors, nv))
     throw Error("internal error: output fields do not have one value per vertex");
   PlyElement e;
   e.name = "vertex";
   e.count = nv;
+  const std::vector<std::array<double, 3>>& positions = moved ? fields.positions : mesh.positions;
   for (std::size_t k = 0; k < 3; ++k) {
     std::vector<double> c(nv);
-    for (std::size_t i = 0; i < nv; ++i) c[i] = fields.positions[i][k];
-    e.properties.push_back(scalar_property(std::string(1, "xyz"[k]), ScalarType::Float64, c));
+    for (std::size_t i = 0; i < nv; ++i) c[i] = positions[i][k];
+    e.properties.push_back(scalar_property(std::string(1, "xyz"[k]),
+                                           moved ? ScalarType::Float64 : mesh.position_types[k], c));
   }
-  const bool normals = has_normals(mesh.vertex_extra);
+  const bool normals = moved && has_normals(mesh.vertex_extra);
   std::vector<std::array<double, 3>> n;
-  for (const PlyProperty& p : mesh.vertex_extra) {
-    if ((p.name == "quality" && !fields.quality.empty()) ||
-        (is_color(p.name) && !fields.colors.empty()))
-      continue;
+  for (const PlyProperty& p : kept(mesh.vertex_extra, !fields.quality.empty(), !fields.colors.empty(), false)) {
     e.properties.push_back(p);
     const int axis = p.name == "nx" ? 0 : p.name == "ny" ? 1 : p.name == "nz" ? 2 : -1;
     if (axis < 0 || p.is_list || !normals) continue;
@@ -72,35 +98,49 @@ PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
   }
   if (!fields.quality.empty())
     e.properties.push_back(scalar_property("quality", ScalarType::Float64, fields.quality));
-  if (!fields.colors.empty()) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      std::vector<double> c(nv);
-      for (std::size_t i = 0; i < nv; ++i) c[i] = fields.colors[i][k];
-      const char* names[] = {"red", "green", "blue"};
-      e.properties.push_back(scalar_property(names[k], ScalarType::UInt8, c));
-    }
-    e.properties.push_back(scalar_property("alpha", ScalarType::UInt8, std::vector<double>(nv, 255)));
-  }
+  if (!fields.colors.empty()) add_colors(e, fields.colors);
   return e;
 }
 
-PlyElement face_element(const MeshFile& mesh) {
+PlyElement face_element(const MeshFile& mesh, const OutputFields& fields) {
+  const std::size_t nf = mesh.triangles.size();
+  if (!fits(fields.texcoords, nf) || !fits(fields.face_quality, nf) || !fits(fields.face_colors, nf))
+    throw Error("internal error: output fields do not have one value per face");
   PlyElement e;
   e.name = "face";
-  e.count = mesh.triangles.size();
+  e.count = nf;
   PlyProperty indices;
   indices.name = "vertex_indices";
   indices.is_list = true;
   indices.count_type = ScalarType::UInt8;
   indices.type = ScalarType::Int32;
-  indices.offsets.reserve(e.count + 1);
+  indices.offsets.reserve(nf + 1);
   indices.offsets.push_back(0);
   for (const std::array<int, 3>& t : mesh.triangles) {
     indices.values.insert(indices.values.end(), t.begin(), t.end());
     indices.offsets.push_back(indices.values.size());
   }
   e.properties.push_back(std::move(indices));
-  e.properties.insert(e.properties.end(), mesh.face_extra.begin(), mesh.face_extra.end());
+  const std::vector<PlyProperty> extra =
+      kept(mesh.face_extra, !fields.face_quality.empty(), !fields.face_colors.empty(), !fields.texcoords.empty());
+  e.properties.insert(e.properties.end(), extra.begin(), extra.end());
+  if (!fields.texcoords.empty()) {
+    PlyProperty uv;
+    uv.name = "texcoord";
+    uv.is_list = true;
+    uv.count_type = ScalarType::UInt8;
+    uv.type = ScalarType::Float32;
+    uv.offsets.reserve(nf + 1);
+    uv.offsets.push_back(0);
+    for (const std::array<double, 6>& corners : fields.texcoords) {
+      uv.values.insert(uv.values.end(), corners.begin(), corners.end());
+      uv.offsets.push_back(uv.values.size());
+    }
+    e.properties.push_back(std::move(uv));
+  }
+  if (!fields.face_quality.empty())
+    e.properties.push_back(scalar_property("quality", ScalarType::Float64, fields.face_quality));
+  if (!fields.face_colors.empty()) add_colors(e, fields.face_colors);
   return e;
 }
 
@@ -112,7 +152,7 @@ PlyFile output_ply(const MeshFile& mesh, const OutputFields& fields) {
   ply.comments = mesh.comments;
   ply.obj_info = mesh.obj_info;
   ply.elements.push_back(vertex_element(mesh, fields));
-  ply.elements.push_back(face_element(mesh));
+  ply.elements.push_back(face_element(mesh, fields));
   ply.elements.insert(ply.elements.end(), mesh.other_elements.begin(), mesh.other_elements.end());
   return ply;
 }
