@@ -20,7 +20,9 @@ namespace qdml {
 
 // One user parameter. Every generation declares exactly these, in this order, with these names
 // and types, so one .mlx serves meshlabserver 2020.09 and pymeshlab 2025.07.
-enum class ParamKind { Float, Int, Bool, Enum };
+// SaveFile: the path of a file the filter writes (MeshLab's file-save parameter, with a Browse
+// button in the dialog; .mlx type RichSaveFile in both generations); empty = none.
+enum class ParamKind { Float, Int, Bool, Enum, SaveFile };
 struct ParamSpec {
   std::string name;                // snake_case, = pymeshlab keyword
   std::string label;               // dialog label
@@ -28,14 +30,26 @@ struct ParamSpec {
   ParamKind kind = ParamKind::Float;
   double value = 0;                // default: the float, the int, 0/1, or the enum index
   std::vector<std::string> items;  // Enum only: item texts (pymeshlab accepts them by text)
+  std::string extension;           // SaveFile only: the file type, e.g. ".svg" (default path "")
 };
 
-// The user's values by parameter name, as ParamSpec::value: floats, ints, 0/1, enum indices.
-using ParamValues = std::map<std::string, double>;
+// The user's value of one parameter: a number as ParamSpec::value (float, int, 0/1, enum
+// index), or the text of a SaveFile path.
+using ParamValue = std::variant<double, std::string>;
+using ParamValues = std::map<std::string, ParamValue>;
 
 // MeshLab filter classes (menus, search) and parts of a mesh a filter changes or writes.
-enum class FilterCategory { Smoothing, Quality, VertexColoring };
-enum class MeshPart { VertexPositions, VertexNormals, FaceNormals, VertexQuality, VertexColor };
+enum class FilterCategory { Smoothing, Quality, VertexColoring, Texture };
+enum class MeshPart {
+  VertexPositions,
+  VertexNormals,
+  FaceNormals,
+  VertexQuality,
+  VertexColor,
+  FaceQuality,
+  FaceColor,
+  WedgeTexCoord
+};
 
 // One figure a filter returns (pymeshlab: a value of the returned dict).
 using Figure = std::variant<int, double, std::vector<double>>;

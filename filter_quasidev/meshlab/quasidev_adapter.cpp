@@ -1,86 +1,25 @@
 #include "quasidev_adapter.h"
 
 #include <cmath>
-#include <cstdarg>
-#include <cstdio>
-#include <limits>
-#include <new>
-#include <set>
 #include <stdexcept>
 #include <utility>
 
-#if __has_include(<common/ml_document/cmesh.h>)
-#include <common/ml_document/cmesh.h>  // MeshLab 2025.07
-#else
-#include <common/ml_mesh_type.h>  // MeshLab 2020.09
-#endif
+#include "engine_mesh.h"  // first: MeshLab's mesh type before the vcg algorithms below
+
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
 
 #include "approximate/quasidev.h"
 #include "approximate/validate.h"
-#include "common/error.h"
 #include "common/mesh.h"
 #include "common/quality_range.h"
+#include "guarded_run.h"
+#include "printf_string.h"
 #include "result_figures.h"
 
 namespace qdml {
 
 namespace {
-
-// printf-style formatting into a std::string.
-__attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
-  char buffer[512];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(buffer, sizeof buffer, fmt, args);
-  va_end(args);
-  return buffer;
-}
-
-// The live (not deleted) part of a CMeshO in engine form, and where each engine vertex lives in
-// m.vert, so results can be written back in place.
-struct EngineMesh {
-  std::vector<std::size_t> vertex_slot;  // engine vertex i -> index into m.vert
-  std::vector<std::size_t> face_slot;    // engine face f -> index into m.face
-};
-
-// The one CMeshO -> engine copy: the live vertices and faces straight into the problem's V, F.
-EngineMesh read_geometry(const CMeshO& m, qd::Problem& problem) {
-  EngineMesh e;
-  std::vector<int> compact(m.vert.size(), -1);
-  for (std::size_t i = 0; i < m.vert.size(); ++i)
-    if (!m.vert[i].IsD()) {
-      compact[i] = static_cast<int>(e.vertex_slot.size());
-      e.vertex_slot.push_back(i);
-    }
-  for (std::size_t f = 0; f < m.face.size(); ++f)
-    if (!m.face[f].IsD()) e.face_slot.push_back(f);
-  problem.V.resize(static_cast<Eigen::Index>(e.vertex_slot.size()), 3);
-  for (std::size_t i = 0; i < e.vertex_slot.size(); ++i)
-    for (int a = 0; a < 3; ++a)
-      problem.V(static_cast<Eigen::Index>(i), a) = static_cast<double>(m.vert[e.vertex_slot[i]].cP()[a]);
-  problem.F.resize(static_cast<Eigen::Index>(e.face_slot.size()), 3);
-  for (std::size_t f = 0; f < e.face_slot.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      problem.F(static_cast<Eigen::Index>(f), k) =
-          compact[static_cast<std::size_t>(vcg::tri::Index(m, m.face[e.face_slot[f]].cV(k)))];
-  return e;
-}
-
-// Patch id per face from the per-face quality, rounded to the nearest integer.
-std::vector<int> read_patch_ids(const CMeshO& m, const EngineMesh& e) {
-  std::vector<int> patch(e.face_slot.size());
-  for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
-    const double q = static_cast<double>(m.face[e.face_slot[f]].cQ());
-    if (!std::isfinite(q) || std::fabs(q) > std::numeric_limits<int>::max())
-      throw qd::Error(format("face %zu has per-face quality %g, which is not a patch id: set the "
-                             "per-face quality to an integer patch id per face",
-                             f, q));
-    patch[f] = static_cast<int>(std::lround(q));
-  }
-  return patch;
-}
 
 // Selected vertices as constrained (1) per engine vertex; empty when none is selected.
 std::vector<char> read_selection(const CMeshO& m, const EngineMesh& e) {
@@ -139,15 +78,8 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Setti
 qd::Problem make_problem(const CMeshO& m, bool has_face_quality, const Settings& s,
                          std::vector<std::string>& log, EngineMesh& e) {
   qd::Problem problem;
-  e = read_geometry(m, problem);
-  if (has_face_quality && s.use_patches) {
-    problem.patch = read_patch_ids(m, e);
-    const std::set<int> ids(problem.patch.begin(), problem.patch.end());
-    log.push_back(format("patches from per-face quality: %zu patch(es)", ids.size()));
-  } else {
-    log.push_back(has_face_quality ? "patches from face quality off: the whole mesh is one patch"
-                                   : "no per-face quality: the whole mesh is one patch");
-  }
+  e = read_geometry(m, problem.V, problem.F);
+  problem.patch = read_patch_ids(m, e, has_face_quality, s.use_patches, log);
   problem.constrained = read_selection(m, e);
   problem.params = s.params;
   problem.params.tolerance = 1;
@@ -205,7 +137,7 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
   const qd::Params d;
   const Settings ds;
   qd::Problem geometry;
-  read_geometry(m, geometry);
+  read_geometry(m, geometry.V, geometry.F);
   const double ae = average_edge(geometry);
   const auto flag = [](bool b) { return b ? 1.0 : 0.0; };
   const auto index = [](auto e) { return static_cast<double>(static_cast<int>(e)); };
@@ -215,17 +147,17 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
               "mode), in model units. The mesh's average edge length AE = %g; 0 means 1 AE. "
               "Smaller keeps the shape closer but leaves more curvature.",
               ae),
-       ParamKind::Float, ae, {}},
+       ParamKind::Float, ae, {}, ""},
       {"tolerance_mode", "Tolerance mode",
        "step: the tolerance caps each iteration's move (the paper); total: it caps the whole "
        "move from the original position.",
-       ParamKind::Enum, index(d.tolerance_mode), {"step", "total"}},
+       ParamKind::Enum, index(d.tolerance_mode), {"step", "total"}, ""},
       {"max_iter", "Max iterations", "Stop after this many iterations per patch.", ParamKind::Int,
-       static_cast<double>(d.max_iter), {}},
+       static_cast<double>(d.max_iter), {}, ""},
       {"weight", "Developability weight",
        "w of the paper's Eq. (8): how strongly faces are turned towards their target normals "
        "against keeping their shape. Larger removes more curvature per iteration but moves more.",
-       ParamKind::Float, d.weight, {}},
+       ParamKind::Float, d.weight, {}, ""},
       {"developability", "Developability term",
        "Which rows make each patch developable. curve: the paper's target normals on the curve "
        "fitted to the patch's Gauss image (best for cones, cylinders, lampshades, sleeves); "
@@ -233,44 +165,44 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
        "to zero (beyond the paper; best for draped, wrinkled panels whose Gauss image is a "
        "blob, not a curve); both; auto: per patch, curve where the curve fits within 5 degrees, "
        "else defect (beyond the paper). The log says which each patch used and why.",
-       ParamKind::Enum, index(d.developability), {"curve", "defect", "both", "auto"}},
+       ParamKind::Enum, index(d.developability), {"curve", "defect", "both", "auto"}, ""},
       {"defect_weight", "Angle-defect weight",
        "w_d of the angle-defect rows against keeping the shape; scale- and density-invariant. "
        "Larger removes more curvature per iteration but moves the surface more.",
-       ParamKind::Float, d.defect_weight, {}},
+       ParamKind::Float, d.defect_weight, {}, ""},
       {"anchor", "Anchor stiffness",
        "alpha of the soft anchors (paper Eq. 15): how strongly vertices near fixed vertices resist "
        "moving; the stiffness fades with the distance (in AE) from fixed vertices.",
-       ParamKind::Float, d.anchor, {}},
+       ParamKind::Float, d.anchor, {}, ""},
       {"use_patches", "Patches from face quality",
        "On: faces with the same per-face quality (rounded) form one patch, each made "
        "developable on its own. Off, or without per-face quality: the whole mesh is one patch.",
-       ParamKind::Bool, flag(ds.use_patches), {}},
+       ParamKind::Bool, flag(ds.use_patches), {}, ""},
       {"seam_mode", "Seams",
        "fixed: vertices shared by two patches do not move (the paper); free: all patches are "
        "solved together and seam vertices move too, staying shared so no crack opens.",
-       ParamKind::Enum, index(d.seams), {"fixed", "free"}},
+       ParamKind::Enum, index(d.seams), {"fixed", "free"}, ""},
       {"keep_boundary", "Keep boundary",
        "Keep the vertices of the open mesh boundary fixed.", ParamKind::Bool,
-       flag(d.keep_boundary), {}},
+       flag(d.keep_boundary), {}, ""},
       {"target_mode", "Target normals",
        "fixed: fit the Gauss-image curve once (the paper); reproject: project the current normals "
        "onto it every iteration; refit: refit the curve every iteration (slower, strongest).",
-       ParamKind::Enum, index(d.targets), {"fixed", "reproject", "refit"}},
+       ParamKind::Enum, index(d.targets), {"fixed", "reproject", "refit"}, ""},
       {"stop_abd", "Stop at ratio_ABD (%)",
        "Stop when an iteration lowers the total absolute Gaussian curvature G_ABD by less than "
        "this percentage (paper Eq. 19).",
-       ParamKind::Float, d.stop_abd, {}},
+       ParamKind::Float, d.stop_abd, {}, ""},
       {"stop_obd", "Stop at ratio_OBD (%)",
        "Stop when an iteration lowers the orientation developability D(P) by less than this "
        "percentage (paper Eq. 20).",
-       ParamKind::Float, d.stop_obd, {}},
+       ParamKind::Float, d.stop_obd, {}, ""},
       {"output_quality", "Output quality",
        "What the per-vertex quality holds afterwards: the Gaussian curvature after the filter, "
        "or each vertex's displacement in model units.",
-       ParamKind::Enum, flag(ds.displacement_quality), {"curvature", "displacement"}},
+       ParamKind::Enum, flag(ds.displacement_quality), {"curvature", "displacement"}, ""},
       {"colorize", "Colorize", "Colour the vertices by a ramp on the output quality.",
-       ParamKind::Bool, flag(ds.colorize), {}},
+       ParamKind::Bool, flag(ds.colorize), {}, ""},
   };
 }
 
@@ -279,7 +211,7 @@ Settings settings_from_values(const ParamValues& values) {
   qd::Params& p = s.params;
   const auto get = [&](const char* name, double fallback) {
     const auto it = values.find(name);
-    return it == values.end() ? fallback : it->second;
+    return it == values.end() ? fallback : std::get<double>(it->second);
   };
   const auto choice = [&](const char* name, auto fallback) {
     return static_cast<decltype(fallback)>(
@@ -305,23 +237,14 @@ Settings settings_from_values(const ParamValues& values) {
 
 Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBackPos* cb) {
   Outcome out;
-  try {
+  out.error = guarded_run([&] {
     EngineMesh e;
     const qd::Problem problem = make_problem(m, has_face_quality, s, out.log, e);
-    const qd::Progress progress = [cb](int percent, const std::string& message) {
-      if (cb) cb(percent, message.c_str());
-    };
-    out.result = qd::approximate(problem, progress);
+    out.result = qd::approximate(problem, progress_of(cb));
     write_back(m, e, out.result, s);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
-    out.ok = true;
-  } catch (const qd::Error& error) {
-    out.error = error.what();
-  } catch (const std::bad_alloc&) {
-    out.error = "out of memory: try a smaller mesh or split it into smaller patches";
-  } catch (const std::exception& error) {
-    out.error = std::string("internal error (please report it with the mesh): ") + error.what();
-  }
+  });
+  out.ok = out.error.empty();
   return out;
 }
 

@@ -22,6 +22,7 @@ sys.path.insert(0, str(REPO / "scripts"))
 from plyio import PlyData, PlyElement, PlyProperty, read_ply, write_ply  # noqa: E402
 
 FILTER_NAME = "Quasi-Developable Approximation"
+FLATTEN_FILTER_NAME = "Quasi-Developable Flattening"
 SELECTED = 0x20  # vcg's SELECTED vertex flag, as MeshLab 2020.09 reads/writes PLY "flags"
 XVFB = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24"]
 XVFB_CLEANUP_ERROR = "xvfb-run: error: problem while cleaning up temporary directory"
@@ -40,6 +41,8 @@ class Mesh:
     flags: np.ndarray | None = None      # per-vertex int flags
     quality: np.ndarray | None = None    # per-vertex quality
     color: np.ndarray | None = None      # (n, 3) uint8
+    texcoord: np.ndarray | None = None   # (m, 6) per-face corner u v
+    face_color: np.ndarray | None = None  # (m, 3) uint8
 
     @property
     def selected(self) -> np.ndarray:
@@ -57,15 +60,19 @@ def _column(ply: PlyData, element: str, prop: str, dtype) -> np.ndarray | None:
 
 def load_mesh(path: Path) -> Mesh:
     ply = read_ply(path)
-    color = None
-    if all(ply.has("vertex", c) for c in ("red", "green", "blue")):
-        color = np.stack([np.asarray(ply.get("vertex", c), np.uint8) for c in ("red", "green", "blue")], 1)
+    def rgb(element: str) -> np.ndarray | None:
+        if not all(ply.has(element, c) for c in ("red", "green", "blue")):
+            return None
+        return np.stack([np.asarray(ply.get(element, c), np.uint8) for c in ("red", "green", "blue")], 1)
+    texcoord = _column(ply, "face", "texcoord", np.float64)
     return Mesh(v=np.asarray(ply.vertices(), np.float64).reshape(-1, 3),
                 f=np.asarray(ply.faces(), np.int64).reshape(-1, 3),
                 face_quality=_column(ply, "face", "quality", np.float64),
                 flags=_column(ply, "vertex", "flags", np.int64),
                 quality=_column(ply, "vertex", "quality", np.float64),
-                color=color)
+                color=rgb("vertex"),
+                texcoord=None if texcoord is None else texcoord.reshape(-1, 6),
+                face_color=rgb("face"))
 
 
 def save_float_mesh(mesh: Mesh, path: Path, face_quality: bool = True) -> None:
@@ -146,25 +153,27 @@ def integrated_curvature(mesh: Mesh, vertices: np.ndarray) -> float:
 
 # ---- .mlx scripts and the equivalent quasidev command ---------------------------------------------
 
-def mlx_parameters(path: Path) -> dict[str, tuple[str, str, list[str]]]:
-    """name -> (type, value, enum items) of the quasi-developable filter in an .mlx file."""
+def mlx_parameters(path: Path, filter_name: str = FILTER_NAME) -> dict[str, tuple[str, str, list[str]]]:
+    """name -> (type, value, enum items) of the named filter (default: the approximation) in an
+    .mlx file."""
     root = ET.parse(path).getroot()
     for node in root.iter("filter"):
-        if node.get("name") == FILTER_NAME:
+        if node.get("name") == filter_name:
             out = {}
             for p in node.iter("Param"):
                 n = int(p.get("enum_cardinality", "0"))
                 out[p.get("name")] = (p.get("type"), p.get("value"), [p.get(f"enum_val{i}") for i in range(n)])
             return out
-    raise AssertionError(f"{path} has no '{FILTER_NAME}' filter")
+    raise AssertionError(f"{path} has no '{filter_name}' filter")
 
 
 def write_mlx(path: Path, values: dict[str, object], base: Path = REPO / "sample_meshes" / "default.mlx",
-              before: str = "", after: str = "") -> Path:
-    """Writes base's quasi-developable filter to path with the given parameter values (Python
-    bools become true/false), preceded and followed by the raw <filter> XML in before/after."""
+              before: str = "", after: str = "", filter_name: str = FILTER_NAME) -> Path:
+    """Writes base's filter called filter_name (default: the approximation) to path with the
+    given parameter values (Python bools become true/false), preceded and followed by the raw
+    <filter> XML in before/after."""
     root = ET.parse(base).getroot()
-    node = next(n for n in root.iter("filter") if n.get("name") == FILTER_NAME)
+    node = next(n for n in root.iter("filter") if n.get("name") == filter_name)
     for p in node.iter("Param"):
         if p.get("name") in values:
             v = values[p.get("name")]
@@ -218,6 +227,7 @@ def run_meshlabserver(prefix: Path, mesh_in: Path, mesh_out: Path, script: Path,
     return run
 
 
-def run_quasidev(mesh_in: Path, mesh_out: Path, args: list[str], timeout: float = 600) -> subprocess.CompletedProcess:
-    cmd = [str(build_dir() / "bin" / "quasidev"), str(mesh_in), str(mesh_out), "--quiet", *args]
+def run_quasidev(mesh_in: Path, mesh_out: Path, args: list[str], timeout: float = 600,
+                 subcommand: str = "approximate") -> subprocess.CompletedProcess:
+    cmd = [str(build_dir() / "bin" / "quasidev"), subcommand, str(mesh_in), str(mesh_out), "--quiet", *args]
     return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, check=False)

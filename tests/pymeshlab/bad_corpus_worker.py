@@ -1,8 +1,8 @@
-"""Runs the filter on one mesh in a fresh pymeshlab process and prints one JSON line saying what
+"""Runs a filter on one mesh in a fresh pymeshlab process and prints one JSON line saying what
 happened, so a crash of pymeshlab or of the plugin shows as a signal to the caller
 (test_bad_corpus_pymeshlab.py) instead of ending the whole test session.
 
-Usage: python bad_corpus_worker.py PLUGIN MESH.ply PARAMETERS_JSON {file|arrays}
+Usage: python bad_corpus_worker.py PLUGIN FILTER MESH.ply PARAMETERS_JSON {file|arrays}
   file   = load MESH.ply with pymeshlab's own importer;
   arrays = read it with scripts/plyio.py and hand pymeshlab the raw vertex and face arrays
            (pymeshlab's importer drops non-finite vertices, so NaN/inf reach the filter only so).
@@ -23,8 +23,6 @@ import pymeshlab
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
 from plyio import read_ply  # noqa: E402
 
-FILTER = "apply_coord_quasi_developable_approximation"
-
 
 def snapshot(mesh) -> list[np.ndarray]:
     """Every per-vertex and per-face array pymeshlab exposes for a plain loaded mesh."""
@@ -36,10 +34,14 @@ def snapshot(mesh) -> list[np.ndarray]:
         arrays.append(mesh.vertex_scalar_array())
     if mesh.has_face_scalar():
         arrays.append(mesh.face_scalar_array())
+    if mesh.has_face_color():
+        arrays.append(mesh.face_color_matrix())
+    if mesh.has_wedge_tex_coord():
+        arrays.append(mesh.wedge_tex_coord_matrix())
     return [a.copy() for a in arrays]
 
 
-def main(plugin: str, path: str, parameters: str, mode: str) -> dict:
+def main(plugin: str, filter_name: str, path: str, parameters: str, mode: str) -> dict:
     pymeshlab.load_plugin(plugin)
     ms = pymeshlab.MeshSet()
     try:
@@ -55,7 +57,7 @@ def main(plugin: str, path: str, parameters: str, mode: str) -> dict:
     before = snapshot(ms.current_mesh())
     returned = {}
     try:
-        returned = ms.apply_filter(FILTER, **json.loads(parameters))
+        returned = ms.apply_filter(filter_name, **json.loads(parameters))
         stage, message = "done", ""
     except pymeshlab.PyMeshLabException as e:
         stage, message = "filter", str(e)
@@ -73,7 +75,7 @@ def main(plugin: str, path: str, parameters: str, mode: str) -> dict:
 
 
 if __name__ == "__main__":
-    print(json.dumps(main(*sys.argv[1:5])), flush=True)
+    print(json.dumps(main(*sys.argv[1:6])), flush=True)
     # Skip the MeshSet destructors: after a failed filter, pymeshlab 2025.7.post1 corrupts the
     # heap when that MeshSet is destroyed (see pymeshlab_paths.FAILED_MESHSETS).
     os._exit(0)
