@@ -9,9 +9,7 @@ namespace qd::cli {
 
 FlattenProblem make_flatten_problem(const meshio::MeshFile& mesh, const FlattenOptions& o) {
   FlattenProblem problem;
-  problem.V = positions_of(mesh);
-  problem.F = triangles_of(mesh);
-  problem.patch = mesh.patch;
+  set_geometry(mesh, problem);
   problem.params = o.params;
   return problem;
 }

@@ -13,6 +13,7 @@
 #include <memory>
 #include <new>
 #include <sstream>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -119,13 +120,23 @@ int count_constrained(const std::vector<char>& constrained) {
   return n;
 }
 
-void approximate(const qd::cli::ApproximateOptions& o) {
+// What every job does before writing: refuse clashing files, read INPUT, build the engine's
+// problem (make_problem(mesh)) and solve it (solve(problem, progress)) with the progress line.
+template <typename Options, typename MakeProblem, typename Solve>
+auto read_and_solve(const Options& o, MakeProblem make_problem, Solve solve) {
   check_paths(o, qd::cli::output_files(o));
-  const qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
-  const qd::Problem problem = qd::cli::make_problem(mesh, o);
+  qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
+  auto problem = make_problem(mesh);
   start_progress(o);
-  const qd::Result result = qd::approximate(problem, show_progress);
+  auto result = solve(problem, show_progress);
   progress_line.close();
+  return std::make_tuple(std::move(mesh), std::move(problem), std::move(result));
+}
+
+void approximate(const qd::cli::ApproximateOptions& o) {
+  const auto [mesh, problem, result] = read_and_solve(
+      o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_problem(m, o); },
+      [](const qd::Problem& p, const qd::Progress& progress) { return qd::approximate(p, progress); });
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size()))}};
   if (!o.report.empty()) {
@@ -154,12 +165,9 @@ std::string drawn(const Write& write) {
 }
 
 void flatten(const qd::cli::FlattenOptions& o) {
-  check_paths(o, qd::cli::output_files(o));
-  const qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
-  const qd::FlattenProblem problem = qd::cli::make_flatten_problem(mesh, o);
-  start_progress(o);
-  const qd::FlattenResult result = qd::flatten(problem, show_progress);
-  progress_line.close();
+  const auto [mesh, problem, result] = read_and_solve(
+      o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_flatten_problem(m, o); },
+      [](const qd::FlattenProblem& p, const qd::Progress& progress) { return qd::flatten(p, progress); });
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(mesh, qd::cli::flatten_output_fields(result, mesh.triangles.size()))}};
   if (!o.report.empty()) {

@@ -1,21 +1,26 @@
 #include "mesh_geometry.h"
 
+#include <array>
+#include <tuple>
+
 namespace qd::cli {
 
-Positions positions_of(const meshio::MeshFile& mesh) {
-  Positions V(static_cast<Eigen::Index>(mesh.positions.size()), 3);
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    for (int k = 0; k < 3; ++k)
-      V(static_cast<Eigen::Index>(i), k) = mesh.positions[i][static_cast<std::size_t>(k)];
-  return V;
+namespace {
+
+// rows (one std::array per row) as an Eigen matrix with as many columns.
+template <typename Matrix, typename Row>
+Matrix matrix_of(const std::vector<Row>& rows) {
+  Matrix m(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(std::tuple_size<Row>::value));
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t k = 0; k < rows[i].size(); ++k)
+      m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = rows[i][k];
+  return m;
 }
 
-Triangles triangles_of(const meshio::MeshFile& mesh) {
-  Triangles F(static_cast<Eigen::Index>(mesh.triangles.size()), 3);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      F(static_cast<Eigen::Index>(f), k) = mesh.triangles[f][static_cast<std::size_t>(k)];
-  return F;
-}
+}  // namespace
+
+Positions positions_of(const meshio::MeshFile& mesh) { return matrix_of<Positions>(mesh.positions); }
+
+Triangles triangles_of(const meshio::MeshFile& mesh) { return matrix_of<Triangles>(mesh.triangles); }
 
 }  // namespace qd::cli

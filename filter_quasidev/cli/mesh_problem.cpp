@@ -12,9 +12,7 @@ namespace qd::cli {
 
 Problem make_problem(const meshio::MeshFile& mesh, const ApproximateOptions& o) {
   Problem problem;
-  problem.V = positions_of(mesh);
-  problem.F = triangles_of(mesh);
-  problem.patch = mesh.patch;
+  set_geometry(mesh, problem);
   problem.constrained = mesh.constrained;
   if (!o.constraints.empty()) {
     problem.constrained.resize(mesh.positions.size(), 0);

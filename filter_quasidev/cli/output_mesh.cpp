@@ -55,6 +55,23 @@ void add_colors(PlyElement& e, const std::vector<std::array<unsigned char, 3>>& 
   e.properties.push_back(scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
 }
 
+// A list property (uchar counts) of `type` with one list per row.
+template <typename T, std::size_t N>
+PlyProperty list_property(const std::string& name, ScalarType type, const std::vector<std::array<T, N>>& rows) {
+  PlyProperty p;
+  p.name = name;
+  p.is_list = true;
+  p.count_type = ScalarType::UInt8;
+  p.type = type;
+  p.offsets.reserve(rows.size() + 1);
+  p.offsets.push_back(0);
+  for (const std::array<T, N>& row : rows) {
+    p.values.insert(p.values.end(), row.begin(), row.end());
+    p.offsets.push_back(p.values.size());
+  }
+  return p;
+}
+
 // True when `values` is empty (not written) or has one entry per element.
 template <typename T>
 bool fits(const std::vector<T>& values, std::size_t count) {
@@ -109,35 +126,12 @@ PlyElement face_element(const MeshFile& mesh, const OutputFields& fields) {
   PlyElement e;
   e.name = "face";
   e.count = nf;
-  PlyProperty indices;
-  indices.name = "vertex_indices";
-  indices.is_list = true;
-  indices.count_type = ScalarType::UInt8;
-  indices.type = ScalarType::Int32;
-  indices.offsets.reserve(nf + 1);
-  indices.offsets.push_back(0);
-  for (const std::array<int, 3>& t : mesh.triangles) {
-    indices.values.insert(indices.values.end(), t.begin(), t.end());
-    indices.offsets.push_back(indices.values.size());
-  }
-  e.properties.push_back(std::move(indices));
+  e.properties.push_back(list_property("vertex_indices", ScalarType::Int32, mesh.triangles));
   const std::vector<PlyProperty> extra =
       kept(mesh.face_extra, !fields.face_quality.empty(), !fields.face_colors.empty(), !fields.texcoords.empty());
   e.properties.insert(e.properties.end(), extra.begin(), extra.end());
-  if (!fields.texcoords.empty()) {
-    PlyProperty uv;
-    uv.name = "texcoord";
-    uv.is_list = true;
-    uv.count_type = ScalarType::UInt8;
-    uv.type = ScalarType::Float32;
-    uv.offsets.reserve(nf + 1);
-    uv.offsets.push_back(0);
-    for (const std::array<double, 6>& corners : fields.texcoords) {
-      uv.values.insert(uv.values.end(), corners.begin(), corners.end());
-      uv.offsets.push_back(uv.values.size());
-    }
-    e.properties.push_back(std::move(uv));
-  }
+  if (!fields.texcoords.empty())
+    e.properties.push_back(list_property("texcoord", ScalarType::Float32, fields.texcoords));
   if (!fields.face_quality.empty())
     e.properties.push_back(scalar_property("quality", ScalarType::Float64, fields.face_quality));
   if (!fields.face_colors.empty()) add_colors(e, fields.face_colors);

@@ -54,6 +54,15 @@ enum class MeshPart {
 // One figure a filter returns (pymeshlab: a value of the returned dict).
 using Figure = std::variant<int, double, std::vector<double>>;
 
+// A figure with one entry per item (per patch, per piece): field(item) for each, as doubles.
+template <typename Item, typename Field>
+Figure figure_list(const std::vector<Item>& items, Field field) {
+  std::vector<double> v;
+  v.reserve(items.size());
+  for (const Item& item : items) v.push_back(static_cast<double>(field(item)));
+  return v;
+}
+
 // What one run of a filter did. On failure the mesh is unchanged and `error` says why.
 struct FilterRun {
   bool ok = false;

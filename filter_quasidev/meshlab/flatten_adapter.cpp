@@ -13,7 +13,6 @@
 #include "flatten/stretch_ramp.h"
 #include "flatten/svg_writer.h"
 #include "flatten_figures.h"
-#include "guarded_run.h"
 #include "printf_string.h"
 
 namespace qdml {
@@ -91,15 +90,8 @@ std::string flatten_info() {
 }
 
 FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
-  FlattenOutcome outcome = apply_flatten(m, has_face_quality, flatten_settings_from_values(values), cb);
-  FilterRun out;
-  out.ok = outcome.ok;
-  out.error = std::move(outcome.error);
-  out.log = std::move(outcome.log);
-  if (!out.ok) return out;
-  out.figures = flatten_figures(outcome.result);
-  out.written = {MeshPart::WedgeTexCoord, MeshPart::FaceQuality, MeshPart::FaceColor};
-  return out;
+  return filter_run(apply_flatten(m, has_face_quality, flatten_settings_from_values(values), cb), flatten_figures,
+                    {MeshPart::WedgeTexCoord, MeshPart::FaceQuality, MeshPart::FaceColor});
 }
 
 }  // namespace
@@ -163,8 +155,7 @@ FlattenSettings flatten_settings_from_values(const ParamValues& values) {
 
 FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const FlattenSettings& s,
                              vcg::CallBackPos* cb) {
-  FlattenOutcome out;
-  out.error = guarded_run([&] {
+  return guarded_run<qd::FlattenResult>([&](FlattenOutcome& out) {
     qd::FlattenProblem problem;
     const EngineMesh e = read_geometry(m, problem.V, problem.F);
     problem.patch = read_patch_ids(m, e, has_face_quality, true, out.log);
@@ -177,8 +168,6 @@ FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const FlattenSett
     if (!s.svg_file.empty()) out.log.push_back("pattern written as SVG to " + s.svg_file);
     if (!s.dxf_file.empty()) out.log.push_back("pattern written as DXF to " + s.dxf_file);
   });
-  out.ok = out.error.empty();
-  return out;
 }
 
 FilterSpec flatten_filter() {

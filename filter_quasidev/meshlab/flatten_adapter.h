@@ -11,6 +11,7 @@
 #include "filter_table.h"
 #include "flatten/flatten_problem.h"
 #include "flatten/flatten_result.h"
+#include "run_outcome.h"
 
 namespace qdml {
 
@@ -31,12 +32,7 @@ struct FlattenSettings {
 // Settings from the values read back by name; a name missing from `values` keeps its default.
 FlattenSettings flatten_settings_from_values(const ParamValues& values);
 
-struct FlattenOutcome {
-  bool ok = false;
-  std::string error;             // the reason, written for the user, when !ok
-  std::vector<std::string> log;  // lines to log (also on failure: what was read from the mesh)
-  qd::FlattenResult result;      // the engine's result when ok
-};
+using FlattenOutcome = RunOutcome<qd::FlattenResult>;
 
 // Reads m (positions, faces; patch id per face = rounded per-face quality when has_face_quality,
 // else one patch; deleted elements skipped), flattens it, writes the pattern files asked for

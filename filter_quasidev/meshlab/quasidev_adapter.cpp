@@ -13,7 +13,6 @@
 #include "approximate/validate.h"
 #include "common/mesh.h"
 #include "common/quality_range.h"
-#include "guarded_run.h"
 #include "printf_string.h"
 #include "result_figures.h"
 
@@ -119,16 +118,9 @@ std::string filter_info() {
 // written (the colour only when asked for).
 FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
   const Settings settings = settings_from_values(values);
-  Outcome outcome = apply(m, has_face_quality, settings, cb);
-  FilterRun out;
-  out.ok = outcome.ok;
-  out.error = std::move(outcome.error);
-  out.log = std::move(outcome.log);
-  if (!out.ok) return out;
-  out.figures = result_figures(outcome.result);
-  out.written = {MeshPart::VertexQuality};
-  if (settings.colorize) out.written.push_back(MeshPart::VertexColor);
-  return out;
+  std::vector<MeshPart> written = {MeshPart::VertexQuality};
+  if (settings.colorize) written.push_back(MeshPart::VertexColor);
+  return filter_run(apply(m, has_face_quality, settings, cb), result_figures, std::move(written));
 }
 
 }  // namespace
@@ -236,16 +228,13 @@ Settings settings_from_values(const ParamValues& values) {
 }
 
 Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBackPos* cb) {
-  Outcome out;
-  out.error = guarded_run([&] {
+  return guarded_run<qd::Result>([&](Outcome& out) {
     EngineMesh e;
     const qd::Problem problem = make_problem(m, has_face_quality, s, out.log, e);
     out.result = qd::approximate(problem, progress_of(cb));
     write_back(m, e, out.result, s);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
   });
-  out.ok = out.error.empty();
-  return out;
 }
 
 FilterSpec approximate_filter() {

@@ -7,15 +7,6 @@ namespace qdml {
 
 namespace {
 
-// A per-patch list of the figures.
-template <typename Field>
-Figure patch_list(const std::vector<qd::PatchReport>& patches, Field field) {
-  std::vector<double> v;
-  v.reserve(patches.size());
-  for (const qd::PatchReport& p : patches) v.push_back(static_cast<double>(field(p)));
-  return v;
-}
-
 // The developability term a patch used, as the index of that value of the parameter
 // "developability" (curve 0, defect 1, both 2); -1 when the patch was left unchanged.
 int developability_code(const qd::PatchReport& p) {
@@ -51,15 +42,15 @@ std::map<std::string, Figure> result_figures(const qd::Result& r) {
       {"patches", static_cast<int>(r.patches.size())},
       {"warnings", static_cast<int>(r.warnings.size())},
       {"time_ms", r.time_ms},
-      {"patch_id", patch_list(r.patches, [](const P& p) { return p.id; })},
-      {"patch_faces", patch_list(r.patches, [](const P& p) { return p.faces; })},
-      {"patch_iterations", patch_list(r.patches, [](const P& p) { return p.iterations; })},
-      {"patch_abd_reduction", patch_list(r.patches, [](const P& p) { return p.abd_reduction; })},
-      {"patch_obd_reduction", patch_list(r.patches, [](const P& p) { return p.obd_reduction; })},
-      {"patch_fit_residual_deg", patch_list(r.patches, [](const P& p) { return p.fit_residual_deg; })},
-      {"patch_developability", patch_list(r.patches, developability_code)},
-      {"patch_max_displacement", patch_list(r.patches, [](const P& p) { return p.after.max_disp; })},
-      {"patch_max_abs_k_after", patch_list(r.patches, [](const P& p) { return p.after.max_abs_k; })},
+      {"patch_id", figure_list(r.patches, [](const P& p) { return p.id; })},
+      {"patch_faces", figure_list(r.patches, [](const P& p) { return p.faces; })},
+      {"patch_iterations", figure_list(r.patches, [](const P& p) { return p.iterations; })},
+      {"patch_abd_reduction", figure_list(r.patches, [](const P& p) { return p.abd_reduction; })},
+      {"patch_obd_reduction", figure_list(r.patches, [](const P& p) { return p.obd_reduction; })},
+      {"patch_fit_residual_deg", figure_list(r.patches, [](const P& p) { return p.fit_residual_deg; })},
+      {"patch_developability", figure_list(r.patches, developability_code)},
+      {"patch_max_displacement", figure_list(r.patches, [](const P& p) { return p.after.max_disp; })},
+      {"patch_max_abs_k_after", figure_list(r.patches, [](const P& p) { return p.after.max_abs_k; })},
   };
 }
 

@@ -4,8 +4,6 @@
 // (deleted elements, selection, face quality, face colours and texture coordinates untouched).
 #include <gtest/gtest.h>
 
-#include <QDomDocument>
-#include <QFile>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -14,6 +12,7 @@
 #include <vector>
 
 #include "adapter_test_mesh.h"
+#include "mlx_check.h"
 #include "quasidev_adapter.h"
 
 namespace {
@@ -33,37 +32,12 @@ qdml::ParamValues default_values(const CMeshO& m) {
 TEST(Adapter2020, DefaultMlxListsEveryParameterAtItsDefault) {
   CMeshO m;
   make_bumpy_cylinder(m);
-  QFile file(QD_DEFAULT_MLX);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly)) << QD_DEFAULT_MLX;
-  QDomDocument doc;
-  ASSERT_TRUE(doc.setContent(&file));
-  const QDomNodeList params = doc.elementsByTagName("Param");
-  const std::vector<qdml::ParamSpec> specs = qdml::parameter_specs(m);
-  ASSERT_EQ(params.size(), static_cast<int>(specs.size()));
-  const std::map<qdml::ParamKind, QString> types = {{qdml::ParamKind::Float, "RichFloat"},
-                                                    {qdml::ParamKind::Int, "RichInt"},
-                                                    {qdml::ParamKind::Bool, "RichBool"},
-                                                    {qdml::ParamKind::Enum, "RichEnum"}};
-  for (int i = 0; i < params.size(); ++i) {
-    const QDomElement p = params.at(i).toElement();
-    const qdml::ParamSpec& spec = specs[static_cast<size_t>(i)];
-    EXPECT_EQ(p.attribute("name").toStdString(), spec.name);
-    EXPECT_EQ(p.attribute("type"), types.at(spec.kind)) << spec.name;
-    const QString value = p.attribute("value");
-    if (spec.kind == qdml::ParamKind::Bool) {
-      EXPECT_EQ(value == "true", spec.value != 0) << spec.name;
-    } else if (spec.name == "tolerance") {
-      EXPECT_EQ(value.toDouble(), 0.0) << "default.mlx must say 0 (= 1 AE of any mesh)";
-    } else {
-      // The 2020.09 plugin holds floats: the script's value and the default agree as floats.
-      EXPECT_EQ(static_cast<float>(value.toDouble()), static_cast<float>(spec.value)) << spec.name;
-    }
-    if (spec.kind == qdml::ParamKind::Enum) {
-      ASSERT_EQ(p.attribute("enum_cardinality").toInt(), static_cast<int>(spec.items.size()));
-      for (size_t k = 0; k < spec.items.size(); ++k)
-        EXPECT_EQ(p.attribute(QString("enum_val%1").arg(k)).toStdString(), spec.items[k]);
-    }
-  }
+  qdml::test::expect_mlx_lists(QD_DEFAULT_MLX, qdml::parameter_specs(m), [](const qdml::ParamSpec& spec, double value) {
+    if (spec.name == "tolerance")
+      EXPECT_EQ(value, 0.0) << "default.mlx must say 0 (= 1 AE of any mesh)";
+    else
+      qdml::test::expect_float_default(spec, value);
+  });
 }
 
 TEST(Adapter2020, ToleranceDefaultIsTheAverageEdgeLength) {

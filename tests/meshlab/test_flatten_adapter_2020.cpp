@@ -4,8 +4,6 @@
 // quality and face colour on success, the pattern files asked for, and nothing on failure.
 #include <gtest/gtest.h>
 
-#include <QDomDocument>
-#include <QFile>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +12,7 @@
 #include <string>
 
 #include "adapter_test_mesh.h"
+#include "mlx_check.h"
 #include "flatten_adapter.h"
 
 namespace {
@@ -40,34 +39,7 @@ std::filesystem::path temp_dir() {
 }  // namespace
 
 TEST(FlattenAdapter2020, MlxListsEveryParameterAtItsDefault) {
-  QFile file(QD_FLATTEN_MLX);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly)) << QD_FLATTEN_MLX;
-  QDomDocument doc;
-  ASSERT_TRUE(doc.setContent(&file));
-  const QDomNodeList params = doc.elementsByTagName("Param");
-  const std::vector<qdml::ParamSpec> specs = qdml::flatten_parameter_specs();
-  ASSERT_EQ(params.size(), static_cast<int>(specs.size()));
-  const std::map<qdml::ParamKind, QString> types = {{qdml::ParamKind::Float, "RichFloat"},
-                                                    {qdml::ParamKind::Int, "RichInt"},
-                                                    {qdml::ParamKind::Enum, "RichEnum"},
-                                                    {qdml::ParamKind::SaveFile, "RichSaveFile"}};
-  for (int i = 0; i < params.size(); ++i) {
-    const QDomElement p = params.at(i).toElement();
-    const qdml::ParamSpec& spec = specs[static_cast<size_t>(i)];
-    EXPECT_EQ(p.attribute("name").toStdString(), spec.name);
-    EXPECT_EQ(p.attribute("type"), types.at(spec.kind)) << spec.name;
-    if (spec.kind == qdml::ParamKind::SaveFile) {
-      EXPECT_EQ(p.attribute("value"), "") << spec.name;
-      EXPECT_EQ(p.attribute("ext").toStdString(), spec.extension) << spec.name;
-    } else {
-      EXPECT_EQ(static_cast<float>(p.attribute("value").toDouble()), static_cast<float>(spec.value)) << spec.name;
-    }
-    if (spec.kind == qdml::ParamKind::Enum) {
-      ASSERT_EQ(p.attribute("enum_cardinality").toInt(), static_cast<int>(spec.items.size()));
-      for (size_t k = 0; k < spec.items.size(); ++k)
-        EXPECT_EQ(p.attribute(QString("enum_val%1").arg(k)).toStdString(), spec.items[k]);
-    }
-  }
+  qdml::test::expect_mlx_lists(QD_FLATTEN_MLX, qdml::flatten_parameter_specs(), qdml::test::expect_float_default);
 }
 
 TEST(FlattenAdapter2020, SettingsFollowTheValues) {
