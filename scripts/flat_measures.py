@@ -83,3 +83,57 @@ def area_ratio(V: np.ndarray, F: np.ndarray, UV: np.ndarray) -> float:
     u1, u2 = UV[:, 2:4] - UV[:, 0:2], UV[:, 4:6] - UV[:, 0:2]
     flat = 0.5 * np.abs(u1[:, 0] * u2[:, 1] - u1[:, 1] * u2[:, 0])
     return float(flat.sum() / area.sum())
+
+
+def split_by_uv(F: np.ndarray, UV: np.ndarray, digits: int = 7) -> tuple[np.ndarray, np.ndarray]:
+    """The mesh cut wherever neighbouring faces' corners have different coordinates (a pattern's
+    seams): (vertex of each new vertex, new faces). A new vertex is one (vertex, u, v) corner,
+    with u, v rounded to `digits` significant decimals of the pattern's extent."""
+    extent = float(np.ptp(UV.reshape(-1, 2), axis=0).max()) or 1.0
+    q = np.round(UV.reshape(-1, 2) / extent * 10 ** digits).astype(np.int64)
+    keys = np.column_stack([F.reshape(-1), q])
+    unique, inverse = np.unique(keys, axis=0, return_inverse=True)
+    return unique[:, 0], inverse.reshape(-1, 3)
+
+
+def components(F: np.ndarray) -> list[np.ndarray]:
+    """Edge-connected components of faces (face indices, each sorted), largest first."""
+    parent = np.arange(len(F))
+
+    def find(x: int) -> int:
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+    owner: dict[tuple[int, int], int] = {}
+    for f, tri in enumerate(F):
+        for k in range(3):
+            edge = tuple(sorted((int(tri[k]), int(tri[(k + 1) % 3]))))
+            if edge in owner:
+                a, b = find(owner[edge]), find(f)
+                if a != b:
+                    parent[a] = b
+            else:
+                owner[edge] = f
+    roots = np.array([find(f) for f in range(len(F))])
+    groups = [np.flatnonzero(roots == r) for r in np.unique(roots)]
+    return sorted(groups, key=len, reverse=True)
+
+
+def signed_area(UV: np.ndarray) -> float:
+    """Total signed area of a pattern's faces (> 0: counter-clockwise, as the mesh)."""
+    u1, u2 = UV[:, 2:4] - UV[:, 0:2], UV[:, 4:6] - UV[:, 0:2]
+    return float(0.5 * (u1[:, 0] * u2[:, 1] - u1[:, 1] * u2[:, 0]).sum())
+
+
+def rigid_distance(ours: np.ndarray, target: np.ndarray) -> tuple[float, float]:
+    """Distances between corresponding 2D points after the rotation and translation of `ours`
+    that best fit `target` (least squares, Kabsch; no reflection: mirror a mirrored target
+    first, see signed_area). Returns (RMS, largest), over the target's bounding-box diagonal."""
+    a = ours - ours.mean(axis=0)
+    b = target - target.mean(axis=0)
+    U, _, Vt = np.linalg.svd(a.T @ b)
+    D = np.diag([1.0, np.sign(np.linalg.det(U @ Vt))])
+    d = np.linalg.norm(a @ (U @ D @ Vt) - b, axis=1)
+    diagonal = float(np.linalg.norm(np.ptp(target, axis=0)))
+    return float(np.sqrt((d ** 2).mean()) / diagonal), float(d.max() / diagonal)
