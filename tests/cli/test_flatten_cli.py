@@ -291,3 +291,18 @@ def test_help_lists_flatten_and_its_defaults():
         assert f"(default {default})" in entry, entry
     for option in ("--svg", "--dxf", "--report", "--progress", "--quiet", "--overwrite-input"):
         assert option in sub.stdout
+
+
+def test_progress_quiet_and_obj_groups(tmp_path):
+    """--progress ends at 100 %; --quiet prints nothing; OBJ groups are patches as PLY quality is."""
+    r = run("flatten", CONE, tmp_path / "p.ply", "--progress", "--quiet")
+    assert r.returncode == 0 and r.stdout == "", r.stderr
+    progress = [l for l in r.stderr.splitlines() if l.startswith("quasidev: ")]
+    assert progress and progress[-1].startswith("quasidev: 100%"), r.stderr
+    obj = SHARED / "obj" / "garment_shirt_initial_diffavatar.obj"
+    if not obj.exists():
+        pytest.skip("shared OBJ missing")
+    _, from_obj, _ = flatten(tmp_path, obj, "--quiet", name="obj")
+    _, from_ply, _ = flatten(tmp_path, SHIRT, "--quiet", name="ply")
+    assert from_obj["has_patch_ids"]
+    assert sorted(p["faces"] for p in from_obj["pieces"]) == sorted(p["faces"] for p in from_ply["pieces"])
