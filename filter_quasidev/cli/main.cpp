@@ -156,14 +156,6 @@ void approximate(const qd::cli::ApproximateOptions& o) {
   print_log(o, result.log, mesh.notes);
 }
 
-// The pattern drawn by one of the flattening's writers (svg_writer.h, dxf_writer.h).
-template <typename Write>
-std::string drawn(const Write& write) {
-  std::ostringstream out;
-  write(out);
-  return out.str();
-}
-
 void flatten(const qd::cli::FlattenOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
       o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_flatten_problem(m, o); },
@@ -177,10 +169,16 @@ void flatten(const qd::cli::FlattenOptions& o) {
     files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
   }
   const std::string unit = o.unit == qd::cli::PatternUnit::Model ? "" : name_of(qd::cli::kPatternUnits, o.unit);
-  if (!o.svg.empty())
-    files.emplace_back(o.svg, drawn([&](std::ostream& out) { qd::write_svg(out, result.pattern, unit); }));
-  if (!o.dxf.empty())
-    files.emplace_back(o.dxf, drawn([&](std::ostream& out) { qd::write_dxf(out, result.pattern); }));
+  if (!o.svg.empty()) {
+    std::ostringstream svg;
+    qd::write_svg(svg, result.pattern, unit);
+    files.emplace_back(o.svg, svg.str());
+  }
+  if (!o.dxf.empty()) {
+    std::ostringstream dxf;
+    qd::write_dxf(dxf, result.pattern);
+    files.emplace_back(o.dxf, dxf.str());
+  }
   write_files(files);
   print_log(o, result.log, mesh.notes);
 }

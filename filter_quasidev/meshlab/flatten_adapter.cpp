@@ -13,7 +13,6 @@
 #include "flatten/stretch_ramp.h"
 #include "flatten/svg_writer.h"
 #include "flatten_figures.h"
-#include "printf_string.h"
 
 namespace qdml {
 
