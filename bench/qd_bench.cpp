@@ -102,7 +102,7 @@ void run(const Args& a) {
   }
   std::vector<std::string> args = {input, output};
   args.insert(args.end(), a.quasidev.begin(), a.quasidev.end());
-  const qd::cli::Options options = qd::cli::parse_command_line(args).approximate;
+  const qd::cli::ApproximateOptions options = qd::cli::parse_command_line(args).approximate;
 
   std::vector<double> read_ms, write_ms, wall_ms, setup, step1, assembly, factor, solve, metrics;
   qd::Result result;

@@ -20,7 +20,7 @@
 #include "flatten/dxf_writer.h"
 #include "flatten/flatten.h"
 #include "flatten/svg_writer.h"
-#include "mesh_problem.h"
+#include "mesh_geometry.h"
 #include "mesh_reader.h"
 
 namespace {
@@ -55,8 +55,7 @@ Args parse(int argc, char** argv) {
 
 qd::FlattenProblem problem_of(const qd::meshio::MeshFile& mesh) {
   qd::FlattenProblem p;
-  qd::cli::mesh_arrays(mesh, p.V, p.F);
-  p.patch = mesh.patch;
+  qd::cli::set_geometry(mesh, p);
   return p;
 }
 

@@ -23,6 +23,7 @@
 
 #include "bench_mesh.h"
 #include "common/error.h"
+#include "mesh_geometry.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
 #include "options.h"
@@ -89,8 +90,7 @@ qd::meshio::MeshFile load(const std::string& name) {
 
 qd::SegmentProblem segment_problem(const qd::meshio::MeshFile& mesh, const qd::SegmentParams& q) {
   qd::SegmentProblem p;
-  qd::cli::mesh_arrays(mesh, p.V, p.F);
-  p.patch = mesh.patch;
+  qd::cli::set_geometry(mesh, p);
   p.params = q;
   return p;
 }
@@ -112,7 +112,7 @@ std::string approximate(const qd::meshio::MeshFile& mesh, const std::vector<int>
                         const std::vector<std::string>& quasidev) {
   qd::meshio::MeshFile segmented = mesh;
   segmented.patch = patch;
-  const qd::cli::Options options = qd::cli::parse_command_line(quasidev).approximate;
+  const qd::cli::ApproximateOptions options = qd::cli::parse_command_line(quasidev).approximate;
   const qd::Result r = qd::approximate(qd::cli::make_problem(segmented, options));
   char text[160];
   std::snprintf(text, sizeof text, ", \"abd_reduction\": %.2f, \"max_move_ae\": %.3f",

@@ -2,7 +2,7 @@
 """Deterministic generator of the project's sample meshes (Python 3.11 standard library only).
 
 Input:  optional --out DIR (default: sample_meshes/ beside scripts/).
-Output: DIR/{lampshade,bumpy_cylinder,bumpy_cone,patches,selected,draped_panels,capped_cylinder}.ply (binary little-endian
+Output: DIR/{lampshade,bumpy_cylinder,bumpy_cone,patches,selected,draped_panels,capped_cylinder,cone_panels}.ply (binary little-endian
         PLY: vertex double x y z [int flags, bit 0x20 = selected], face list uchar int
         vertex_indices + float quality = patch id) and DIR/SOURCES.md describing them.
 Running it twice gives byte-identical files. All meshes but capped_cylinder (a closed tube with
@@ -247,6 +247,20 @@ def make_capped_cylinder() -> tuple[PlyData, str]:
     return mesh_ply(pts, faces, lambda piece, _: piece, ["capped_cylinder: " + what]), what
 
 
+def make_cone_panels() -> tuple[PlyData, str]:
+    """An exactly developable cone frustum in three panels: every quad of the grid joins two
+    rings at the same angles, so it is a planar isosceles trapezoid and the mesh unrolls into an
+    annulus sector with no stretch (the flattening's ground truth)."""
+    n_around, n_along = 96, 24
+    pts = sample_grid(revolution(lambda _u, v: 1.0 - 0.5 * v, 1.0), n_around, n_along)
+    what = ("exactly developable cone frustum (a lampshade without the bulge), radius 1 -> 0.5 over "
+            "height 1, in 3 panels of 120 degrees each (seams along generators); its exact "
+            "development is an annulus sector of radii 2.236 and 1.118 and angle 161 degrees, so "
+            "its flat pattern is known")
+    return mesh_ply(pts, tube_faces(n_around, n_along), lambda i, _j: 3 * i // n_around,
+                    ["cone_panels: " + what]), what
+
+
 def samples() -> list[tuple[str, PlyData, str]]:
     cyl, cyl_what = bumpy("bumpy_cylinder", revolution(lambda _u, _v: 1.0, 2.0), "open cylinder, radius 1, height 2",
                           96, 32, 0.05, 0.18)
@@ -258,7 +272,8 @@ def samples() -> list[tuple[str, PlyData, str]]:
             ("patches.ply", *make_patches()),
             ("selected.ply", *make_selected()),
             ("draped_panels.ply", *make_draped()),
-            ("capped_cylinder.ply", *make_capped_cylinder())]
+            ("capped_cylinder.ply", *make_capped_cylinder()),
+            ("cone_panels.ply", *make_cone_panels())]
 
 
 def sources_md(entries: list[tuple[str, PlyData, str]]) -> str:

@@ -3,7 +3,8 @@
 #   1. Debian packages for building (compiler, CMake, Qt5, Eigen, GLEW, SuiteSparse, GoogleTest,
 #      nanoflann, CLI11, nlohmann-json; clang and its libFuzzer for tests/cli/run_sanitizers.sh)
 #      and running (meshlab 2020.09, Xvfb, xdotool, ImageMagick, Mesa, python3-venv; debootstrap
-#      and pkgconf for the MeshLab 2025.07 GUI test);
+#      and pkgconf for the MeshLab 2025.07 GUI test; rsvg-convert for the README's pattern picture,
+#      scripts/flatten_compare.py);
 #   2. the MeshLab source trees whose headers the plugins compile against, from Debian's source
 #      packages (pinned by sha256), into third_party/meshlab-2020.09 and third_party/meshlab-2025.07;
 #   3. the Python venv .venv with every scripts/requirements-*.txt;
@@ -31,7 +32,7 @@ PACKAGES=(cmake g++ make ninja-build qtbase5-dev libqt5opengl5-dev libglew-dev
           libcli11-dev nlohmann-json3-dev
           meshlab xvfb xauth xdotool imagemagick libgl1-mesa-dri python3-venv
           ca-certificates debian-archive-keyring xz-utils clang libclang-rt-14-dev
-          debootstrap pkgconf)
+          debootstrap pkgconf librsvg2-bin)
 missing=()
 for p in "${PACKAGES[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,9 +2,11 @@
 // writes the deformed mesh as PLY with per-vertex quality and a colour ramp, and optionally a JSON
 // report. quasidev segment: reads a mesh, splits it into nearly developable patches
 // (qd::segment), writes it as PLY with per-face quality = patch id and a colour per patch, and
-// optionally a JSON report. Subcommands and options: options.h.
+// optionally a JSON report. quasidev flatten: reads a mesh, flattens its patches (qd::flatten), writes it as PLY
+// with wedge texture coordinates, the stretch per face and its colour ramp, and optionally a
+// JSON report and the pattern as SVG and DXF. Subcommands and options: options.h.
 // Exit 0 on success; 1 on bad input or an engine error; 2 on a bad command line. On error one
-// line "quasidev: error: REASON" goes to stderr and no OUTPUT (or report) file is written.
+// line "quasidev: error: REASON" goes to stderr and no file is written.
 #include <unistd.h>
 
 #include <csignal>
@@ -12,9 +14,18 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <sstream>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include "approximate/quasidev.h"
 #include "atomic_file.h"
+#include "flatten/dxf_writer.h"
+#include "flatten/flatten.h"
+#include "flatten/svg_writer.h"
+#include "flatten_fields.h"
+#include "flatten_report_json.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
 #include "options.h"
@@ -26,8 +37,6 @@
 #include "segment_report_json.h"
 
 namespace {
-
-using qd::cli::Options;
 
 // The progress line on stderr: rewritten in place ("\r") on a terminal, else one line per
 // change of percentage. Closed with a newline before anything else is printed to stderr.
@@ -62,26 +71,23 @@ class ProgressLine {
 
 ProgressLine progress_line;
 
-// Refuses to replace the input (unless asked) or to write the report over the mesh.
-template <typename JobOptions>
-void check_paths(const JobOptions& o) {
+// Refuses to replace the input (unless asked) or to write two outputs into one file, comparing
+// the files themselves (options.cpp compared their names).
+void check_paths(const qd::cli::JobOptions& o, const std::vector<std::pair<std::string, std::string>>& outputs) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  if (!o.overwrite_input && fs::exists(o.output, ec) && fs::equivalent(o.input, o.output, ec))
+  const auto same = [&ec](const std::string& a, const std::string& b) {
+    return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
+  };
+  if (!o.overwrite_input && same(o.input, o.output))
     throw qd::cli::UsageError("OUTPUT is the INPUT file; pass --overwrite-input to replace it");
-  if (!o.report.empty() && fs::exists(o.report, ec) &&
-      (fs::equivalent(o.report, o.input, ec) || fs::equivalent(o.report, o.output, ec)))
-    throw qd::cli::UsageError("the --report file must differ from INPUT and OUTPUT");
+  for (std::size_t i = 1; i < outputs.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (same(outputs[i].second, o.input) || same(outputs[i].second, outputs[j].second))
+        throw qd::cli::UsageError("the " + outputs[i].first + " file must differ from INPUT, OUTPUT and the other files");
 }
 
-int count_constrained(const std::vector<char>& constrained) {
-  int n = 0;
-  for (char c : constrained) n += c ? 1 : 0;
-  return n;
-}
-
-template <typename JobOptions>
-void start_progress(const JobOptions& o) {
+void start_progress(const qd::cli::JobOptions& o) {
   if (o.progress == qd::cli::ProgressMode::On ||
       (o.progress == qd::cli::ProgressMode::Auto && !o.quiet && isatty(STDERR_FILENO)))
     progress_line.enable();
@@ -91,37 +97,58 @@ const qd::Progress show_progress = [](int percent, const std::string& message) {
   progress_line.show(percent, message);
 };
 
+// Stages every file of a job (target, content) before renaming any into place, so an error
+// while writing leaves all of them as they were.
+void write_files(const std::vector<std::pair<std::string, std::string>>& files) {
+  std::vector<std::unique_ptr<qd::meshio::PendingFile>> pending;
+  for (const auto& [target, content] : files)
+    pending.push_back(std::make_unique<qd::meshio::PendingFile>(target, content));
+  for (const auto& file : pending) file->commit();
+}
+
 std::string ply_bytes(const qd::meshio::MeshFile& mesh, const qd::meshio::OutputFields& fields) {
   return qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
                                    qd::meshio::PlyFormat::BinaryLittleEndian);
 }
 
-// Writes OUTPUT and, when asked, the report (both staged before either is renamed into place),
-// then the warnings on stderr (even with --quiet, like errors: part of the mesh was handled
-// specially) and, unless --quiet, the log on stdout and the reader's notes on stderr.
-template <typename JobOptions>
-void finish(const JobOptions& o, const std::string& ply, const std::string& report_text,
-            const std::vector<std::string>& warnings, const std::vector<std::string>& log,
-            const std::vector<std::string>& notes) {
-  qd::meshio::PendingFile output(o.output, ply);
-  std::unique_ptr<qd::meshio::PendingFile> report;
-  if (!o.report.empty()) report = std::make_unique<qd::meshio::PendingFile>(o.report, report_text);
-  output.commit();
-  if (report) report->commit();
+// Warnings say part of the mesh was handled specially: shown even with --quiet, like errors.
+void print_warnings(const std::vector<std::string>& warnings) {
   for (const std::string& warning : warnings) std::cerr << "quasidev: warning: " << warning << '\n';
+}
+
+// The job's log on stdout and the reader's notes on stderr, unless --quiet.
+void print_log(const qd::cli::JobOptions& o, const std::vector<std::string>& log,
+               const std::vector<std::string>& notes) {
   if (o.quiet) return;
   for (const std::string& line : log) std::cout << line << '\n';
   for (const std::string& note : notes) std::cerr << "quasidev: note: " << note << '\n';
 }
 
-void approximate(const Options& o) {
-  check_paths(o);
-  const qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
-  const qd::Problem problem = qd::cli::make_problem(mesh, o);
+int count_constrained(const std::vector<char>& constrained) {
+  int n = 0;
+  for (char c : constrained) n += c ? 1 : 0;
+  return n;
+}
+
+// What every job does before writing: refuse clashing files, read INPUT, build the engine's
+// problem (make_problem(mesh)) and solve it (solve(problem, progress)) with the progress line.
+template <typename Options, typename MakeProblem, typename Solve>
+auto read_and_solve(const Options& o, MakeProblem make_problem, Solve solve) {
+  check_paths(o, qd::cli::output_files(o));
+  qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
+  auto problem = make_problem(mesh);
   start_progress(o);
-  const qd::Result result = qd::approximate(problem, show_progress);
+  auto result = solve(problem, show_progress);
   progress_line.close();
-  std::string report;
+  return std::make_tuple(std::move(mesh), std::move(problem), std::move(result));
+}
+
+void approximate(const qd::cli::ApproximateOptions& o) {
+  const auto [mesh, problem, result] = read_and_solve(
+      o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_problem(m, o); },
+      [](const qd::Problem& p, const qd::Progress& progress) { return qd::approximate(p, progress); });
+  std::vector<std::pair<std::string, std::string>> files = {
+      {o.output, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size()))}};
   if (!o.report.empty()) {
     const qd::cli::ReportContext context{o,
                                          problem.params,
@@ -130,20 +157,19 @@ void approximate(const Options& o) {
                                          !mesh.patch.empty(),
                                          count_constrained(problem.constrained),
                                          mesh.notes};
-    report = report_json(result, context);
+    files.emplace_back(o.report, report_json(result, context));
   }
-  finish(o, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size())), report,
-         result.warnings, result.log, mesh.notes);
+  write_files(files);
+  print_warnings(result.warnings);
+  print_log(o, result.log, mesh.notes);
 }
 
 void segment(const qd::cli::SegmentOptions& o) {
-  check_paths(o);
-  const qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
-  const qd::SegmentProblem problem = qd::cli::make_segment_problem(mesh, o);
-  start_progress(o);
-  const qd::SegmentResult result = qd::segment(problem, show_progress);
-  progress_line.close();
-  std::string report;
+  const auto [mesh, problem, result] = read_and_solve(
+      o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_segment_problem(m, o); },
+      [](const qd::SegmentProblem& p, const qd::Progress& progress) { return qd::segment(p, progress); });
+  std::vector<std::pair<std::string, std::string>> files = {
+      {o.output, ply_bytes(mesh, qd::cli::segment_output_fields(result, mesh))}};
   if (!o.report.empty()) {
     const qd::cli::SegmentReportContext context{o,
                                                 static_cast<int>(mesh.positions.size()),
@@ -151,13 +177,39 @@ void segment(const qd::cli::SegmentOptions& o) {
                                                 !mesh.patch.empty(),
                                                 count_constrained(problem.selected),
                                                 mesh.notes};
-    report = segment_report_json(result, context);
+    files.emplace_back(o.report, segment_report_json(result, context));
   }
-  // The segmentation's log opens with its warnings (segment_log.h), which go to stderr here.
-  const std::vector<std::string> log(result.log.begin() + static_cast<long>(result.warnings.size()),
-                                     result.log.end());
-  finish(o, ply_bytes(mesh, qd::cli::segment_output_fields(result, mesh)), report, result.warnings,
-         log, mesh.notes);
+  write_files(files);
+  print_warnings(result.warnings);
+  // The segmentation's log opens with its warnings (segment_log.h), printed above.
+  print_log(o, {result.log.begin() + static_cast<long>(result.warnings.size()), result.log.end()}, mesh.notes);
+}
+
+void flatten(const qd::cli::FlattenOptions& o) {
+  const auto [mesh, problem, result] = read_and_solve(
+      o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_flatten_problem(m, o); },
+      [](const qd::FlattenProblem& p, const qd::Progress& progress) { return qd::flatten(p, progress); });
+  std::vector<std::pair<std::string, std::string>> files = {
+      {o.output, ply_bytes(mesh, qd::cli::flatten_output_fields(result, mesh.triangles.size()))}};
+  if (!o.report.empty()) {
+    const qd::cli::FlattenReportContext context{o, static_cast<int>(mesh.positions.size()),
+                                                static_cast<int>(mesh.triangles.size()),
+                                                !mesh.patch.empty(), mesh.notes};
+    files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
+  }
+  const std::string unit = o.unit == qd::cli::PatternUnit::Model ? "" : name_of(qd::cli::kPatternUnits, o.unit);
+  if (!o.svg.empty()) {
+    std::ostringstream svg;
+    qd::write_svg(svg, result.pattern, unit);
+    files.emplace_back(o.svg, svg.str());
+  }
+  if (!o.dxf.empty()) {
+    std::ostringstream dxf;
+    qd::write_dxf(dxf, result.pattern);
+    files.emplace_back(o.dxf, dxf.str());
+  }
+  write_files(files);
+  print_log(o, result.log, mesh.notes);
 }
 
 int fail(const std::string& reason, int status) {
@@ -180,10 +232,9 @@ int main(int argc, char** argv) {
       std::cout << line.print;
       return 0;
     }
-    if (line.job == qd::cli::Job::Segment)
-      segment(line.segment);
-    else
-      approximate(line.approximate);
+    if (line.job == qd::cli::Job::Segment) segment(line.segment);
+    else if (line.job == qd::cli::Job::Flatten) flatten(line.flatten);
+    else approximate(line.approximate);
     return 0;
   } catch (const qd::cli::UsageError& e) {
     return fail(e.what(), 2);

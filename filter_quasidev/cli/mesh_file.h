@@ -47,6 +47,8 @@ struct PlyElement {
 // else from the file kept for pass-through.
 struct MeshFile {
   std::vector<std::array<double, 3>> positions;
+  std::array<ScalarType, 3> position_types = {ScalarType::Float64, ScalarType::Float64,
+                                              ScalarType::Float64};  // of x, y, z in the file
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> patch;           // per triangle; empty = the file has no patch ids
   std::vector<char> constrained;    // per vertex; empty = the file selects no vertex

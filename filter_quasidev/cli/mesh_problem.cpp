@@ -6,22 +6,13 @@
 
 #include "common/quality_range.h"
 #include "constraint_file.h"
+#include "mesh_geometry.h"
 
 namespace qd::cli {
 
-void mesh_arrays(const meshio::MeshFile& mesh, Positions& V, Triangles& F) {
-  V.resize(static_cast<Eigen::Index>(mesh.positions.size()), 3);
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    for (int k = 0; k < 3; ++k) V(static_cast<Eigen::Index>(i), k) = mesh.positions[i][static_cast<std::size_t>(k)];
-  F.resize(static_cast<Eigen::Index>(mesh.triangles.size()), 3);
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    for (int k = 0; k < 3; ++k) F(static_cast<Eigen::Index>(f), k) = mesh.triangles[f][static_cast<std::size_t>(k)];
-}
-
-Problem make_problem(const meshio::MeshFile& mesh, const Options& o) {
+Problem make_problem(const meshio::MeshFile& mesh, const ApproximateOptions& o) {
   Problem problem;
-  mesh_arrays(mesh, problem.V, problem.F);
-  problem.patch = mesh.patch;
+  set_geometry(mesh, problem);
   problem.constrained = mesh.constrained;
   if (!o.constraints.empty()) {
     problem.constrained.resize(mesh.positions.size(), 0);
@@ -44,7 +35,7 @@ Problem make_problem(const meshio::MeshFile& mesh, const Options& o) {
   return problem;
 }
 
-meshio::OutputFields output_fields(const Result& result, const Options& o,
+meshio::OutputFields output_fields(const Result& result, const ApproximateOptions& o,
                                    std::size_t vertex_count) {
   const std::vector<double>& q =
       o.quality == QualityKind::Curvature ? result.k_after : result.displacement;

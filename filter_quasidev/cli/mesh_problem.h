@@ -1,10 +1,10 @@
-// The bridge between the command's mesh tables and the engine.
-// mesh_arrays: the positions and triangles of a MeshFile as the engine's arrays (every job).
-// make_problem: MeshFile + Options -> qd::Problem (positions, triangles, patch ids, constrained
-//   vertices from the file's selection and the --constraints file, parameters with the AE-unit
-//   tolerances converted to model units using the input's average edge length AE).
-// output_fields: qd::Result + Options -> the new positions, the chosen per-vertex quality (K after
-//   or displacement) and its colour ramp over the robust (2nd–98th percentile) range.
+// The bridge between the command's mesh tables and the approximation engine.
+// make_problem: MeshFile + ApproximateOptions -> qd::Problem (positions, triangles, patch ids,
+//   constrained vertices from the file's selection and the --constraints file, parameters with
+//   the AE-unit tolerances converted to model units using the input's average edge length AE).
+// output_fields: qd::Result + ApproximateOptions -> the new positions, the chosen per-vertex
+//   quality (K after or displacement) and its colour ramp over the robust (2nd–98th percentile)
+//   range.
 // Throws qd::Error (degenerate mesh, bad constraint file, wrong result sizes) or UsageError
 // (--patch-tolerance for a patch the mesh does not have).
 #pragma once
@@ -17,11 +17,9 @@
 
 namespace qd::cli {
 
-void mesh_arrays(const meshio::MeshFile& mesh, Positions& V, Triangles& F);
+Problem make_problem(const meshio::MeshFile& mesh, const ApproximateOptions& options);
 
-Problem make_problem(const meshio::MeshFile& mesh, const Options& options);
-
-meshio::OutputFields output_fields(const Result& result, const Options& options,
+meshio::OutputFields output_fields(const Result& result, const ApproximateOptions& options,
                                    std::size_t vertex_count);
 
 }  // namespace qd::cli

@@ -10,6 +10,7 @@
 namespace qd::cli {
 
 enum class QualityKind { Curvature, Displacement };
+enum class PatternUnit { Model, Millimetre, Centimetre, Inch };  // the model's length unit
 
 template <typename T>
 using Choices = std::vector<std::pair<const char*, T>>;
@@ -33,6 +34,10 @@ inline const Choices<SolverKind> kSolverKinds = {{"auto", SolverKind::Auto},
 inline const Choices<SolveMethod> kSolveMethods = {{"auto", SolveMethod::Auto},
                                                    {"direct", SolveMethod::Direct},
                                                    {"iterative", SolveMethod::Iterative}};
+inline const Choices<PatternUnit> kPatternUnits = {{"model", PatternUnit::Model},
+                                                   {"mm", PatternUnit::Millimetre},
+                                                   {"cm", PatternUnit::Centimetre},
+                                                   {"in", PatternUnit::Inch}};
 inline const Choices<QualityKind> kQualityKinds = {{"curvature", QualityKind::Curvature},
                                                    {"displacement", QualityKind::Displacement}};
 

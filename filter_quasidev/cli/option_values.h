@@ -1,7 +1,7 @@
 // The pieces every subcommand's options are made of: converting an option's text to a checked
 // value (a bad one throws UsageError naming the option, the value and what to do) and
 // registering options with CLI11 so that each occurrence is converted in order (the last one
-// wins), plus the flags every job shares (progress, quiet). Defined in options.cpp.
+// wins), plus the options every job shares (files, report, progress, quiet).
 #pragma once
 
 #include <functional>
@@ -60,7 +60,12 @@ void choices(CLI::App& job, const std::string& name, const std::string& value_na
          [name, &names, &target](const std::string& v) { target = choice(name, v, names); });
 }
 
-// --progress, --no-progress and --quiet.
-void add_progress_flags(CLI::App& job, ProgressMode& progress, bool& quiet);
+// The help text of INPUT that every job shares: formats and where patches come from.
+extern const char* const kInputHelp;
+
+// INPUT and OUTPUT (required, described by input_help and output_help), --report (described by
+// report_help), --overwrite-input, --progress, --no-progress and --quiet.
+void add_job_options(CLI::App& job, JobOptions& o, const std::string& input_help,
+                     const std::string& output_help, const std::string& report_help);
 
 }  // namespace qd::cli

@@ -55,6 +55,23 @@ void add_colors(PlyElement& e, const std::vector<std::array<unsigned char, 3>>& 
   e.properties.push_back(scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
 }
 
+// A list property (uchar counts) of `type` with one list per row.
+template <typename T, std::size_t N>
+PlyProperty list_property(const std::string& name, ScalarType type, const std::vector<std::array<T, N>>& rows) {
+  PlyProperty p;
+  p.name = name;
+  p.is_list = true;
+  p.count_type = ScalarType::UInt8;
+  p.type = type;
+  p.offsets.reserve(rows.size() + 1);
+  p.offsets.push_back(0);
+  for (const std::array<T, N>& row : rows) {
+    p.values.insert(p.values.end(), row.begin(), row.end());
+    p.offsets.push_back(p.values.size());
+  }
+  return p;
+}
+
 // True when `values` is empty (not written) or has one entry per element.
 template <typename T>
 bool fits(const std::vector<T>& values, std::size_t count) {
@@ -62,29 +79,33 @@ bool fits(const std::vector<T>& values, std::size_t count) {
 }
 
 // The input's extra properties, without those the fields replace: `quality` when quality is
-// written, the colour channels when colours are.
-std::vector<PlyProperty> kept(const std::vector<PlyProperty>& extra, bool quality, bool colors) {
+// written, the colour channels when colours are, `texcoord` when texture coordinates are.
+std::vector<PlyProperty> kept(const std::vector<PlyProperty>& extra, bool quality, bool colors, bool texcoords) {
   std::vector<PlyProperty> out;
   for (const PlyProperty& p : extra)
-    if (!(quality && p.name == "quality") && !(colors && is_color(p.name))) out.push_back(p);
+    if (!(quality && p.name == "quality") && !(colors && is_color(p.name)) && !(texcoords && p.name == "texcoord"))
+      out.push_back(p);
   return out;
 }
 
 PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
   const std::size_t nv = mesh.positions.size();
-  if (fields.positions.size() != nv || !fits(fields.quality, nv) || !fits(fields.colors, nv))
+  const bool moved = !fields.positions.empty();
+  if (!fits(fields.positions, nv) || !fits(fields.quality, nv) || !fits(fields.colors, nv))
     throw Error("internal error: output fields do not have one value per vertex");
   PlyElement e;
   e.name = "vertex";
   e.count = nv;
+  const std::vector<std::array<double, 3>>& positions = moved ? fields.positions : mesh.positions;
   for (std::size_t k = 0; k < 3; ++k) {
     std::vector<double> c(nv);
-    for (std::size_t i = 0; i < nv; ++i) c[i] = fields.positions[i][k];
-    e.properties.push_back(scalar_property(std::string(1, "xyz"[k]), ScalarType::Float64, c));
+    for (std::size_t i = 0; i < nv; ++i) c[i] = positions[i][k];
+    e.properties.push_back(scalar_property(std::string(1, "xyz"[k]),
+                                           moved ? ScalarType::Float64 : mesh.position_types[k], c));
   }
-  const bool normals = has_normals(mesh.vertex_extra);
+  const bool normals = moved && has_normals(mesh.vertex_extra);
   std::vector<std::array<double, 3>> n;
-  for (const PlyProperty& p : kept(mesh.vertex_extra, !fields.quality.empty(), !fields.colors.empty())) {
+  for (const PlyProperty& p : kept(mesh.vertex_extra, !fields.quality.empty(), !fields.colors.empty(), false)) {
     e.properties.push_back(p);
     const int axis = p.name == "nx" ? 0 : p.name == "ny" ? 1 : p.name == "nz" ? 2 : -1;
     if (axis < 0 || p.is_list || !normals) continue;
@@ -99,26 +120,18 @@ PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
 }
 
 PlyElement face_element(const MeshFile& mesh, const OutputFields& fields) {
-  if (!fits(fields.face_quality, mesh.triangles.size()) || !fits(fields.face_colors, mesh.triangles.size()))
+  const std::size_t nf = mesh.triangles.size();
+  if (!fits(fields.texcoords, nf) || !fits(fields.face_quality, nf) || !fits(fields.face_colors, nf))
     throw Error("internal error: output fields do not have one value per face");
   PlyElement e;
   e.name = "face";
-  e.count = mesh.triangles.size();
-  PlyProperty indices;
-  indices.name = "vertex_indices";
-  indices.is_list = true;
-  indices.count_type = ScalarType::UInt8;
-  indices.type = ScalarType::Int32;
-  indices.offsets.reserve(e.count + 1);
-  indices.offsets.push_back(0);
-  for (const std::array<int, 3>& t : mesh.triangles) {
-    indices.values.insert(indices.values.end(), t.begin(), t.end());
-    indices.offsets.push_back(indices.values.size());
-  }
-  e.properties.push_back(std::move(indices));
+  e.count = nf;
+  e.properties.push_back(list_property("vertex_indices", ScalarType::Int32, mesh.triangles));
   const std::vector<PlyProperty> extra =
-      kept(mesh.face_extra, !fields.face_quality.empty(), !fields.face_colors.empty());
+      kept(mesh.face_extra, !fields.face_quality.empty(), !fields.face_colors.empty(), !fields.texcoords.empty());
   e.properties.insert(e.properties.end(), extra.begin(), extra.end());
+  if (!fields.texcoords.empty())
+    e.properties.push_back(list_property("texcoord", ScalarType::Float32, fields.texcoords));
   if (!fields.face_quality.empty())
     e.properties.push_back(scalar_property("quality", ScalarType::Float64, fields.face_quality));
   if (!fields.face_colors.empty()) add_colors(e, fields.face_colors);

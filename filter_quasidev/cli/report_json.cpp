@@ -1,12 +1,10 @@
 #include "report_json.h"
 
-#include <nlohmann/json.hpp>
+#include "report_text.h"
 
 namespace qd::cli {
 
 namespace {
-
-using Json = nlohmann::ordered_json;  // keys in the order written
 
 Json figures(const Figures& f) {
   return {{"g_abd", f.g_abd},       {"angle_defect", f.angle_defect}, {"max_abs_k", f.max_abs_k},
@@ -97,9 +95,7 @@ std::string report_json(const Result& result, const ReportContext& c) {
                        {"warnings", result.warnings},
                        {"notes", c.notes},
                        {"log", result.log}};
-  // NaN and infinities are written as null; bytes that are not UTF-8 (file names, PLY property
-  // names in notes) as U+FFFD, so the report is always valid JSON.
-  return report.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  return report_text(report);
 }
 
 }  // namespace qd::cli

@@ -12,7 +12,7 @@
 namespace qd::cli {
 
 struct ReportContext {
-  const Options& options;
+  const ApproximateOptions& options;
   const Params& params;  // as passed to the engine (tolerances in model units)
   int vertices;
   int faces;

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "mesh_problem.h"
+#include "mesh_geometry.h"
 #include "ply_mesh.h"
 #include "segment/patch_color.h"
 
@@ -27,8 +27,8 @@ std::vector<char> selected_faces(const meshio::MeshFile& mesh) {
 
 SegmentProblem make_segment_problem(const meshio::MeshFile& mesh, const SegmentOptions& o) {
   SegmentProblem problem;
-  mesh_arrays(mesh, problem.V, problem.F);
-  if (o.keep_patches) problem.patch = mesh.patch;
+  set_geometry(mesh, problem);
+  if (!o.keep_patches) problem.patch.clear();
   problem.selected = selected_faces(mesh);
   problem.params = o.params;
   return problem;
@@ -39,7 +39,6 @@ meshio::OutputFields segment_output_fields(const SegmentResult& result, const me
     throw Error("internal error: the segmentation returned " + std::to_string(result.patch.size()) +
                 " patch ids for " + std::to_string(mesh.triangles.size()) + " faces");
   meshio::OutputFields fields;
-  fields.positions = mesh.positions;
   fields.face_quality.assign(result.patch.begin(), result.patch.end());
   fields.face_colors.reserve(result.patch.size());
   for (int id : result.patch) fields.face_colors.push_back(patch_color(id));

@@ -2,7 +2,7 @@
 // make_segment_problem: MeshFile + SegmentOptions -> qd::SegmentProblem (positions, triangles,
 //   the file's patch ids when --keep-patches, selected faces from the PLY face `flags`
 //   selection bit, parameters).
-// segment_output_fields: the input positions unchanged, per-face quality = patch id and a colour
+// segment_output_fields: the input's vertices unchanged, per-face quality = patch id and a colour
 //   per patch (qd::patch_color). Throws qd::Error when the result has the wrong size.
 #pragma once
 

@@ -1,8 +1,8 @@
-#include "segment_options.h"
-
+// The options of `quasidev segment`, with their defaults from qd::SegmentParams.
 #include <CLI/CLI.hpp>
 
 #include "option_values.h"
+#include "subcommand_options.h"
 
 namespace qd::cli {
 
@@ -20,24 +20,19 @@ double angle(const std::string& option, const std::string& text, double hi) {
 
 void add_segment_options(CLI::App& job, SegmentOptions& o) {
   SegmentParams& p = o.params;
-  job.add_option("INPUT", o.input,
-                 "PLY (ascii or binary), OBJ or OFF. With --keep-patches, the\n"
-                 "PLY face `quality` (rounded; else an integer face `patch`) or\n"
-                 "OBJ `g`/`o` groups are the existing patches. PLY faces whose\n"
-                 "`flags` have the selection bit 0x20 are selected: the border\n"
-                 "between selected and other faces is kept. Polygons are\n"
-                 "fan-triangulated (said on stderr).")
-      ->required()
-      ->type_name("");
-  job.add_option("OUTPUT", o.output,
-                 "binary little-endian PLY: same vertices, faces and order, every\n"
-                 "input property and element unchanged (x y z written as double)\n"
-                 "except the face `quality` = patch id 0..k-1 and a face `red\n"
-                 "green blue alpha` colour per patch, which replace the input's.\n"
-                 "Written atomically: an existing OUTPUT is left untouched on\n"
-                 "error.")
-      ->required()
-      ->type_name("");
+  add_job_options(job, o,
+                  "PLY (ascii or binary), OBJ or OFF. With --keep-patches, the\n"
+                  "PLY face `quality` (rounded; else an integer face `patch`) or\n"
+                  "OBJ `g`/`o` groups are the existing patches. PLY faces whose\n"
+                  "`flags` have the selection bit 0x20 are selected: the border\n"
+                  "between selected and other faces is kept. Polygons are\n"
+                  "fan-triangulated (said on stderr).",
+                  "binary little-endian PLY: the input unchanged (same vertices,\n"
+                  "faces, order and every property) except the face `quality` =\n"
+                  "patch id 0..k-1 and a face `red green blue alpha` colour per\n"
+                  "patch, which replace the input's. Written atomically: an\n"
+                  "existing OUTPUT is left untouched on error.",
+                  "write every patch's figures (faces, area, proxy, fit error,\nboundary loops, disk) as JSON");
   valued(job, "--max-error", "DEG",
          "largest angle between a face normal and its patch's fitted\ncone, degrees, in (0, 90]" +
              by_default(p.max_error_deg),
@@ -64,11 +59,6 @@ void add_segment_options(CLI::App& job, SegmentOptions& o) {
   valued(job, "--threads", "N",
          "threads; 0 = all cores; the result does not depend on it\n" + by_default(p.threads),
          [&p](const std::string& v) { p.threads = whole_number("--threads", v, 0, 1024, "0 (all cores)"); });
-  valued(job, "--report", "FILE.json",
-         "write every patch's figures (faces, area, proxy, fit error,\nboundary loops, disk) as JSON",
-         [&o](const std::string& v) { o.report = v; });
-  flag(job, "--overwrite-input", "allow OUTPUT to be the INPUT file", [&o] { o.overwrite_input = true; });
-  add_progress_flags(job, o.progress, o.quiet);
 }
 
 }  // namespace qd::cli

@@ -1,12 +1,23 @@
 #include "filter_table.h"
 
+#include "flatten_adapter.h"
 #include "quasidev_adapter.h"
 #include "segment_adapter.h"
 
 namespace qdml {
 
+double number_value(const ParamValues& values, const std::string& name, double fallback) {
+  const auto it = values.find(name);
+  return it == values.end() ? fallback : std::get<double>(it->second);
+}
+
+std::string text_value(const ParamValues& values, const std::string& name) {
+  const auto it = values.find(name);
+  return it == values.end() ? std::string() : std::get<std::string>(it->second);
+}
+
 const std::vector<FilterSpec>& filter_table() {
-  static const std::vector<FilterSpec> table = {approximate_filter(), segment_filter()};
+  static const std::vector<FilterSpec> table = {approximate_filter(), segment_filter(), flatten_filter()};
   return table;
 }
 

@@ -21,7 +21,9 @@ namespace qdml {
 
 // One user parameter. Every generation declares exactly these, in this order, with these names
 // and types, so one .mlx serves meshlabserver 2020.09 and pymeshlab 2025.07.
-enum class ParamKind { Float, Int, Bool, Enum };
+// SaveFile: the path of a file the filter writes (MeshLab's file-save parameter, with a Browse
+// button in the dialog; .mlx type RichSaveFile in both generations); empty = none.
+enum class ParamKind { Float, Int, Bool, Enum, SaveFile };
 struct ParamSpec {
   std::string name;                // snake_case, = pymeshlab keyword
   std::string label;               // dialog label
@@ -29,13 +31,21 @@ struct ParamSpec {
   ParamKind kind = ParamKind::Float;
   double value = 0;                // default: the float, the int, 0/1, or the enum index
   std::vector<std::string> items;  // Enum only: item texts (pymeshlab accepts them by text)
+  std::string extension;           // SaveFile only: the file type, e.g. ".svg" (default path "")
 };
 
-// The user's values by parameter name, as ParamSpec::value: floats, ints, 0/1, enum indices.
-using ParamValues = std::map<std::string, double>;
+// The user's value of one parameter: a number as ParamSpec::value (float, int, 0/1, enum
+// index), or the text of a SaveFile path.
+using ParamValue = std::variant<double, std::string>;
+using ParamValues = std::map<std::string, ParamValue>;
+
+// The number given for `name`, or `fallback` when values do not hold it.
+double number_value(const ParamValues& values, const std::string& name, double fallback);
+// The text given for `name` (a SaveFile path), or "" when values do not hold it.
+std::string text_value(const ParamValues& values, const std::string& name);
 
 // MeshLab filter classes (menus, search) and parts of a mesh a filter changes or writes.
-enum class FilterCategory { Smoothing, Quality, VertexColoring, FaceColoring };
+enum class FilterCategory { Smoothing, Quality, VertexColoring, FaceColoring, Texture };
 enum class MeshPart {
   VertexPositions,
   VertexNormals,
@@ -43,13 +53,14 @@ enum class MeshPart {
   VertexQuality,
   VertexColor,
   FaceQuality,
-  FaceColor
+  FaceColor,
+  WedgeTexCoord
 };
 
 // One figure a filter returns (pymeshlab: a value of the returned dict).
 using Figure = std::variant<int, double, std::vector<double>>;
 
-// The list figure of field(item) for every item (per patch, in id order).
+// A figure with one entry per item (per patch, per piece): field(item) for each, as doubles.
 template <typename Item, typename Field>
 Figure figure_list(const std::vector<Item>& items, Field field) {
   std::vector<double> v;
@@ -66,20 +77,6 @@ struct FilterRun {
   std::map<std::string, Figure> figures;  // on success
   std::vector<MeshPart> written;          // on success: the per-element data the run wrote
 };
-
-// The FilterRun of an adapter's outcome (fields ok, error, log, result): on success with
-// figures(result) and `written`.
-template <typename Outcome, typename Figures>
-FilterRun filter_run(Outcome& outcome, Figures figures, std::vector<MeshPart> written) {
-  FilterRun out;
-  out.ok = outcome.ok;
-  out.error = std::move(outcome.error);
-  out.log = std::move(outcome.log);
-  if (!out.ok) return out;
-  out.figures = figures(outcome.result);
-  out.written = std::move(written);
-  return out;
-}
 
 struct FilterSpec {
   std::string name;         // menu text = .mlx filter name

@@ -1,6 +1,7 @@
 // What every plugin class does with filter_table(), written once against the names the MeshLab
 // 2020.09 and 2025.07 APIs share (RichParameterList, RichFloat/Int/Bool/Enum, MeshModel::MM_*,
-// the FilterClass bits). Included by filter_plugin_2020.cpp and filter_plugin_2025.cpp after
+// the FilterClass bits) and the one they spell differently (the file-save parameter:
+// RichSaveFile in 2020.09, RichFileSave in 2025.07; "RichSaveFile" in .mlx files of both). Included by filter_plugin_2020.cpp and filter_plugin_2025.cpp after
 // their MeshLab interface header, so each compiles it against its own generation.
 #pragma once
 
@@ -8,6 +9,12 @@
 #include <vector>
 
 #include "filter_table.h"
+
+#if __has_include(<common/parameters/rich_parameter/rich_file_save.h>)
+using RichSaveFileParameter = RichFileSave;  // MeshLab 2025.07
+#else
+using RichSaveFileParameter = RichSaveFile;  // MeshLab 2020.09
+#endif
 
 namespace qdml {
 
@@ -36,6 +43,7 @@ typename Interface::FilterClass filter_class(const FilterSpec& f) {
       case FilterCategory::Quality: bits |= Interface::Quality; break;
       case FilterCategory::VertexColoring: bits |= Interface::VertexColoring; break;
       case FilterCategory::FaceColoring: bits |= Interface::FaceColoring; break;
+      case FilterCategory::Texture: bits |= Interface::Texture; break;
     }
   return typename Interface::FilterClass(bits);
 }
@@ -51,6 +59,7 @@ inline int mesh_mask(const std::vector<MeshPart>& parts) {
       case MeshPart::VertexColor: mask |= MeshModel::MM_VERTCOLOR; break;
       case MeshPart::FaceQuality: mask |= MeshModel::MM_FACEQUALITY; break;
       case MeshPart::FaceColor: mask |= MeshModel::MM_FACECOLOR; break;
+      case MeshPart::WedgeTexCoord: mask |= MeshModel::MM_WEDGTEXCOORD; break;
     }
   return mask;
 }
@@ -71,6 +80,9 @@ inline void add_parameters(const FilterSpec& f, const CMeshO& m, RichParameterLi
         list.addParam(RichEnum(name, static_cast<int>(p.value), items, label, tip));
         break;
       }
+      case ParamKind::SaveFile:
+        list.addParam(RichSaveFileParameter(name, QString(), qs(p.extension), label, tip));
+        break;
     }
   }
 }
@@ -84,9 +96,10 @@ inline ParamValues read_values(const FilterSpec& f, const CMeshO& m,
     if (!params.hasParameter(name)) continue;
     switch (p.kind) {
       case ParamKind::Float: values[p.name] = static_cast<double>(params.getFloat(name)); break;
-      case ParamKind::Int: values[p.name] = params.getInt(name); break;
+      case ParamKind::Int: values[p.name] = static_cast<double>(params.getInt(name)); break;
       case ParamKind::Bool: values[p.name] = params.getBool(name) ? 1.0 : 0.0; break;
-      case ParamKind::Enum: values[p.name] = params.getEnum(name); break;
+      case ParamKind::Enum: values[p.name] = static_cast<double>(params.getEnum(name)); break;
+      case ParamKind::SaveFile: values[p.name] = params.getSaveFileName(name).toStdString(); break;
     }
   }
   return values;

@@ -13,7 +13,6 @@
 #include "approximate/validate.h"
 #include "common/mesh.h"
 #include "common/quality_range.h"
-#include "guarded_run.h"
 #include "printf_string.h"
 #include "result_figures.h"
 
@@ -106,10 +105,9 @@ std::string filter_info() {
 // written (the colour only when asked for).
 FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
   const Settings settings = settings_from_values(values);
-  Outcome outcome = apply(m, has_face_quality, settings, cb);
   std::vector<MeshPart> written = {MeshPart::VertexQuality};
   if (settings.colorize) written.push_back(MeshPart::VertexColor);
-  return filter_run(outcome, result_figures, written);
+  return filter_run(apply(m, has_face_quality, settings, cb), result_figures, std::move(written));
 }
 
 }  // namespace
@@ -128,17 +126,17 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
               "mode), in model units. The mesh's average edge length AE = %g; 0 means 1 AE. "
               "Smaller keeps the shape closer but leaves more curvature.",
               ae),
-       ParamKind::Float, ae, {}},
+       ParamKind::Float, ae, {}, ""},
       {"tolerance_mode", "Tolerance mode",
        "step: the tolerance caps each iteration's move (the paper); total: it caps the whole "
        "move from the original position.",
-       ParamKind::Enum, index(d.tolerance_mode), {"step", "total"}},
+       ParamKind::Enum, index(d.tolerance_mode), {"step", "total"}, ""},
       {"max_iter", "Max iterations", "Stop after this many iterations per patch.", ParamKind::Int,
-       static_cast<double>(d.max_iter), {}},
+       static_cast<double>(d.max_iter), {}, ""},
       {"weight", "Developability weight",
        "w of the paper's Eq. (8): how strongly faces are turned towards their target normals "
        "against keeping their shape. Larger removes more curvature per iteration but moves more.",
-       ParamKind::Float, d.weight, {}},
+       ParamKind::Float, d.weight, {}, ""},
       {"developability", "Developability term",
        "Which rows make each patch developable. curve: the paper's target normals on the curve "
        "fitted to the patch's Gauss image (best for cones, cylinders, lampshades, sleeves); "
@@ -146,54 +144,51 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
        "to zero (beyond the paper; best for draped, wrinkled panels whose Gauss image is a "
        "blob, not a curve); both; auto: per patch, curve where the curve fits within 5 degrees, "
        "else defect (beyond the paper). The log says which each patch used and why.",
-       ParamKind::Enum, index(d.developability), {"curve", "defect", "both", "auto"}},
+       ParamKind::Enum, index(d.developability), {"curve", "defect", "both", "auto"}, ""},
       {"defect_weight", "Angle-defect weight",
        "w_d of the angle-defect rows against keeping the shape; scale- and density-invariant. "
        "Larger removes more curvature per iteration but moves the surface more.",
-       ParamKind::Float, d.defect_weight, {}},
+       ParamKind::Float, d.defect_weight, {}, ""},
       {"anchor", "Anchor stiffness",
        "alpha of the soft anchors (paper Eq. 15): how strongly vertices near fixed vertices resist "
        "moving; the stiffness fades with the distance (in AE) from fixed vertices.",
-       ParamKind::Float, d.anchor, {}},
+       ParamKind::Float, d.anchor, {}, ""},
       {"use_patches", "Patches from face quality",
        "On: faces with the same per-face quality (rounded) form one patch, each made "
        "developable on its own. Off, or without per-face quality: the whole mesh is one patch.",
-       ParamKind::Bool, flag(ds.use_patches), {}},
+       ParamKind::Bool, flag(ds.use_patches), {}, ""},
       {"seam_mode", "Seams",
        "fixed: vertices shared by two patches do not move (the paper); free: all patches are "
        "solved together and seam vertices move too, staying shared so no crack opens.",
-       ParamKind::Enum, index(d.seams), {"fixed", "free"}},
+       ParamKind::Enum, index(d.seams), {"fixed", "free"}, ""},
       {"keep_boundary", "Keep boundary",
        "Keep the vertices of the open mesh boundary fixed.", ParamKind::Bool,
-       flag(d.keep_boundary), {}},
+       flag(d.keep_boundary), {}, ""},
       {"target_mode", "Target normals",
        "fixed: fit the Gauss-image curve once (the paper); reproject: project the current normals "
        "onto it every iteration; refit: refit the curve every iteration (slower, strongest).",
-       ParamKind::Enum, index(d.targets), {"fixed", "reproject", "refit"}},
+       ParamKind::Enum, index(d.targets), {"fixed", "reproject", "refit"}, ""},
       {"stop_abd", "Stop at ratio_ABD (%)",
        "Stop when an iteration lowers the total absolute Gaussian curvature G_ABD by less than "
        "this percentage (paper Eq. 19).",
-       ParamKind::Float, d.stop_abd, {}},
+       ParamKind::Float, d.stop_abd, {}, ""},
       {"stop_obd", "Stop at ratio_OBD (%)",
        "Stop when an iteration lowers the orientation developability D(P) by less than this "
        "percentage (paper Eq. 20).",
-       ParamKind::Float, d.stop_obd, {}},
+       ParamKind::Float, d.stop_obd, {}, ""},
       {"output_quality", "Output quality",
        "What the per-vertex quality holds afterwards: the Gaussian curvature after the filter, "
        "or each vertex's displacement in model units.",
-       ParamKind::Enum, flag(ds.displacement_quality), {"curvature", "displacement"}},
+       ParamKind::Enum, flag(ds.displacement_quality), {"curvature", "displacement"}, ""},
       {"colorize", "Colorize", "Colour the vertices by a ramp on the output quality.",
-       ParamKind::Bool, flag(ds.colorize), {}},
+       ParamKind::Bool, flag(ds.colorize), {}, ""},
   };
 }
 
 Settings settings_from_values(const ParamValues& values) {
   Settings s;
   qd::Params& p = s.params;
-  const auto get = [&](const char* name, double fallback) {
-    const auto it = values.find(name);
-    return it == values.end() ? fallback : it->second;
-  };
+  const auto get = [&](const char* name, double fallback) { return number_value(values, name, fallback); };
   const auto choice = [&](const char* name, auto fallback) {
     return static_cast<decltype(fallback)>(
         static_cast<int>(std::lround(get(name, static_cast<int>(fallback)))));
@@ -217,16 +212,13 @@ Settings settings_from_values(const ParamValues& values) {
 }
 
 Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBackPos* cb) {
-  Outcome out;
-  out.error = guarded_run([&] {
+  return guarded_run<qd::Result>([&](Outcome& out) {
     EngineMesh e;
     const qd::Problem problem = make_problem(m, has_face_quality, s, out.log, e);
     out.result = qd::approximate(problem, progress_of(cb));
     write_back(m, e, out.result, s);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
   });
-  out.ok = out.error.empty();
-  return out;
 }
 
 FilterSpec approximate_filter() {

@@ -12,6 +12,7 @@
 #include "approximate/params.h"
 #include "approximate/result.h"
 #include "filter_table.h"
+#include "run_outcome.h"
 
 namespace qdml {
 
@@ -36,12 +37,7 @@ struct Settings {
 // indices). A name missing from `values` keeps its default.
 Settings settings_from_values(const ParamValues& values);
 
-struct Outcome {
-  bool ok = false;
-  std::string error;              // the reason, written for the user, when !ok
-  std::vector<std::string> log;   // lines to log (also on failure: what was read from the mesh)
-  qd::Result result;              // the engine's result when ok
-};
+using Outcome = RunOutcome<qd::Result>;
 
 // Reads m (positions, faces; patch id per face = rounded per-face quality when has_face_quality
 // and s.use_patches, else one patch; constrained = selected vertices; deleted elements skipped),

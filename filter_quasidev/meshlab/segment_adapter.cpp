@@ -6,7 +6,6 @@
 
 #include "engine_mesh.h"  // first: MeshLab's mesh type
 
-#include "guarded_run.h"
 #include "printf_string.h"
 #include "segment/patch_color.h"
 #include "segment/segment.h"
@@ -52,8 +51,8 @@ std::string filter_info() {
 // The table's run: the values as SegmentSettings, apply_segment(), and on success the figures.
 FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
   const SegmentSettings settings = segment_settings_from_values(values);
-  SegmentOutcome outcome = apply_segment(m, has_face_quality, settings, cb);
-  return filter_run(outcome, segment_figures, {MeshPart::FaceQuality, MeshPart::FaceColor});
+  return filter_run(apply_segment(m, has_face_quality, settings, cb), segment_figures,
+                    {MeshPart::FaceQuality, MeshPart::FaceColor});
 }
 
 }  // namespace
@@ -67,30 +66,30 @@ std::vector<ParamSpec> segment_parameter_specs() {
        "The largest angle between a face normal and its patch's fitted cone, cylinder or plane: "
        "patches are split until every face is within it. Smaller gives more, flatter patches "
        "(20: pieces meeting at 40 degrees or more are told apart).",
-       ParamKind::Float, d.max_error_deg, {}},
+       ParamKind::Float, d.max_error_deg, {}, ""},
       {"min_faces", "Smallest patch (faces)",
        "No patch has fewer faces (unless the part between kept borders is smaller). A part too "
        "curved to fit at this size becomes one patch over the limit, and the log says so.",
-       ParamKind::Int, static_cast<double>(d.min_faces), {}},
+       ParamKind::Int, static_cast<double>(d.min_faces), {}, ""},
       {"min_area", "Smallest patch (area fraction)",
        "When above 0, no patch has less than this fraction of the mesh area.", ParamKind::Float,
-       d.min_area, {}},
+       d.min_area, {}, ""},
       {"target_patches", "Target patch count",
        "The number of patches wanted; 0 = as many as the fit needs. More are merged (best "
        "fitting first, even over the limit), fewer are split.",
-       ParamKind::Int, static_cast<double>(d.target_patches), {}},
+       ParamKind::Int, static_cast<double>(d.target_patches), {}, ""},
       {"keep_patches", "Keep existing patches",
        "On: the per-face quality holds existing patch ids; each existing patch whose faces fit "
        "within the largest fit error is kept whole, only the others are split.",
-       ParamKind::Bool, flag(ds.keep_patches), {}},
+       ParamKind::Bool, flag(ds.keep_patches), {}, ""},
       {"selection_border", "Keep selection border",
        "On: no patch crosses the border between selected and unselected faces.", ParamKind::Bool,
-       flag(ds.selection_border), {}},
+       flag(ds.selection_border), {}, ""},
       {"crease_deg", "Crease angle (deg)",
        "Where the mesh is split, edges whose two faces' normals differ by more than this stay "
        "patch borders, so no patch folds over a sharp edge; 180 = none. (A part that fits one "
        "cone as a whole, such as two planes meeting at a fold, is kept whole.)",
-       ParamKind::Float, d.crease_deg, {}},
+       ParamKind::Float, d.crease_deg, {}, ""},
   };
 }
 
@@ -98,8 +97,7 @@ SegmentSettings segment_settings_from_values(const ParamValues& values) {
   SegmentSettings s;
   qd::SegmentParams& p = s.params;
   const auto get = [&](const char* name, double fallback) {
-    const auto it = values.find(name);
-    return it == values.end() ? fallback : it->second;
+    return number_value(values, name, fallback);
   };
   const auto whole = [&](const char* name, int fallback) {
     return static_cast<int>(std::lround(get(name, fallback)));
@@ -116,8 +114,7 @@ SegmentSettings segment_settings_from_values(const ParamValues& values) {
 
 SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const SegmentSettings& s,
                              vcg::CallBackPos* cb) {
-  SegmentOutcome out;
-  out.error = guarded_run([&] {
+  return guarded_run<qd::SegmentResult>([&](SegmentOutcome& out) {
     qd::SegmentProblem problem;
     const EngineMesh e = read_geometry(m, problem.V, problem.F);
     if (s.keep_patches) problem.patch = read_patch_ids(m, e, has_face_quality, true, out.log);
@@ -131,8 +128,6 @@ SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const SegmentSett
     write_back(m, e, out.result);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
   });
-  out.ok = out.error.empty();
-  return out;
 }
 
 FilterSpec segment_filter() {

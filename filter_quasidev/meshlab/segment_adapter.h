@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "filter_table.h"
+#include "run_outcome.h"
 #include "segment/segment_params.h"
 #include "segment/segment_result.h"
 
@@ -30,12 +31,7 @@ struct SegmentSettings {
 std::vector<ParamSpec> segment_parameter_specs();
 SegmentSettings segment_settings_from_values(const ParamValues& values);
 
-struct SegmentOutcome {
-  bool ok = false;
-  std::string error;             // the reason, written for the user, when !ok
-  std::vector<std::string> log;  // lines to log (also on failure)
-  qd::SegmentResult result;      // when ok
-};
+using SegmentOutcome = RunOutcome<qd::SegmentResult>;
 
 // Reads m (live vertices and faces; patch ids from the per-face quality when has_face_quality
 // and s.keep_patches; selected faces when s.selection_border), runs the segmentation and ONLY on

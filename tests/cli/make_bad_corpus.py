@@ -1,6 +1,8 @@
 """Generates the bad-input corpus of issue 6 (hostile and odd inputs for `quasidev`).
 
-Each case is (name, file bytes, extra arguments, expectation):
+Each case is (name, file bytes, extra arguments, expectation); cases() are for `quasidev
+approximate` and the approximation filter, flatten_cases() the same files for `quasidev flatten`
+and the flattening filter, with the flattening's own bad parameters:
   "fail"  — the command must exit 1 (bad input) or 2 (bad arguments) with one stderr line;
   "odd"   — merely odd input: success, or a clean one-line failure; never a crash.
 warned_cases() says which odd cases succeed with a warning and which vertices must stay put.
@@ -243,13 +245,68 @@ _PLUGIN_PARAMETER = {"--tolerance": ("tolerance", float), "--max-iter": ("max_it
                      "--developability": ("developability", DEVELOPABILITY.index)}
 
 
-def plugin_parameters(args):
-    """{filter parameter name: value} for a case's command-line arguments."""
+def plugin_parameters(args, table=None):
+    """{filter parameter name: value} for a case's command-line arguments (table: option ->
+    (parameter, type); default: the approximation's)."""
     out = {}
     for option, value in zip(args[::2], args[1::2]):
-        name, kind = _PLUGIN_PARAMETER[option]
+        name, kind = (table or _PLUGIN_PARAMETER)[option]
         out[name] = kind(value)
     return out
+
+
+def flatten_cases():
+    """The corpus for the flattening: every file of cases() that needs no approximation option
+    (closed_sphere's file is closed_sphere_defect_rows'), then its own bad parameters on the
+    good grid. Meshes the approximation refuses but that can be flattened (a single triangle,
+    every face its own patch, every vertex selected, a closed sphere, which is cut open) are
+    flattened, with their distortion reported."""
+    good = ply_ascii(*grid(12))
+    out = [(name, data, [], expect) for name, data, args, expect in cases() if not args]
+    out += [("negative_tolerance", good, ["--tolerance", "-1"], "fail"),
+            ("tolerance_one", good, ["--tolerance", "1"], "fail"),
+            ("negative_iterations", good, ["--max-iter", "-1"], "fail"),
+            ("nan_gap", good, ["--gap", "nan"], "fail"),
+            ("negative_notch_spacing", good, ["--notch-spacing", "-1"], "fail")]
+    return out
+
+
+# The flattening filter's parameters for the options of flatten_cases().
+# The segmentation's own bad value of the same kind for each approximation option of cases()
+# (None: the option only steers the approximation and is dropped), and its filter parameters.
+_SEGMENT_OPTION = {("--tolerance", "-1"): ["--max-error", "-1"], ("--max-iter", "0"): ["--min-faces", "0"],
+                   ("--weight", "nan"): ["--crease", "nan"], ("--developability", "curve"): []}
+SEGMENT_PARAMETERS = {"--max-error": ("max_error_deg", float), "--min-faces": ("min_faces", int),
+                      "--crease": ("crease_deg", float)}
+
+
+def segment_cases():
+    """The corpus for the segmentation: every case of cases(), its options replaced by the
+    segmentation's (_SEGMENT_OPTION)."""
+    return [(name, data, [word for pair in zip(args[::2], args[1::2]) for word in _SEGMENT_OPTION[pair]],
+             expect) for name, data, args, expect in cases()]
+
+
+FLATTEN_PARAMETERS = {"--tolerance": ("tolerance", float), "--max-iter": ("max_iter", int),
+                      "--gap": ("gap", float), "--notch-spacing": ("notch_spacing", float)}
+
+# What the flattening filter does with each of flatten_cases(), as PLUGIN_OUTCOMES.
+FLATTEN_PLUGIN_OUTCOMES = {
+    **{name: PLUGIN_OUTCOMES[name] for name in (
+        "empty", "header_only", "truncated_binary", "wrong_vertex_count", "index_out_of_range",
+        "nan_coordinates", "inf_coordinates", "zero_area_faces", "duplicate_faces",
+        "inconsistent_orientation")},
+    **{name: None for name in (
+        "non_manifold_vertex", "isolated_vertices", "single_triangle", "every_face_own_patch",
+        "patch_all_selected", "closed_sphere_defect_rows", "flat_patch", "huge_coordinates",
+        "tiny_coordinates", "bumpy_cylinder", "non_manifold_edge", "polo_placket",
+        "panels_with_scraps", "hundred_thousand_patches")},
+    "negative_tolerance": r"ARAP tolerance is -1: it is a relative change of the energy",
+    "tolerance_one": r"ARAP tolerance is 1: it is a relative change of the energy",
+    "negative_iterations": r"maximum number of ARAP iterations is -1: use a value from 0",
+    "nan_gap": r"gap between pieces is nan: use a distance >= 0",
+    "negative_notch_spacing": r"notch spacing is -1: use a distance >= 0",
+}
 
 
 def ply_binary_quality(V, F):

@@ -1,7 +1,10 @@
-"""Runs `quasidev` on every case of the generated bad-input corpus (make_bad_corpus.py).
+"""Runs `quasidev approximate`, `quasidev segment` and `quasidev flatten` on every case of the
+generated bad-input corpus (make_bad_corpus.py: cases(), segment_cases() and flatten_cases()).
 
-"fail" cases: exit 1 or 2 with one stderr line, no output, and an existing output untouched.
-"odd" cases: success with a complete output (same face count), or such a clean failure.
+"fail" cases: exit 1 or 2 with one stderr line, no output, an existing output untouched and no
+report or pattern file written.
+"odd" cases: success with a complete output (same face count; from the segmentation one patch
+id per face, numbered from 0), or such a clean failure.
 Never a signal, never a partial file.
 """
 import json
@@ -18,37 +21,50 @@ from test_quasidev_cli import BINARY, run  # noqa: E402
 
 CASES = make_bad_corpus.cases()
 WARNED = make_bad_corpus.warned_cases()
+# (subcommand, case, the files it writes besides OUTPUT)
+RUNS = [("approximate", c, ["--report"]) for c in CASES] + \
+       [("segment", c, ["--report"]) for c in make_bad_corpus.segment_cases()] + \
+       [("flatten", c, ["--report", "--svg", "--dxf"]) for c in make_bad_corpus.flatten_cases()]
 
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 
 
-@pytest.mark.parametrize("case", CASES, ids=[c[0] for c in CASES])
-def test_corpus_case(case, tmp_path):
+@pytest.mark.parametrize("job,case,extra", RUNS, ids=[f"{j}-{c[0]}" for j, c, _ in RUNS])
+def test_corpus_case(job, case, extra, tmp_path):
     name, data, args, expect = case
     src = tmp_path / f"{name}.ply"
     src.write_bytes(data)
     out = tmp_path / "out.ply"
     out.write_bytes(b"precious")
-    r = run(src, out, *args, timeout=600)
+    files = {option: tmp_path / f"written{option.replace('-', '_')}" for option in extra}
+    r = run(job, src, out, *args, "--quiet", *[a for o, f in files.items() for a in (o, f)],
+            timeout=600)
     assert r.returncode >= 0, f"killed by signal {-r.returncode}: {r.stderr}"
+    errors = [line for line in r.stderr.splitlines() if not line.startswith("quasidev: warning: ")]
     if expect == "fail" or r.returncode != 0:
         assert r.returncode in (1, 2), r.stderr
-        lines = r.stderr.splitlines()
-        assert len(lines) == 1 and lines[0].startswith("quasidev: error: "), r.stderr
+        assert len(errors) == 1 and errors[0].startswith("quasidev: error: "), r.stderr
         assert out.read_bytes() == b"precious"
+        assert not [f for f in files.values() if f.exists()]
     else:
+        assert errors == [], r.stderr
         res, _ = read_ply(out)
         inp_faces = data.count(b"\n3 ") if data.startswith(b"ply\nformat ascii") else None
         assert element(res, "vertex")[1] > 0
         if inp_faces is not None:
             assert element(res, "face")[1] == inp_faces
+        if job == "segment":
+            ids = column(res, "face", "quality")
+            assert len(ids) == element(res, "face")[1] and all(q == int(q) >= 0 for q in ids)
+            assert sorted(set(ids)) == list(range(len(set(ids))))
     assert not list(tmp_path.glob("*quasidev-tmp*"))
 
 
 def test_every_case_says_what_the_plugin_does():
-    """make_bad_corpus.PLUGIN_OUTCOMES (used by the meshlabserver and pymeshlab corpus tests)
-    covers exactly the corpus' cases."""
+    """make_bad_corpus.PLUGIN_OUTCOMES and FLATTEN_PLUGIN_OUTCOMES (used by the meshlabserver and
+    pymeshlab corpus tests) cover exactly their corpus' cases."""
     assert set(make_bad_corpus.PLUGIN_OUTCOMES) == {c[0] for c in CASES}
+    assert set(make_bad_corpus.FLATTEN_PLUGIN_OUTCOMES) == {c[0] for c in make_bad_corpus.flatten_cases()}
 
 
 def positions(path):

@@ -24,12 +24,12 @@ meshio::MeshFile square() {
   return m;
 }
 
-cli::Options options(std::vector<std::string> args) {
+cli::ApproximateOptions options(std::vector<std::string> args) {
   return cli::parse_command_line(std::move(args)).approximate;
 }
 
 TEST(MeshProblem, TolerancesAreInUnitsOfTheAverageEdge) {
-  cli::Options o = options({"a.ply", "b.ply", "--tolerance", "0.5", "--patch-tolerance",
+  cli::ApproximateOptions o = options({"a.ply", "b.ply", "--tolerance", "0.5", "--patch-tolerance",
                                        "9=2", "--max-iter", "4"});
   const Problem p = cli::make_problem(square(), o);
   const double ae = (4 + std::sqrt(2.0)) / 5;
@@ -49,7 +49,7 @@ TEST(MeshProblem, TolerancesAreInUnitsOfTheAverageEdge) {
 TEST(MeshProblem, ConstraintFileAddsToTheSelection) {
   const auto path = std::filesystem::temp_directory_path() / "qd_cli_test_constraints.txt";
   std::ofstream(path) << "3\n";
-  const cli::Options o = options({"a.ply", "b.ply", "--constraints", path.string()});
+  const cli::ApproximateOptions o = options({"a.ply", "b.ply", "--constraints", path.string()});
   EXPECT_EQ(cli::make_problem(square(), o).constrained, (std::vector<char>{0, 1, 0, 1}));
   std::filesystem::remove(path);
 }
@@ -57,7 +57,7 @@ TEST(MeshProblem, ConstraintFileAddsToTheSelection) {
 TEST(MeshProblem, DegenerateMeshIsRefused) {
   meshio::MeshFile m = square();
   for (auto& p : m.positions) p = {1, 2, 3};
-  const cli::Options o = options({"a.ply", "b.ply"});
+  const cli::ApproximateOptions o = options({"a.ply", "b.ply"});
   EXPECT_NE(error_of([&] { cli::make_problem(m, o); }).find("average edge length is 0"),
             std::string::npos);
 }
@@ -68,7 +68,7 @@ TEST(MeshProblem, OutputFieldsFollowTheQualityChoice) {
   r.V(2, 1) = 7;
   r.k_after = {-1, 0, 1};
   r.displacement = {0, 0.5, 2};
-  cli::Options o = options({"a.ply", "b.ply"});
+  cli::ApproximateOptions o = options({"a.ply", "b.ply"});
   meshio::OutputFields f = cli::output_fields(r, o, 3);
   EXPECT_EQ(f.quality, r.k_after);
   EXPECT_EQ(f.positions[2][1], 7);

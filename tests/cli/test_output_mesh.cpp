@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "atomic_file.h"
+#include "common/error.h"
 #include "constraint_file.h"
 #include "mesh_reader.h"
 #include "output_mesh.h"
@@ -64,6 +65,43 @@ TEST(OutputMesh, WithoutColoursTheInputColoursStay) {
   const PlyElement& v = out.elements[0];
   EXPECT_EQ(v.properties[v.find("red")].values, (std::vector<double>{1, 2, 3, 4, 5}));
   EXPECT_LT(v.find("alpha"), 0);
+}
+
+TEST(OutputMesh, PerFaceFieldsReplaceTheirOwnAndKeepTheVertices) {
+  PlyFile in = sample_ply();
+  in.elements[0].properties[0].type = ScalarType::Float32;  // x stays float when not moved
+  const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::BinaryLittleEndian));
+  OutputFields f;
+  f.texcoords.assign(mesh.triangles.size(), {0.5, 1, 1.5, 2, 2.5, 3});
+  f.face_quality.assign(mesh.triangles.size(), -0.25);
+  f.face_colors.assign(mesh.triangles.size(), {1, 2, 3});
+  const PlyFile out = parse_ply(serialize_ply(output_ply(mesh, f), PlyFormat::BinaryLittleEndian));
+  const PlyElement& v = out.elements[0];
+  EXPECT_EQ(v.properties[0].type, ScalarType::Float32);
+  EXPECT_EQ(v.properties[1].type, in.elements[0].properties[1].type);
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_EQ(v.properties[k].values, in.elements[0].properties[k].values);
+  EXPECT_EQ(v.properties.size(), in.elements[0].properties.size());  // nothing added per vertex
+  const PlyElement& face = out.elements[1];
+  int texcoords = 0, qualities = 0;
+  for (const PlyProperty& p : face.properties) {
+    texcoords += p.name == "texcoord";
+    qualities += p.name == "quality";
+  }
+  EXPECT_EQ(texcoords, 1);
+  EXPECT_EQ(qualities, 1);
+  const PlyProperty& uv = face.properties[face.find("texcoord")];
+  EXPECT_EQ(uv.type, ScalarType::Float32);
+  EXPECT_EQ(uv.count_type, ScalarType::UInt8);
+  EXPECT_EQ(std::vector<double>(uv.values.begin(), uv.values.begin() + 6),
+            (std::vector<double>{0.5, 1, 1.5, 2, 2.5, 3}));
+  EXPECT_EQ(face.properties[face.find("quality")].type, ScalarType::Float64);
+  EXPECT_EQ(face.properties[face.find("quality")].values, std::vector<double>(4, -0.25));
+  EXPECT_EQ(face.properties[face.find("green")].values, std::vector<double>(4, 2));
+  EXPECT_EQ(face.properties[face.find("alpha")].values, std::vector<double>(4, 255));
+  OutputFields wrong;
+  wrong.face_quality = {1.0};
+  EXPECT_THROW(output_ply(mesh, wrong), qd::Error);
 }
 
 TEST(OutputMesh, VertexNormalsAreRecomputed) {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "common/quality_range.h"
+#include "flatten/stretch_ramp.h"
 #include "options.h"
 
 namespace {
@@ -48,7 +49,22 @@ TEST(QualityRange, RampGoesRedGreenBlueAndClamps) {
   }
 }
 
-qd::cli::Options parse(std::vector<std::string> args) {
+TEST(QualityRange, SymmetricRangeCentresZeroWithAFloor) {
+  std::vector<double> q;
+  for (int i = 0; i <= 100; ++i) q.push_back(i - 70.0);  // |q| up to 70, 98th percentile 68
+  q.push_back(std::numeric_limits<double>::quiet_NaN());
+  const qd::QualityRange r = qd::symmetric_quality_range(q, 1.0);
+  EXPECT_DOUBLE_EQ(r.hi, 68.0);
+  EXPECT_DOUBLE_EQ(r.lo, -68.0);
+  EXPECT_EQ(qd::symmetric_quality_range({1e-9, -2e-9}, 0.5).hi, 0.5);
+  EXPECT_EQ(qd::symmetric_quality_range({}, 0.5).lo, -0.5);
+  // The stretch ramp: exact developments (round-off only) read green; ±0.1 % at its ends.
+  const qd::QualityRange stretch = qd::stretch_ramp_range({1e-12, -3e-12, 0});
+  EXPECT_EQ(qd::ramp_color(-3e-12, stretch), (std::array<unsigned char, 3>{0, 255, 0}));
+  EXPECT_EQ(stretch.hi, qd::kStretchRampFloor);
+}
+
+qd::cli::ApproximateOptions parse(std::vector<std::string> args) {
   return qd::cli::parse_command_line(args).approximate;
 }
 
@@ -65,7 +81,7 @@ std::string usage_error(std::vector<std::string> args) {
 }
 
 TEST(Options, DefaultsComeFromParams) {
-  const qd::cli::Options o = parse({"in.ply", "out.ply"});
+  const qd::cli::ApproximateOptions o = parse({"in.ply", "out.ply"});
   const qd::Params d;
   EXPECT_EQ(o.input, "in.ply");
   EXPECT_EQ(o.output, "out.ply");
@@ -84,7 +100,7 @@ TEST(Options, DefaultsComeFromParams) {
 }
 
 TEST(Options, ParsesEveryOption) {
-  const qd::cli::Options o =
+  const qd::cli::ApproximateOptions o =
       parse({"--tolerance", "0.5", "in.obj", "--tolerance-mode=total", "--max-iter", "3", "--seams",
              "free", "--free-boundary", "--weight", "12", "--anchor", "0", "--targets", "refit",
              "--stop-abd", "0.5", "--stop-obd=2", "--patch-tolerance", "2=0.01", "--patch-tolerance",
@@ -150,10 +166,56 @@ TEST(Options, SubcommandTakesTheSameOptionsAndMessages) {
   EXPECT_NE(message.find("--weight must be greater than 0, got -3"), std::string::npos) << message;
   EXPECT_EQ(printed({"approximate", "--version"}), printed({"--version"}));
   // The last of repeated or contradicting options wins, as on every command line.
-  const qd::cli::Options o =
+  const qd::cli::ApproximateOptions o =
       parse({"a", "b", "--free-boundary", "--keep-boundary", "--max-iter", "3", "--max-iter=4"});
   EXPECT_TRUE(o.params.keep_boundary);
   EXPECT_EQ(o.params.max_iter, 4);
+}
+
+TEST(Options, FlattenHasItsOwnOptionsAndDefaults) {
+  const qd::cli::CommandLine plain = qd::cli::parse_command_line({"flatten", "in.ply", "out.ply"});
+  EXPECT_EQ(plain.job, qd::cli::Job::Flatten);
+  const qd::FlattenParams d;
+  EXPECT_EQ(plain.flatten.params.max_iterations, d.max_iterations);
+  EXPECT_EQ(plain.flatten.params.tolerance, d.tolerance);
+  EXPECT_EQ(plain.flatten.params.gap, d.gap);
+  EXPECT_EQ(plain.flatten.unit, qd::cli::PatternUnit::Model);
+  EXPECT_TRUE(plain.flatten.svg.empty() && plain.flatten.dxf.empty());
+  const qd::cli::FlattenOptions o =
+      qd::cli::parse_command_line({"flatten", "in.obj", "out.ply", "--svg", "p.svg", "--dxf=p.dxf",
+                                   "--unit", "in", "--max-iter", "0", "--tolerance", "0",
+                                   "--gap", "2", "--notch-spacing", "3.5", "--threads", "1",
+                                   "--solver", "eigen-llt", "--report", "r.json", "--quiet"})
+          .flatten;
+  EXPECT_EQ(o.input, "in.obj");
+  EXPECT_EQ(o.svg, "p.svg");
+  EXPECT_EQ(o.dxf, "p.dxf");
+  EXPECT_EQ(o.unit, qd::cli::PatternUnit::Inch);
+  EXPECT_EQ(o.params.max_iterations, 0);
+  EXPECT_EQ(o.params.tolerance, 0);
+  EXPECT_EQ(o.params.gap, 2);
+  EXPECT_EQ(o.params.notch_spacing, 3.5);
+  EXPECT_EQ(o.params.threads, 1);
+  EXPECT_EQ(o.params.solver, qd::SolverKind::EigenLLT);
+  EXPECT_EQ(o.report, "r.json");
+  EXPECT_TRUE(o.quiet);
+  // The approximation's options are not the flattening's, and the other way round.
+  const auto rejected = [](std::vector<std::string> args) {
+    try {
+      qd::cli::parse_command_line(std::move(args));
+    } catch (const qd::cli::UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(rejected({"flatten", "a", "b", "--seams", "free"}).find("unknown option '--seams'"),
+            std::string::npos);
+  EXPECT_NE(rejected({"a", "b", "--svg", "p.svg"}).find("unknown option '--svg'"), std::string::npos);
+  EXPECT_NE(rejected({"flatten", "a", "b", "--svg", "b"}).find("the --svg file must differ"),
+            std::string::npos);
+  EXPECT_NE(rejected({"flatten", "a", "b", "--svg", "x", "--dxf", "x"}).find("--svg and --dxf files must differ"),
+            std::string::npos);
+  EXPECT_NE(rejected({"flatten", "a"}).find("expected INPUT and OUTPUT, got 1"), std::string::npos);
 }
 
 TEST(Options, HelpNamesEveryOptionAndTheDefaults) {

@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "flatten_report_json.h"
 #include "report_json.h"
 
 namespace {
@@ -33,7 +34,7 @@ qd::Result sample_result() {
 }
 
 Json report(const qd::Result& r, const std::vector<std::string>& notes) {
-  qd::cli::Options o;
+  qd::cli::ApproximateOptions o;
   o.input = "in\xff.ply";  // not UTF-8
   o.output = "out.ply";
   o.patch_tolerance_ae[7] = 3.0;
@@ -74,6 +75,49 @@ TEST(ReportJson, KeepsTheKeyOrderAndWritesValidUtf8) {
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(j["input"], "in\xef\xbf\xbd.ply");  // U+FFFD for the stray byte
   EXPECT_EQ(j["notes"][0], "property 'q\xef\xbf\xbd' ignored");
+}
+
+TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
+  qd::FlattenResult r;
+  qd::PieceReport p;
+  p.patch = 3;
+  p.component = 1;
+  p.label = "3.1";
+  p.cut = "cut to a disk along a slit (the patch is closed)";
+  p.max_distortion = 1.0 / 3.0;
+  p.flattenable = false;
+  p.overlapping = 2;
+  p.box = Eigen::AlignedBox2d(Eigen::Vector2d(0, 1), Eigen::Vector2d(2, 3));
+  r.pieces.push_back(p);
+  r.max_distortion = p.max_distortion;
+  r.pattern.bounds = p.box;
+  r.log = {"patch 3.1: ...", "flattened 1 pieces"};
+  qd::cli::FlattenOptions o;
+  o.input = "in.ply";
+  o.svg = "p.svg";
+  o.unit = qd::cli::PatternUnit::Centimetre;
+  o.params.gap = 0.5;
+  const std::vector<std::string> notes = {"polygons fan-triangulated"};
+  const Json j = Json::parse(qd::cli::flatten_report_json(r, {o, 10, 4, true, notes}));
+  std::vector<std::string> keys;
+  for (const auto& item : j.items()) keys.push_back(item.key());
+  EXPECT_EQ(keys, (std::vector<std::string>{"input", "output", "svg", "dxf", "vertices", "faces",
+                                            "has_patch_ids", "parameters", "pieces", "max_distortion",
+                                            "flattenable_pieces", "sheet", "time_ms", "notes", "log"}));
+  const Json& piece = j["pieces"][0];
+  EXPECT_EQ(piece["label"], "3.1");
+  EXPECT_EQ(piece["component"].get<int>(), 1);
+  EXPECT_EQ(piece["cut"], p.cut);
+  EXPECT_EQ(piece["max_distortion"].get<double>(), 1.0 / 3.0);
+  EXPECT_FALSE(piece["flattenable"].get<bool>());
+  EXPECT_EQ(piece["overlapping"].get<int>(), 2);
+  EXPECT_EQ(piece["box"]["max"][1].get<double>(), 3.0);
+  EXPECT_EQ(j["parameters"]["unit"], "cm");
+  EXPECT_EQ(j["parameters"]["gap"].get<double>(), 0.5);
+  EXPECT_EQ(j["sheet"]["min"][1].get<double>(), 1.0);
+  EXPECT_EQ(j["svg"], "p.svg");
+  EXPECT_EQ(j["log"][1], "flattened 1 pieces");
+  EXPECT_EQ(j["notes"][0], notes[0]);
 }
 
 }  // namespace

@@ -9,7 +9,8 @@ fields and menu entries with their screen positions, so the tests check the text
 click a button where it really is.
 
 `exercise_filter` is the one scenario both generations run: open the mesh, find the filter in
-its Filters submenu and through the filter search (Ctrl+F), open its dialog from the menu, read
+its Filters submenu (and the flattening filter under Filters > Texture) and through the filter
+search (Ctrl+F), open its dialog from the menu, read
 the dialog, press Apply, wait for MeshLab's "Applied filter" log line, close the dialog and
 export the mesh through File > Export Mesh As. `check_dialog` and `check_filter_result` then
 check the dialog's labels and the saved mesh against the input; `run_and_check` is the two
@@ -31,13 +32,14 @@ from typing import Callable
 import numpy as np
 from PIL import Image
 
-from ml2020_support import (FILTER_NAME, REPO, Mesh, boundary_vertices, integrated_curvature, load_mesh,
+from ml2020_support import (FILTER_NAME, FLATTEN_FILTER_NAME, REPO, Mesh, boundary_vertices, integrated_curvature, load_mesh,
                             mlx_parameters, seam_vertices)
 
 SCREEN = (1280, 1024)
 WINDOW = (1200, 900)           # the main window is moved to the top-left corner and resized to this
 VIEWPORT = (10, 80, 700, 700)  # left, top, right, bottom of the 3D view inside WINDOW (both versions)
 MENU = "Smoothing, Fairing and Deformation"   # the Filters submenu that lists our filter
+FLATTEN_MENU = "Texture"                      # the one that lists the flattening, in both versions
 PROBE_SOURCE = Path(__file__).with_name("gui_probe.cpp")
 # The filter's parameters (the names of .mlx files and pymeshlab) and the labels its dialog shows
 # for them, in the dialog's order.
@@ -294,13 +296,13 @@ class GuiRun:
     saved: Path
 
 
-def open_filter_submenu(gui: MeshLabGui, main: Window) -> Window:
-    """Opens Filters > MENU by clicks (hovering opens no submenu without a window manager)."""
+def open_filter_submenu(gui: MeshLabGui, main: Window, menu: str = MENU) -> Window:
+    """Opens Filters > menu by clicks (hovering opens no submenu without a window manager)."""
     gui.focus_3d_view(main)
     gui.click_text(main, "Fi&lters", "QAction")
-    filters = gui.wait_window(cls="QMenu", where=lambda w: w.find(MENU, "QAction") is not None)
-    gui.click_text(filters, MENU, "QAction")
-    return gui.wait_window(where=lambda w: w.cls != "MainWindow" and w.find(MENU) is None
+    filters = gui.wait_window(cls="QMenu", where=lambda w: w.find(menu, "QAction") is not None)
+    gui.click_text(filters, menu, "QAction")
+    return gui.wait_window(where=lambda w: w.cls != "MainWindow" and w.find(menu) is None
                            and len(w.texts("QAction")) > 3)
 
 
@@ -330,6 +332,12 @@ def exercise_filter(gui: MeshLabGui, mesh: Path, shots: Path) -> GuiRun:
     d.screenshot(shots / "gui_menu.png")
     menu_entries = submenu.texts("QAction")
     assert FILTER_NAME in menu_entries, f"'{FILTER_NAME}' not under Filters > {MENU}: {menu_entries}"
+    d.key("Escape", "Escape")
+    time.sleep(0.5)
+    texture_entries = open_filter_submenu(gui, main, FLATTEN_MENU).texts("QAction")
+    d.screenshot(shots / "gui_texture_menu.png")
+    assert FLATTEN_FILTER_NAME in texture_entries, \
+        f"'{FLATTEN_FILTER_NAME}' not under Filters > {FLATTEN_MENU}: {texture_entries}"
     d.key("Escape", "Escape")
     time.sleep(0.5)
 

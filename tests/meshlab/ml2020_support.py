@@ -22,6 +22,7 @@ sys.path.insert(0, str(REPO / "scripts"))
 from plyio import PlyData, PlyElement, PlyProperty, read_ply, write_ply  # noqa: E402
 
 FILTER_NAME = "Quasi-Developable Approximation"
+FLATTEN_FILTER_NAME = "Quasi-Developable Flattening"
 SELECTED = 0x20  # vcg's SELECTED vertex flag, as MeshLab 2020.09 reads/writes PLY "flags"
 XVFB = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24"]
 XVFB_CLEANUP_ERROR = "xvfb-run: error: problem while cleaning up temporary directory"
@@ -40,6 +41,7 @@ class Mesh:
     flags: np.ndarray | None = None      # per-vertex int flags
     quality: np.ndarray | None = None    # per-vertex quality
     color: np.ndarray | None = None      # (n, 3) uint8
+    texcoord: np.ndarray | None = None   # (m, 6) per-face corner u v
     face_color: np.ndarray | None = None  # (m, 3) uint8
 
     @property
@@ -62,12 +64,14 @@ def load_mesh(path: Path) -> Mesh:
         if not all(ply.has(element, c) for c in ("red", "green", "blue")):
             return None
         return np.stack([np.asarray(ply.get(element, c), np.uint8) for c in ("red", "green", "blue")], 1)
+    texcoord = _column(ply, "face", "texcoord", np.float64)
     return Mesh(v=np.asarray(ply.vertices(), np.float64).reshape(-1, 3),
                 f=np.asarray(ply.faces(), np.int64).reshape(-1, 3),
                 face_quality=_column(ply, "face", "quality", np.float64),
                 flags=_column(ply, "vertex", "flags", np.int64),
                 quality=_column(ply, "vertex", "quality", np.float64),
                 color=rgb("vertex"),
+                texcoord=None if texcoord is None else texcoord.reshape(-1, 6),
                 face_color=rgb("face"))
 
 
@@ -223,6 +227,7 @@ def run_meshlabserver(prefix: Path, mesh_in: Path, mesh_out: Path, script: Path,
     return run
 
 
-def run_quasidev(mesh_in: Path, mesh_out: Path, args: list[str], timeout: float = 600) -> subprocess.CompletedProcess:
-    cmd = [str(build_dir() / "bin" / "quasidev"), str(mesh_in), str(mesh_out), "--quiet", *args]
+def run_quasidev(mesh_in: Path, mesh_out: Path, args: list[str], timeout: float = 600,
+                 subcommand: str = "approximate") -> subprocess.CompletedProcess:
+    cmd = [str(build_dir() / "bin" / "quasidev"), subcommand, str(mesh_in), str(mesh_out), "--quiet", *args]
     return subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, check=False)

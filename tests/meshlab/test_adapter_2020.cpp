@@ -4,8 +4,6 @@
 // (deleted elements, selection, face quality, face colours and texture coordinates untouched).
 #include <gtest/gtest.h>
 
-#include <QDomDocument>
-#include <QFile>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,74 +11,18 @@
 #include <string>
 #include <vector>
 
-#include <common/ml_mesh_type.h>
-#include <vcg/complex/allocate.h>
-
+#include "adapter_test_mesh.h"
+#include "mlx_check.h"
 #include "quasidev_adapter.h"
 
 namespace {
 
-// An open cylinder (radius 1, height 2, `around` x `along` quads split into triangles) with one
-// smooth bump, so the filter has curvature to remove. Face quality = 0 everywhere.
-void make_bumpy_cylinder(CMeshO& m, int around = 24, int along = 12) {
-  m.Clear();
-  m.face.EnableQuality();
-  m.face.EnableColor();
-  m.face.EnableWedgeTexCoord();
-  auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, static_cast<size_t>(around * (along + 1)));
-  for (int j = 0; j <= along; ++j)
-    for (int i = 0; i < around; ++i, ++vi) {
-      const double a = 2 * std::acos(-1.0) * i / around;
-      const double h = 2.0 * j / along;
-      const double bump = 0.08 * std::exp(-((a - 1) * (a - 1) + (h - 1) * (h - 1)) / 0.1);
-      vi->P() = CMeshO::CoordType(static_cast<float>((1 + bump) * std::cos(a)),
-                                  static_cast<float>((1 + bump) * std::sin(a)), static_cast<float>(h));
-    }
-  const auto index = [around](int i, int j) { return static_cast<size_t>(j * around + (i % around)); };
-  for (int j = 0; j < along; ++j)
-    for (int i = 0; i < around; ++i) {
-      vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[index(i, j)], &m.vert[index(i + 1, j)],
-                                          &m.vert[index(i + 1, j + 1)]);
-      vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[index(i, j)], &m.vert[index(i + 1, j + 1)],
-                                          &m.vert[index(i, j + 1)]);
-    }
-  for (size_t f = 0; f < m.face.size(); ++f) {
-    m.face[f].Q() = 0;
-    m.face[f].C() = vcg::Color4b(static_cast<unsigned char>(f % 251), 7, 9, 255);
-    for (int k = 0; k < 3; ++k) m.face[f].WT(k).U() = static_cast<float>(f) + 0.25f * static_cast<float>(k);
-  }
-}
+using qdml::test::make_bumpy_cylinder;
+using qdml::test::Snapshot;
+using qdml::test::snapshot;
 
-struct Snapshot {
-  std::vector<CMeshO::CoordType> positions;
-  std::vector<float> quality;
-  std::vector<vcg::Color4b> colours;
-  std::vector<int> vertex_flags;
-  std::vector<float> face_quality;
-  std::vector<vcg::Color4b> face_colours;
-  std::vector<float> texcoords;
-  std::vector<int> face_flags;
-};
-
-Snapshot snapshot(const CMeshO& m) {
-  Snapshot s;
-  for (const auto& v : m.vert) {
-    s.positions.push_back(v.cP());
-    s.quality.push_back(v.cQ());
-    s.colours.push_back(v.cC());
-    s.vertex_flags.push_back(v.cFlags());
-  }
-  for (const auto& f : m.face) {
-    s.face_quality.push_back(f.cQ());
-    s.face_colours.push_back(f.cC());
-    for (int k = 0; k < 3; ++k) s.texcoords.push_back(f.cWT(k).U());
-    s.face_flags.push_back(f.cFlags());
-  }
-  return s;
-}
-
-std::map<std::string, double> default_values(const CMeshO& m) {
-  std::map<std::string, double> values;
+qdml::ParamValues default_values(const CMeshO& m) {
+  qdml::ParamValues values;
   for (const qdml::ParamSpec& spec : qdml::parameter_specs(m)) values[spec.name] = spec.value;
   return values;
 }
@@ -90,37 +32,12 @@ std::map<std::string, double> default_values(const CMeshO& m) {
 TEST(Adapter2020, DefaultMlxListsEveryParameterAtItsDefault) {
   CMeshO m;
   make_bumpy_cylinder(m);
-  QFile file(QD_DEFAULT_MLX);
-  ASSERT_TRUE(file.open(QIODevice::ReadOnly)) << QD_DEFAULT_MLX;
-  QDomDocument doc;
-  ASSERT_TRUE(doc.setContent(&file));
-  const QDomNodeList params = doc.elementsByTagName("Param");
-  const std::vector<qdml::ParamSpec> specs = qdml::parameter_specs(m);
-  ASSERT_EQ(params.size(), static_cast<int>(specs.size()));
-  const std::map<qdml::ParamKind, QString> types = {{qdml::ParamKind::Float, "RichFloat"},
-                                                    {qdml::ParamKind::Int, "RichInt"},
-                                                    {qdml::ParamKind::Bool, "RichBool"},
-                                                    {qdml::ParamKind::Enum, "RichEnum"}};
-  for (int i = 0; i < params.size(); ++i) {
-    const QDomElement p = params.at(i).toElement();
-    const qdml::ParamSpec& spec = specs[static_cast<size_t>(i)];
-    EXPECT_EQ(p.attribute("name").toStdString(), spec.name);
-    EXPECT_EQ(p.attribute("type"), types.at(spec.kind)) << spec.name;
-    const QString value = p.attribute("value");
-    if (spec.kind == qdml::ParamKind::Bool) {
-      EXPECT_EQ(value == "true", spec.value != 0) << spec.name;
-    } else if (spec.name == "tolerance") {
-      EXPECT_EQ(value.toDouble(), 0.0) << "default.mlx must say 0 (= 1 AE of any mesh)";
-    } else {
-      // The 2020.09 plugin holds floats: the script's value and the default agree as floats.
-      EXPECT_EQ(static_cast<float>(value.toDouble()), static_cast<float>(spec.value)) << spec.name;
-    }
-    if (spec.kind == qdml::ParamKind::Enum) {
-      ASSERT_EQ(p.attribute("enum_cardinality").toInt(), static_cast<int>(spec.items.size()));
-      for (size_t k = 0; k < spec.items.size(); ++k)
-        EXPECT_EQ(p.attribute(QString("enum_val%1").arg(k)).toStdString(), spec.items[k]);
-    }
-  }
+  qdml::test::expect_mlx_lists(QD_DEFAULT_MLX, qdml::parameter_specs(m), [](const qdml::ParamSpec& spec, double value) {
+    if (spec.name == "tolerance")
+      EXPECT_EQ(value, 0.0) << "default.mlx must say 0 (= 1 AE of any mesh)";
+    else
+      qdml::test::expect_float_default(spec, value);
+  });
 }
 
 TEST(Adapter2020, ToleranceDefaultIsTheAverageEdgeLength) {
@@ -137,21 +54,21 @@ TEST(Adapter2020, ToleranceDefaultIsTheAverageEdgeLength) {
 TEST(Adapter2020, SettingsFollowTheValues) {
   CMeshO m;
   make_bumpy_cylinder(m);
-  std::map<std::string, double> values = default_values(m);
+  qdml::ParamValues values = default_values(m);
   const qdml::Settings defaults = qdml::settings_from_values(values);
   const qd::Params engine_defaults;
   EXPECT_EQ(defaults.params.max_iter, engine_defaults.max_iter);
   EXPECT_EQ(defaults.params.seams, engine_defaults.seams);
   EXPECT_EQ(defaults.params.targets, engine_defaults.targets);
   EXPECT_EQ(defaults.params.weight, engine_defaults.weight);
-  values["seam_mode"] = 1;
-  values["target_mode"] = 2;
-  values["tolerance_mode"] = 1;
-  values["keep_boundary"] = 0;
-  values["output_quality"] = 1;
-  values["colorize"] = 0;
-  values["use_patches"] = 0;
-  values["max_iter"] = 3;
+  values["seam_mode"] = 1.0;
+  values["target_mode"] = 2.0;
+  values["tolerance_mode"] = 1.0;
+  values["keep_boundary"] = 0.0;
+  values["output_quality"] = 1.0;
+  values["colorize"] = 0.0;
+  values["use_patches"] = 0.0;
+  values["max_iter"] = 3.0;
   const qdml::Settings s = qdml::settings_from_values(values);
   EXPECT_EQ(s.params.seams, qd::SeamMode::Free);
   EXPECT_EQ(s.params.targets, qd::TargetMode::Refit);

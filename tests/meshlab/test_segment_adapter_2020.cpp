@@ -110,10 +110,10 @@ TEST(SegmentAdapter2020, SettingsFollowTheValues) {
   EXPECT_EQ(d.params.min_faces, engine.min_faces);
   EXPECT_FALSE(d.keep_patches);
   EXPECT_TRUE(d.selection_border);
-  values["max_error_deg"] = 30;
-  values["target_patches"] = 4;
-  values["keep_patches"] = 1;
-  values["crease_deg"] = 180;
+  values["max_error_deg"] = 30.0;
+  values["target_patches"] = 4.0;
+  values["keep_patches"] = 1.0;
+  values["crease_deg"] = 180.0;
   const qdml::SegmentSettings s = qdml::segment_settings_from_values(values);
   EXPECT_EQ(s.params.max_error_deg, 30);
   EXPECT_EQ(s.params.target_patches, 4);
@@ -154,7 +154,7 @@ TEST(SegmentAdapter2020, FailureLeavesTheMeshUntouched) {
   CMeshO m;
   make_folded_sheet(m);
   qdml::ParamValues values = defaults();
-  values["max_error_deg"] = 0;
+  values["max_error_deg"] = 0.0;
   const qdml::SegmentOutcome out = qdml::apply_segment(m, false, qdml::segment_settings_from_values(values), nullptr);
   EXPECT_FALSE(out.ok);
   EXPECT_NE(out.error.find("largest fit error"), std::string::npos) << out.error;

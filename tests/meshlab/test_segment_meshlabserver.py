@@ -22,7 +22,6 @@ sys.path.insert(0, str(REPO / "tests" / "cli"))
 sys.path.insert(0, str(REPO / "scripts"))
 import make_bad_corpus  # noqa: E402
 from compare_developability import gaussian_curvature  # noqa: E402
-from segment_corpus import segment_parameters  # noqa: E402
 
 SAMPLES = REPO / "sample_meshes"
 SEGMENT = "Quasi-Developable Segmentation"
@@ -83,12 +82,12 @@ def test_segment_then_approximate_lowers_g_abd_on_a_closed_mesh(meshlab_prefix, 
     assert g_abd(out.v, out.f) < g_abd(given.v, given.f)
 
 
-@pytest.mark.parametrize("case", make_bad_corpus.cases(), ids=[c[0] for c in make_bad_corpus.cases()])
+@pytest.mark.parametrize("case", make_bad_corpus.segment_cases(), ids=[c[0] for c in make_bad_corpus.segment_cases()])
 def test_corpus_case_through_the_segmentation(case, meshlab_prefix, tmp_path):
     name, data, args, expect = case
     source = tmp_path / f"{name}.ply"
     source.write_bytes(data)
-    script = write_mlx(tmp_path / "job.mlx", segment_parameters(args), base=SAMPLES / "segment.mlx",
+    script = write_mlx(tmp_path / "job.mlx", make_bad_corpus.plugin_parameters(args, make_bad_corpus.SEGMENT_PARAMETERS), base=SAMPLES / "segment.mlx",
                        filter_name=SEGMENT)
     out = tmp_path / "out.ply"
     out.write_bytes(PREVIOUS)

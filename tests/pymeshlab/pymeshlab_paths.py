@@ -22,8 +22,9 @@ SAMPLES = os.path.join(ROOT, "sample_meshes")
 SHARED = os.environ.get("QD_SHARED_MESHES", "/work/shared/meshes")
 FILTER = "apply_coord_quasi_developable_approximation"
 SEGMENT_FILTER = "compute_segmentation_quasi_developable"
+FLATTEN_FILTER = "compute_texcoord_quasi_developable_flattening"
 
-sys.path.insert(0, os.path.join(ROOT, "scripts"))  # compare_developability: K, AE
+sys.path.insert(0, os.path.join(ROOT, "scripts"))  # compare_developability: K, AE; flat_measures
 
 # pymeshlab 2025.7.post1 bug (seen with MeshLab's own filters too): destroying a MeshSet on which
 # a filter raised corrupts the heap, and a later MeshSet crashes at random (SIGSEGV, abort,

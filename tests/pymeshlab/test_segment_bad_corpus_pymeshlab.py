@@ -1,4 +1,4 @@
-"""The bad-input corpus (tests/cli/make_bad_corpus.py, with segment_corpus.py's parameters)
+"""The bad-input corpus for the segmentation (tests/cli/make_bad_corpus.py: segment_cases())
 through the segmentation filter in real pymeshlab, each case in its own Python process
 (bad_corpus_worker.py): never a signal; files MeshLab's importer refuses raise its exception;
 a mesh the filter refuses raises with a one-line reason and every array of the mesh is
@@ -16,9 +16,8 @@ from pymeshlab_paths import PLUGIN, ROOT, SEGMENT_FILTER, require_file
 
 sys.path.insert(0, os.path.join(ROOT, "tests", "cli"))
 import make_bad_corpus  # noqa: E402
-from segment_corpus import segment_parameters  # noqa: E402
 
-CASES = make_bad_corpus.cases()
+CASES = make_bad_corpus.segment_cases()
 WORKER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "bad_corpus_worker.py")
 AS_ARRAYS = {"nan_coordinates", "inf_coordinates"}  # pymeshlab's importer drops them
 
@@ -30,7 +29,7 @@ def test_corpus_case_through_the_segmentation(case, tmp_path):
     source = tmp_path / f"{name}.ply"
     source.write_bytes(data)
     run = subprocess.run([sys.executable, WORKER, PLUGIN, SEGMENT_FILTER, str(source),
-                          json.dumps(segment_parameters(args)),
+                          json.dumps(make_bad_corpus.plugin_parameters(args, make_bad_corpus.SEGMENT_PARAMETERS)),
                           "arrays" if name in AS_ARRAYS else "file"],
                          capture_output=True, text=True, timeout=600, check=False)
     assert run.returncode == 0, f"worker ended with {run.returncode}:\n{run.stderr[-3000:]}"

@@ -33,6 +33,20 @@ QualityRange robust_quality_range(const std::vector<double>& quality, double low
   return {percentile_of_sorted(finite, low_percent), percentile_of_sorted(finite, high_percent)};
 }
 
+QualityRange symmetric_quality_range(const std::vector<double>& quality, double min_half_width,
+                                     double high_percent) {
+  std::vector<double> magnitude;
+  magnitude.reserve(quality.size());
+  for (double q : quality)
+    if (std::isfinite(q)) magnitude.push_back(std::fabs(q));
+  double m = min_half_width;
+  if (!magnitude.empty()) {
+    std::sort(magnitude.begin(), magnitude.end());
+    m = std::max(m, percentile_of_sorted(magnitude, high_percent));
+  }
+  return {-m, m};
+}
+
 std::array<unsigned char, 3> ramp_color(double value, const QualityRange& range) {
   if (!std::isfinite(value)) return {128, 128, 128};
   const double span = range.hi - range.lo;

@@ -27,6 +27,12 @@ QualityRange robust_quality_range(const std::vector<double>& quality,
                                   double low_percent = kRampLowPercent,
                                   double high_percent = kRampHighPercent);
 
+// A range symmetric about 0, [-m, m], with m the high_percent-th percentile of |q| over the finite
+// values, but at least min_half_width (> 0): 0 is then the ramp's middle (green), and values
+// smaller than min_half_width do not get the whole ramp.
+QualityRange symmetric_quality_range(const std::vector<double>& quality, double min_half_width,
+                                     double high_percent = kRampHighPercent);
+
 // Colour of `value` on the ramp over `range`: red at lo, yellow, green at the middle, cyan, blue at
 // hi; values outside the range are clamped; a degenerate range (lo == hi) gives green; a
 // non-finite value gives grey.

@@ -80,7 +80,6 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
   r.uv.resize(problem.F.rows(), 6);
   r.stretch.resize(static_cast<size_t>(problem.F.rows()));
   std::vector<PatternPiece> pattern;
-  double worst = 0;
   std::string worst_label;
   for (size_t i = 0; i < flat.size(); ++i) {
     const Piece& p = flat[i].piece;
@@ -95,16 +94,17 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
     pattern.push_back(pattern_piece(p.patch, label, p.F, uvs[i], flat[i].loops, notched));
     r.pieces.push_back(piece_report(flat[i], label, boxes[i]));
     r.log.push_back(log_line(r.pieces.back()));
-    if (r.pieces.back().max_distortion >= worst) {
-      worst = r.pieces.back().max_distortion;
+    if (r.pieces.back().max_distortion >= r.max_distortion) {
+      r.max_distortion = r.pieces.back().max_distortion;
       worst_label = label;
     }
+    r.flattenable_pieces += r.pieces.back().flattenable ? 1 : 0;
   }
   r.pattern = make_pattern(std::move(pattern));
   r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::ostringstream total_line;
   total_line << std::fixed << std::setprecision(2) << "flattened " << r.pieces.size() << " pieces in " << r.time_ms / 1000
-             << " s; largest length distortion " << worst << " % (patch " << worst_label << ")";
+             << " s; largest length distortion " << r.max_distortion << " % (patch " << worst_label << ")";
   r.log.push_back(total_line.str());
   if (progress) progress(100, "done");
   return r;

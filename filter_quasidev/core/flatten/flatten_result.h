@@ -37,6 +37,8 @@ struct FlattenResult {
   WedgeUV uv;                       // one row per face of the input
   std::vector<double> stretch;      // per face: signed stretch (face_distortion.h)
   std::vector<PieceReport> pieces;  // by patch id, then component
+  double max_distortion = 0;        // percent: the largest of the pieces'
+  int flattenable_pieces = 0;       // pieces without flipped or overlapping faces
   Pattern pattern;
   std::vector<std::string> log;     // one line per piece, then a total
   double time_ms = 0;

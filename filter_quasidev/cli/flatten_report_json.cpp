@@ -1,0 +1,69 @@
+#include "flatten_report_json.h"
+
+#include "report_text.h"
+
+namespace qd::cli {
+
+namespace {
+
+Json box(const Eigen::AlignedBox2d& b) {
+  if (b.isEmpty()) return nullptr;
+  return {{"min", {b.min().x(), b.min().y()}}, {"max", {b.max().x(), b.max().y()}}};
+}
+
+Json piece(const PieceReport& p) {
+  return {{"patch", p.patch},
+          {"component", p.component},
+          {"label", p.label},
+          {"faces", p.faces},
+          {"vertices", p.vertices},
+          {"cut", p.cut},
+          {"iterations", p.iterations},
+          {"stop_reason", p.stop_reason},
+          {"energy", p.energy},
+          {"max_distortion", p.max_distortion},
+          {"mean_distortion", p.mean_distortion},
+          {"area_change", p.area_change},
+          {"boundary_change", p.boundary_change},
+          {"flipped", p.flipped},
+          {"overlapping", p.overlapping},
+          {"flattenable", p.flattenable},
+          {"box", box(p.box)},
+          {"time_ms", p.time_ms}};
+}
+
+Json parameters(const FlattenOptions& o) {
+  const FlattenParams& p = o.params;
+  return {{"max_iter", p.max_iterations},
+          {"tolerance", p.tolerance},
+          {"gap", p.gap},
+          {"notch_spacing", p.notch_spacing},
+          {"solver", name_of(kSolverKinds, p.solver)},
+          {"threads", p.threads},
+          {"unit", name_of(kPatternUnits, o.unit)}};
+}
+
+}  // namespace
+
+std::string flatten_report_json(const FlattenResult& result, const FlattenReportContext& c) {
+  Json pieces = Json::array();
+  for (const PieceReport& p : result.pieces) pieces.push_back(piece(p));
+  const Json report = {{"input", c.options.input},
+                       {"output", c.options.output},
+                       {"svg", c.options.svg},
+                       {"dxf", c.options.dxf},
+                       {"vertices", c.vertices},
+                       {"faces", c.faces},
+                       {"has_patch_ids", c.has_patch_ids},
+                       {"parameters", parameters(c.options)},
+                       {"pieces", pieces},
+                       {"max_distortion", result.max_distortion},
+                       {"flattenable_pieces", result.flattenable_pieces},
+                       {"sheet", box(result.pattern.bounds)},
+                       {"time_ms", result.time_ms},
+                       {"notes", c.notes},
+                       {"log", result.log}};
+  return report_text(report);
+}
+
+}  // namespace qd::cli

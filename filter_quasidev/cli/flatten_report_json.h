@@ -1,0 +1,25 @@
+// The --report JSON of `quasidev flatten`: what was run (files, mesh size, parameters) and every
+// figure of a qd::FlattenResult (per piece: faces, cut, ARAP iterations and stop reason, length
+// distortion, area and boundary change, flips, overlaps, place on the sheet, time), the sheet's
+// extent and the log. Input: the result and its context. Output: text.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "flatten/flatten_result.h"
+#include "options.h"
+
+namespace qd::cli {
+
+struct FlattenReportContext {
+  const FlattenOptions& options;
+  int vertices;
+  int faces;
+  bool has_patch_ids;
+  const std::vector<std::string>& notes;  // the reader's remarks (e.g. polygons triangulated)
+};
+
+std::string flatten_report_json(const FlattenResult& result, const FlattenReportContext& context);
+
+}  // namespace qd::cli

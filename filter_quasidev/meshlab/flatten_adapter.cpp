@@ -1,0 +1,176 @@
+#include "flatten_adapter.h"
+
+#include <cmath>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+
+#include "atomic_file.h"
+#include "engine_mesh.h"
+#include "flatten/dxf_writer.h"
+#include "flatten/flatten.h"
+#include "flatten/stretch_ramp.h"
+#include "flatten/svg_writer.h"
+#include "flatten_figures.h"
+
+namespace qdml {
+
+namespace {
+
+// The values of the parameter "unit", in order; "model" writes no physical unit.
+const std::vector<std::string> kUnits = {"model", "mm", "cm", "in"};
+
+// Writes the engine's texture coordinates, stretch and its colour on every live face of m,
+// enabling m's per-wedge texture coordinates, face quality and face colour first. Touches
+// nothing else.
+void write_back(CMeshO& m, const EngineMesh& e, const qd::FlattenResult& r) {
+  using Quality = CMeshO::FaceType::QualityType;
+  using TexScalar = CMeshO::FaceType::TexCoordType::ScalarType;
+  if (static_cast<std::size_t>(r.uv.rows()) != e.face_slot.size() || r.stretch.size() != e.face_slot.size())
+    throw std::logic_error("the flattening returned a result of the wrong size");
+  if (!m.face.IsWedgeTexCoordEnabled()) m.face.EnableWedgeTexCoord();
+  if (!m.face.IsQualityEnabled()) m.face.EnableQuality();
+  if (!m.face.IsColorEnabled()) m.face.EnableColor();
+  const qd::QualityRange range = qd::stretch_ramp_range(r.stretch);
+  for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
+    CMeshO::FaceType& face = m.face[e.face_slot[f]];
+    const auto row = static_cast<Eigen::Index>(f);
+    for (int k = 0; k < 3; ++k) {
+      face.WT(k).U() = static_cast<TexScalar>(r.uv(row, 2 * k));
+      face.WT(k).V() = static_cast<TexScalar>(r.uv(row, 2 * k + 1));
+      face.WT(k).N() = 0;
+    }
+    face.Q() = static_cast<Quality>(r.stretch[f]);
+    const std::array<unsigned char, 3> c = qd::ramp_color(r.stretch[f], range);
+    face.C() = vcg::Color4b(c[0], c[1], c[2], 255);
+  }
+}
+
+// The pattern files asked for, staged (written beside their targets, not yet in place).
+std::vector<std::unique_ptr<qd::meshio::PendingFile>> stage_pattern(const qd::FlattenResult& r,
+                                                                    const FlattenSettings& s) {
+  std::vector<std::unique_ptr<qd::meshio::PendingFile>> files;
+  if (!s.svg_file.empty()) {
+    std::ostringstream svg;
+    qd::write_svg(svg, r.pattern, s.unit);
+    files.push_back(std::make_unique<qd::meshio::PendingFile>(s.svg_file, svg.str()));
+  }
+  if (!s.dxf_file.empty()) {
+    std::ostringstream dxf;
+    qd::write_dxf(dxf, r.pattern);
+    files.push_back(std::make_unique<qd::meshio::PendingFile>(s.dxf_file, dxf.str()));
+  }
+  return files;
+}
+
+std::string flatten_info() {
+  return "Flattens every patch of the mesh into a <b>pattern piece</b> to cut from flat "
+         "material: a patch that is not a disk is first cut into one (a tube gets one "
+         "shortest cut, said in the log), then flattened as rigidly as possible (ARAP: the "
+         "lengths of the flat piece match the mesh's as closely as they can), and the pieces "
+         "are laid out side by side at true scale. Run <i>Quasi-Developable Approximation</i> "
+         "first to make the patches (nearly) developable: a developable patch flattens "
+         "without stretch; one that is not is flattened anyway, with its distortion "
+         "reported.<br>"
+         "<b>Per-face quality</b> = patch id (rounded to an integer); without it the whole "
+         "mesh is one patch. Each edge-connected part of a patch becomes its own piece.<br>"
+         "<b>Output</b>: per-wedge texture coordinates in model units (1 unit on the pattern "
+         "= 1 unit on the mesh), per-face quality = signed stretch (largest singular value of "
+         "the 3D-to-2D map minus 1, negative where compression is larger) replacing the patch "
+         "ids, and a face colour ramp on it (green none, blue stretched, red compressed). One "
+         "log line per piece: faces, cut, ARAP iterations, largest and mean length distortion, "
+         "area and boundary length change, flipped and overlapping faces (a piece with either "
+         "is not flattenable without a further cut). The pattern can be written as <b>SVG</b> "
+         "(outlines, piece labels, notches where pieces meet, a scale bar) and <b>DXF</b> "
+         "(AutoCAD R12 polylines, one layer per patch), each when its file name is given.<br>"
+         "Liu L., Zhang L., Xu Y., Gotsman C., Gortler S. J., <i>A local/global approach to "
+         "mesh parameterization</i>, Computer Graphics Forum 27(5), SGP 2008.";
+}
+
+FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
+  return filter_run(apply_flatten(m, has_face_quality, flatten_settings_from_values(values), cb), flatten_figures,
+                    {MeshPart::WedgeTexCoord, MeshPart::FaceQuality, MeshPart::FaceColor});
+}
+
+}  // namespace
+
+std::vector<ParamSpec> flatten_parameter_specs() {
+  const qd::FlattenParams d;
+  return {
+      {"max_iter", "Max ARAP iterations",
+       "Stop flattening a piece after this many ARAP iterations (each one rotation fit per face "
+       "and one linear solve); 0 = the initial flattening only.",
+       ParamKind::Int, static_cast<double>(d.max_iterations), {}, ""},
+      {"tolerance", "ARAP tolerance",
+       "Stop a piece's iterations when its ARAP energy changes by less than this fraction in one "
+       "iteration (0 to below 1). Smaller is more exact and slower.",
+       ParamKind::Float, d.tolerance, {}, ""},
+      {"gap", "Gap between pieces",
+       "Space between pieces on the sheet, in model units; 0 = 5 % of the largest piece's longer "
+       "side.",
+       ParamKind::Float, d.gap, {}, ""},
+      {"notch_spacing", "Notch spacing",
+       "Notches mark where pieces meet along a seam (at its ends and every this many model units "
+       "along it), so they can be matched when sewn; 0 = an eighth of the largest piece's longer "
+       "side.",
+       ParamKind::Float, d.notch_spacing, {}, ""},
+      {"svg_file", "SVG pattern file",
+       "Write the cutting pattern as SVG to this file (outlines, labels, notches, scale bar); "
+       "empty = no SVG. A relative path is relative to MeshLab's working folder.",
+       ParamKind::SaveFile, 0, {}, ".svg"},
+      {"dxf_file", "DXF pattern file",
+       "Write the cutting pattern as DXF (AutoCAD R12 polylines, one layer per patch, notches on "
+       "layers of their own) to this file; empty = no DXF.",
+       ParamKind::SaveFile, 0, {}, ".dxf"},
+      {"unit", "Model unit",
+       "The model's length unit, written on the SVG's scale bar; mm, cm or in also give the SVG "
+       "that physical size, so it prints at 1:1.",
+       ParamKind::Enum, 0, kUnits, ""},
+  };
+}
+
+FlattenSettings flatten_settings_from_values(const ParamValues& values) {
+  FlattenSettings s;
+  qd::FlattenParams& p = s.params;
+  const auto number = [&](const char* name, double fallback) { return number_value(values, name, fallback); };
+  const auto text = [&](const char* name) { return text_value(values, name); };
+  p.max_iterations = static_cast<int>(std::lround(number("max_iter", p.max_iterations)));
+  p.tolerance = number("tolerance", p.tolerance);
+  p.gap = number("gap", p.gap);
+  p.notch_spacing = number("notch_spacing", p.notch_spacing);
+  s.svg_file = text("svg_file");
+  s.dxf_file = text("dxf_file");
+  const long unit = std::lround(number("unit", 0));
+  s.unit = unit > 0 && unit < static_cast<long>(kUnits.size()) ? kUnits[static_cast<std::size_t>(unit)] : "";
+  return s;
+}
+
+FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const FlattenSettings& s,
+                             vcg::CallBackPos* cb) {
+  return guarded_run<qd::FlattenResult>([&](FlattenOutcome& out) {
+    qd::FlattenProblem problem;
+    const EngineMesh e = read_geometry(m, problem.V, problem.F);
+    problem.patch = read_patch_ids(m, e, has_face_quality, true, out.log);
+    problem.params = s.params;
+    out.result = qd::flatten(problem, progress_of(cb));
+    const auto files = stage_pattern(out.result, s);
+    for (const auto& file : files) file->commit();
+    write_back(m, e, out.result);
+    out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
+    if (!s.svg_file.empty()) out.log.push_back("pattern written as SVG to " + s.svg_file);
+    if (!s.dxf_file.empty()) out.log.push_back("pattern written as DXF to " + s.dxf_file);
+  });
+}
+
+FilterSpec flatten_filter() {
+  return {"Quasi-Developable Flattening",
+          "compute_texcoord_quasi_developable_flattening",
+          flatten_info(),
+          {FilterCategory::Texture},
+          {MeshPart::WedgeTexCoord, MeshPart::FaceQuality, MeshPart::FaceColor},
+          [](const CMeshO&) { return flatten_parameter_specs(); },
+          run};
+}
+
+}  // namespace qdml
