@@ -21,7 +21,7 @@
 #include "common/error.h"
 #include "common/metrics.h"
 #include "common/parallel_for.h"
-#include "common/serial_blas.h"
+#include "common/serial_libraries.h"
 #include "common/stage_timer.h"
 #include "common/topology.h"
 
@@ -375,9 +375,9 @@ Result approximate(const Problem& problem, const Progress& progress) {
   std::atomic<size_t> done{0};
   // The engine's threads run patches, or the two scalar factors of a lone patch's iterative
   // solve: BLAS threads would only contend, and their number would change the rounding, so
-  // the result would depend on --threads. Switched once per call, since switching OpenBLAS
+  // the result would depend on --threads (serial_libraries.h). Switched once per call, since switching OpenBLAS
   // back and forth restarts its threads.
-  const SerialBlas serial_blas;
+  const SerialLibraries serial_libraries;
   for (const std::vector<size_t>& round : solve_rounds(groups, F, V.rows())) {
     const size_t threads = std::min(round.size(), thread_count(params.threads));
     Params group_params = params;  // a patch alone in its round has every thread

@@ -13,7 +13,7 @@
 #include "flatten/notches.h"
 #include "flatten/piece_report.h"
 #include "common/parallel_for.h"
-#include "common/serial_blas.h"
+#include "common/serial_libraries.h"
 
 namespace qd {
 
@@ -56,7 +56,7 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
   std::atomic<size_t> done{0};
   const double total = static_cast<double>(pieces.size());
   {
-    const SerialBlas serial_blas;  // BLAS threads would contend with the pieces' (serial_blas.h)
+    const SerialLibraries serial_libraries;  // library threads would contend with the pieces' (serial_libraries.h)
     parallel_for(pieces.size(), thread_count(params.threads), [&](size_t i) {
       const std::string what = "flattening patch " + label_of(pieces[i]);
       const auto report = [&](double fraction) {  // only the caller's thread reports

@@ -1,0 +1,28 @@
+// The libraries under CHOLMOD start threads of their own: OpenBLAS runs worker threads, and
+// Debian's CHOLMOD 3 (SuiteSparse 5.12) opens an OpenMP region of 4 threads
+// (CHOLMOD_OMP_NUM_THREADS, fixed when it was built) for every large supernode, only to fill a
+// map and zero a block. The engine runs its own threads (one patch per core, or the two scalar
+// factors of a lone patch's iterative solve), so theirs would only contend: bench/qd_bench, 100k
+// triangles in 16 patches, engine 1.65 s with OpenBLAS's threads, 0.48 s without; the 40k-face
+// tee, 10 iterations, 1 thread, 6.0 s with CHOLMOD's OpenMP regions (a futex wake per region,
+// 35 % of the time in the kernel), 2.7 s without. Their number would also change the rounding of
+// CHOLMOD's results. While a SerialLibraries lives, OpenBLAS works in the calling thread only and
+// OpenMP regions run on one thread (max-active-levels 0), if those libraries are loaded in this
+// process; the previous settings come back afterwards, so a host such as MeshLab keeps its own.
+#pragma once
+
+namespace qd {
+
+class SerialLibraries {
+ public:
+  SerialLibraries();
+  ~SerialLibraries();
+  SerialLibraries(const SerialLibraries&) = delete;
+  SerialLibraries& operator=(const SerialLibraries&) = delete;
+
+ private:
+  int saved_blas_threads_ = 0;     // OpenBLAS's thread count before; 0: OpenBLAS is not loaded
+  int saved_omp_levels_ = -1;      // OpenMP's max-active-levels before; -1: OpenMP is not loaded
+};
+
+}  // namespace qd
