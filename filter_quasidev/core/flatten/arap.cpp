@@ -24,7 +24,7 @@ Eigen::Matrix2d nearest_rotation(const Eigen::Matrix2d& J) {
 
 // Per face, Y_t = X_t K_t: column k is Σ_j ½cot θ_kj (x_k − x_j), so that face t adds R_t Y_t(:, k)
 // to b at its corner k (the global step).
-std::vector<Eigen::Matrix<double, 2, 3>> weighted_frame_edges(const FaceGeometry& g) {
+std::vector<Eigen::Matrix<double, 2, 3>> weighted_frame_edges(const FlatTriangles& g) {
   std::vector<Eigen::Matrix<double, 2, 3>> Y(g.corner.size());
   for (size_t f = 0; f < Y.size(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -38,7 +38,7 @@ std::vector<Eigen::Matrix<double, 2, 3>> weighted_frame_edges(const FaceGeometry
 
 }  // namespace
 
-ArapOutcome arap(const Triangles& F, const FaceGeometry& g, const Eigen::SparseMatrix<double>& L,
+ArapOutcome arap(const Triangles& F, const FlatTriangles& g, const Eigen::SparseMatrix<double>& L,
                  Eigen::MatrixX2d& uv, const ArapSettings& settings,
                  const std::function<void(int)>& iteration) {
   const int n = static_cast<int>(uv.rows()), pinned = 0;

@@ -13,7 +13,7 @@
 #include <functional>
 #include <string>
 
-#include "flatten/face_geometry.h"
+#include "flatten/flat_triangles.h"
 #include "common/sparse_cholesky.h"
 
 namespace qd {
@@ -32,7 +32,7 @@ struct ArapOutcome {
 
 // uv: the starting flattening (one row per vertex), replaced by the result. L: the cotangent
 // Laplacian of F. iteration(k) is called after global step k (1-based).
-ArapOutcome arap(const Triangles& F, const FaceGeometry& g, const Eigen::SparseMatrix<double>& L,
+ArapOutcome arap(const Triangles& F, const FlatTriangles& g, const Eigen::SparseMatrix<double>& L,
                  Eigen::MatrixX2d& uv, const ArapSettings& settings,
                  const std::function<void(int)>& iteration = {});
 

@@ -2,7 +2,7 @@
 
 namespace qd {
 
-Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FaceGeometry& g, int vertex_count) {
+Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTriangles& g, int vertex_count) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(12 * static_cast<size_t>(F.rows()));
   for (int f = 0; f < F.rows(); ++f)

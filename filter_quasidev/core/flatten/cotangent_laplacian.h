@@ -6,11 +6,11 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "flatten/face_geometry.h"
+#include "flatten/flat_triangles.h"
 
 namespace qd {
 
-Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FaceGeometry& g, int vertex_count);
+Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTriangles& g, int vertex_count);
 
 // The block of M with the rows and columns whose number in `row` / `column` is ≥ 0, renumbered
 // by it (row[i] = new row of row i or −1; `rows`, `columns` the new sizes).

@@ -19,7 +19,7 @@ FlatPiece flatten_piece(Piece piece, const FlattenParams& params, const std::fun
   const int n = static_cast<int>(p.V.rows());
   const EdgeTable edges = edge_table(p.F, n);
   flat.loops = boundary_loops(p.F, edges);
-  const FaceGeometry g = face_geometry(p.V, p.F);
+  const FlatTriangles g = flat_triangles(p.V, p.F);
   const Eigen::SparseMatrix<double> L = cotangent_laplacian(p.F, g, n);
   try {
     flat.uv = initial_layout(p.V, p.F, g, L, flat.loops.front(), params.solver);

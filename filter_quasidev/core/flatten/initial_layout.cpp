@@ -9,7 +9,7 @@
 
 namespace qd {
 
-Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const FaceGeometry& g,
+Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const FlatTriangles& g,
                                 const Eigen::SparseMatrix<double>& L, const std::vector<int>& loop,
                                 SolverKind solver) {
   const int n = static_cast<int>(V.rows()), m = static_cast<int>(loop.size());

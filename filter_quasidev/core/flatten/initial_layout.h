@@ -18,14 +18,14 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "flatten/face_geometry.h"
+#include "flatten/flat_triangles.h"
 #include "common/sparse_cholesky.h"
 
 namespace qd {
 
 // V, F: the piece (a disk); g its face geometry and L its cotangent Laplacian; loop its
 // boundary in face order. Returns one row (u, v) per vertex, in model units.
-Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const FaceGeometry& g,
+Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const FlatTriangles& g,
                                 const Eigen::SparseMatrix<double>& L, const std::vector<int>& loop,
                                 SolverKind solver);
 

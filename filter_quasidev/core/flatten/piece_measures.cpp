@@ -24,7 +24,7 @@ int face_of_boundary_edge(const EdgeTable& edges, int a, int b) {
 
 }  // namespace
 
-PieceMeasures measure_piece(const Positions& V, const Triangles& F, const FaceGeometry& g,
+PieceMeasures measure_piece(const Positions& V, const Triangles& F, const FlatTriangles& g,
                             const EdgeTable& edges, const std::vector<std::vector<int>>& loops,
                             const Eigen::MatrixX2d& uv) {
   PieceMeasures m;

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "flatten/edge_table.h"
-#include "flatten/face_geometry.h"
+#include "flatten/flat_triangles.h"
 
 namespace qd {
 
@@ -21,7 +21,7 @@ struct PieceMeasures {
 };
 
 // V, F, g, edges: the piece (a disk) in 3D; loops: its boundary loops; uv: its flattening.
-PieceMeasures measure_piece(const Positions& V, const Triangles& F, const FaceGeometry& g,
+PieceMeasures measure_piece(const Positions& V, const Triangles& F, const FlatTriangles& g,
                             const EdgeTable& edges, const std::vector<std::vector<int>>& loops,
                             const Eigen::MatrixX2d& uv);
 

@@ -12,7 +12,7 @@ namespace {
 
 struct Strip {
   qd::test::GridMesh m = qd::test::cylinder(20, 6, 1.0, 1.0, 2.0);  // open: a disk
-  qd::FaceGeometry g = qd::face_geometry(m.V, m.F);
+  qd::FlatTriangles g = qd::flat_triangles(m.V, m.F);
   Eigen::SparseMatrix<double> L = qd::cotangent_laplacian(m.F, g, static_cast<int>(m.V.rows()));
   // A start far from the development: the 3D x, z coordinates, jittered.
   Eigen::MatrixX2d start() const {

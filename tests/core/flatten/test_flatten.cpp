@@ -7,7 +7,7 @@
 
 #include "common/error.h"
 #include "flatten/face_distortion.h"
-#include "flatten/face_geometry.h"
+#include "flatten/flat_triangles.h"
 #include "flatten/flatten.h"
 #include "flatten_meshes.h"
 
@@ -53,7 +53,7 @@ TEST(Flatten, DoublyCurvedCapIsFlattenedWithItsDistortionReported) {
   EXPECT_TRUE(r.uv.allFinite());
   // The report agrees with the texture coordinates it hands back: the faces measured again on
   // their own corners (face f's corners are rows 3f, 3f + 1, 3f + 2).
-  const qd::FaceGeometry g = qd::face_geometry(cap.V, cap.F);
+  const qd::FlatTriangles g = qd::flat_triangles(cap.V, cap.F);
   qd::Triangles corners(cap.F.rows(), 3);
   Eigen::MatrixX2d uv(3 * cap.F.rows(), 2);
   for (int f = 0; f < cap.F.rows(); ++f)

@@ -1,12 +1,12 @@
-#include "flatten/face_geometry.h"
+#include "flatten/flat_triangles.h"
 
 #include <cmath>
 
 namespace qd {
 
-FaceGeometry face_geometry(const Positions& V, const Triangles& F) {
+FlatTriangles flat_triangles(const Positions& V, const Triangles& F) {
   const auto n = static_cast<size_t>(F.rows());
-  FaceGeometry g;
+  FlatTriangles g;
   g.corner.resize(n);
   g.inverse_edges.resize(n);
   g.area.resize(F.rows());
@@ -32,7 +32,7 @@ FaceGeometry face_geometry(const Positions& V, const Triangles& F) {
   return g;
 }
 
-Eigen::Matrix2d face_jacobian(const FaceGeometry& g, const Triangles& F, const Eigen::MatrixX2d& uv, int f) {
+Eigen::Matrix2d face_jacobian(const FlatTriangles& g, const Triangles& F, const Eigen::MatrixX2d& uv, int f) {
   Eigen::Matrix2d U;
   U.col(0) = (uv.row(F(f, 1)) - uv.row(F(f, 0))).transpose();
   U.col(1) = (uv.row(F(f, 2)) - uv.row(F(f, 0))).transpose();

@@ -10,7 +10,7 @@
 
 namespace qd {
 
-struct FaceGeometry {
+struct FlatTriangles {
   std::vector<Eigen::Matrix<double, 2, 3>> corner;  // per face: x0, x1, x2 (columns)
   std::vector<Eigen::Matrix2d> inverse_edges;       // per face: E⁻¹ (zero for a degenerate face)
   Eigen::VectorXd area;                             // per face, 3D area
@@ -20,9 +20,9 @@ struct FaceGeometry {
   Eigen::Matrix<double, Eigen::Dynamic, 3> half_cot;
 };
 
-FaceGeometry face_geometry(const Positions& V, const Triangles& F);
+FlatTriangles flat_triangles(const Positions& V, const Triangles& F);
 
 // J of face f for the flat positions uv (one row per vertex).
-Eigen::Matrix2d face_jacobian(const FaceGeometry& g, const Triangles& F, const Eigen::MatrixX2d& uv, int f);
+Eigen::Matrix2d face_jacobian(const FlatTriangles& g, const Triangles& F, const Eigen::MatrixX2d& uv, int f);
 
 }  // namespace qd
