@@ -8,7 +8,8 @@ and the flattening filter, with the flattening's own bad parameters:
 warned_cases() says which odd cases succeed with a warning and which vertices must stay put.
 Usage: python3 make_bad_corpus.py DIR   writes DIR/<name>.ply and DIR/cases.json;
        python3 make_bad_corpus.py --table QUASIDEV   runs the command on every case and prints a
-       Markdown table (case, exit status, message) for the README's "What happens on bad input".
+       Markdown table (case, exit status, message; and what `quasidev segment` does with the
+       segment_cases() of the same file) for the README's "What happens on bad input".
 """
 import json
 import math
@@ -329,22 +330,37 @@ def main(directory):
     (d / "cases.json").write_text(json.dumps(index, indent=1) + "\n")
 
 
+def run_case(binary, directory, name, data, args, subcommand=()):
+    """(exit status, what `quasidev` said on stderr: the "quasidev: error: " prefix, the file name
+    and the temporary folder taken out; warnings after "success; warning: ", one after another)."""
+    src = pathlib.Path(directory) / f"{name}.ply"
+    src.write_bytes(data)
+    r = subprocess.run([binary, *subcommand, str(src), str(pathlib.Path(directory) / "out.ply"), "--quiet", *args],
+                       capture_output=True, text=True, timeout=600)
+    lines = [line.removeprefix("quasidev: error: ").removeprefix(f"'{src}': ").replace(str(src), f"{name}.ply")
+             for line in r.stderr.strip().splitlines()]
+    said = " ".join(line.replace("quasidev: warning: ", "") for line in lines)
+    if said and r.returncode == 0:
+        said = "success; warning: " + said
+    return r.returncode, (said or "success").replace("|", "\\|")
+
+
 def table(binary):
-    """Prints the README's table: each case, quasidev's exit status and its message (without
-    the "quasidev: error: " prefix and the file name)."""
-    print("| input | exit | what `quasidev` says |")
-    print("|---|---|---|")
+    """Prints the README's table: each case, quasidev's exit status and its message, and in the
+    last column what `quasidev segment` does with the same file and the segmentation's own bad
+    option of the same kind (segment_cases(); "same" when exit status and message are those of
+    the approximation)."""
+    print("| input | exit | what `quasidev` says | `quasidev segment`: exit, what it says |")
+    print("|---|---|---|---|")
     with tempfile.TemporaryDirectory() as d:
-        for name, data, args, _ in cases():
-            src = pathlib.Path(d) / f"{name}.ply"
-            src.write_bytes(data)
-            r = subprocess.run([binary, str(src), str(pathlib.Path(d) / "out.ply"), "--quiet", *args],
-                               capture_output=True, text=True, timeout=600)
-            said = r.stderr.strip().removeprefix("quasidev: error: ")
-            said = said.replace("quasidev: warning: ", "success; warning: ")
-            said = said.removeprefix(f"'{src}': ").replace(str(src), f"{name}.ply").replace("|", "\\|")
+        for (name, data, args, _), (_, _, seg_args, _) in zip(cases(), segment_cases()):
+            code, said = run_case(binary, d, name, data, args)
+            seg_code, seg_said = run_case(binary, d, name, data, seg_args, ["segment"])
             label = name.replace("_", " ") + (f" (`{' '.join(args)}`)" if args else "")
-            print(f"| {label} | {r.returncode} | {said or 'success'} |")
+            segment = "same" if (seg_code, seg_said) == (code, said) else f"{seg_code}, {seg_said}"
+            if seg_args != args:
+                segment = f"`{' '.join(seg_args)}`: {segment}" if seg_args else f"(the option dropped) {segment}"
+            print(f"| {label} | {code} | {said} | {segment} |")
 
 
 if __name__ == "__main__":

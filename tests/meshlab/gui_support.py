@@ -9,8 +9,9 @@ fields and menu entries with their screen positions, so the tests check the text
 click a button where it really is.
 
 `exercise_filter` is the one scenario both generations run: open the mesh, find the filter in
-its Filters submenu (and the flattening filter under Filters > Texture) and through the filter
-search (Ctrl+F), open its dialog from the menu, read
+its Filters submenu (the flattening filter under Filters > Texture, the segmentation under Filters
+> Quality Measure and Computations) and all three through the filter search (Ctrl+F), open the
+approximation's dialog from the menu, read
 the dialog, press Apply, wait for MeshLab's "Applied filter" log line, close the dialog and
 export the mesh through File > Export Mesh As. `check_dialog` and `check_filter_result` then
 check the dialog's labels and the saved mesh against the input; `run_and_check` is the two
@@ -32,14 +33,15 @@ from typing import Callable
 import numpy as np
 from PIL import Image
 
-from ml2020_support import (FILTER_NAME, FLATTEN_FILTER_NAME, REPO, Mesh, boundary_vertices, integrated_curvature, load_mesh,
-                            mlx_parameters, seam_vertices)
+from ml2020_support import (FILTER_NAME, FLATTEN_FILTER_NAME, REPO, SEGMENT_FILTER_NAME, Mesh, boundary_vertices,
+                            integrated_curvature, load_mesh, mlx_parameters, seam_vertices)
 
 SCREEN = (1280, 1024)
 WINDOW = (1200, 900)           # the main window is moved to the top-left corner and resized to this
 VIEWPORT = (10, 80, 700, 700)  # left, top, right, bottom of the 3D view inside WINDOW (both versions)
 MENU = "Smoothing, Fairing and Deformation"   # the Filters submenu that lists our filter
 FLATTEN_MENU = "Texture"                      # the one that lists the flattening, in both versions
+SEGMENT_MENU = "Quality Measure and Computations"  # the segmentation's (FilterClass Quality), in both
 PROBE_SOURCE = Path(__file__).with_name("gui_probe.cpp")
 # The filter's parameters (the names of .mlx files and pymeshlab) and the labels its dialog shows
 # for them, in the dialog's order.
@@ -334,12 +336,13 @@ def exercise_filter(gui: MeshLabGui, mesh: Path, shots: Path) -> GuiRun:
     assert FILTER_NAME in menu_entries, f"'{FILTER_NAME}' not under Filters > {MENU}: {menu_entries}"
     d.key("Escape", "Escape")
     time.sleep(0.5)
-    texture_entries = open_filter_submenu(gui, main, FLATTEN_MENU).texts("QAction")
-    d.screenshot(shots / "gui_texture_menu.png")
-    assert FLATTEN_FILTER_NAME in texture_entries, \
-        f"'{FLATTEN_FILTER_NAME}' not under Filters > {FLATTEN_MENU}: {texture_entries}"
-    d.key("Escape", "Escape")
-    time.sleep(0.5)
+    for menu, name, shot in ((FLATTEN_MENU, FLATTEN_FILTER_NAME, "gui_texture_menu.png"),
+                             (SEGMENT_MENU, SEGMENT_FILTER_NAME, "gui_quality_menu.png")):
+        entries = open_filter_submenu(gui, main, menu).texts("QAction")
+        d.screenshot(shots / shot)
+        assert name in entries, f"'{name}' not under Filters > {menu}: {entries}"
+        d.key("Escape", "Escape")
+        time.sleep(0.5)
 
     # The filter search (Ctrl+F) finds it.
     gui.focus_3d_view(main)
@@ -421,7 +424,8 @@ def run_and_check(gui: MeshLabGui, workdir: Path) -> GuiRun:
     shutil.copy(REPO / "sample_meshes" / "patches.ply", mesh)
     run = exercise_filter(gui, mesh, workdir)
     print(f"screenshots in {workdir}")
-    assert FILTER_NAME in run.search_entries, run.search_entries
+    for name in (FILTER_NAME, SEGMENT_FILTER_NAME, FLATTEN_FILTER_NAME):
+        assert name in run.search_entries, f"the filter search does not find '{name}': {run.search_entries}"
     check_dialog(run.dialog)
     check_filter_result(run, mesh, workdir)
     return run

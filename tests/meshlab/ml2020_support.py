@@ -23,6 +23,7 @@ from plyio import PlyData, PlyElement, PlyProperty, read_ply, write_ply  # noqa:
 
 FILTER_NAME = "Quasi-Developable Approximation"
 FLATTEN_FILTER_NAME = "Quasi-Developable Flattening"
+SEGMENT_FILTER_NAME = "Quasi-Developable Segmentation"
 SELECTED = 0x20  # vcg's SELECTED vertex flag, as MeshLab 2020.09 reads/writes PLY "flags"
 XVFB = ["xvfb-run", "-a", "-s", "-screen 0 1024x768x24"]
 XVFB_CLEANUP_ERROR = "xvfb-run: error: problem while cleaning up temporary directory"

@@ -3,7 +3,8 @@
 Starts the private prefix's meshlab (scripts/install_plugin.sh --user) on a sample with patch
 ids and runs gui_support.run_and_check, the scenario shared with MeshLab 2025.07
 (test_gui_2025.py): the filter is listed under Filters > Smoothing, Fairing and Deformation (the
-flattening under Filters > Texture) and found by the filter search, its dialog shows every parameter, Apply runs it, the grey input
+flattening under Filters > Texture, the segmentation under Filters > Quality Measure and
+Computations) and all three are found by the filter search, its dialog shows every parameter, Apply runs it, the grey input
 becomes coloured by the ramp, and the mesh exported through the GUI has moved vertices, kept
 boundary and seams, less curvature and the colours. Screenshots stay in the test's tmp dir.
 """

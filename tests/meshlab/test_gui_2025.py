@@ -4,8 +4,10 @@ Xvfb, run in the sid chroot that scripts/setup_sid_chroot.sh makes once (issue 1
 The float plugin build/bin/meshlab2025/libfilter_quasidev.so is installed the two ways a user
 does (README): as root into the package's plugin folder /usr/lib/x86_64-linux-gnu/meshlab/plugins
 of the chroot, or without root into ~/.local/share/VCG/MeshLab_64bit_fp/MeshLabExtraPlugins/2025.07.
-Then the scenario shared with MeshLab 2020.09 (gui_support.run_and_check, test_gui.py) runs on
-the GUI in the chroot, plus what only 2025.07 has: no "Unable to load the following plugins" box
+Then the scenario shared with MeshLab 2020.09 (gui_support.run_and_check, test_gui.py: the
+approximation, the segmentation and the flattening each in its Filters submenu and in the filter
+search, the approximation's dialog, Apply and export) runs on the GUI in the chroot, plus what
+only 2025.07 has: no "Unable to load the following plugins" box
 (any message box fails the run with its text) and the dialog's pymeshlab name.
 
 The chroot's mounts (/dev, /proc, the X socket, the work dir) live in a private mount namespace of
