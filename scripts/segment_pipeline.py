@@ -10,7 +10,7 @@ For each mesh runs
     free --tolerance-mode total --tolerance T`, T = the smaller Hausdorff distance of MeshLab's
     two runs in the approximation's average edge lengths (AE), rounded down to three digits. No
     vertex then moves more than T, so the surfaces are at most T apart: a distance no larger
-    than MeshLab's. (With free seams a total tolerance runs the joint pass only.);
+    than MeshLab's (the three passes of free seams share the budget);
   * MeshLab's apply_coord_developability_of_mesh (Stein, Grinspun, Crane 2018) in pymeshlab at
     its defaults (which remesh: edge flips and collapses) and without remeshing
     (edgeflips=False, edgecollapses=False);

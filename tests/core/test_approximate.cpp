@@ -186,6 +186,24 @@ TEST(Approximate, FixedSeamsStayAndFreeSeamsGoFurther) {
   EXPECT_GT(free.abd_reduction, fixed.abd_reduction);
 }
 
+// With free seams a total tolerance is a budget from the input for all three passes together:
+// every pass runs and no vertex moves past the budget.
+TEST(Approximate, FreeSeamsKeepATotalBudgetOverTheirThreePasses) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 3);
+  p.params.seams = SeamMode::Free;
+  p.params.tolerance_mode = ToleranceMode::Total;
+  p.params.tolerance = 0.03;
+  const Result r = approximate(p);
+  EXPECT_LE(r.total_after.max_disp, 0.03 * (1 + 1e-12));
+  ASSERT_EQ(r.patches.size(), 3u);
+  for (const PatchReport& patch : r.patches) {
+    EXPECT_NE(patch.stop_reason.find("all patches at once"), std::string::npos) << patch.stop_reason;
+    EXPECT_NE(patch.stop_reason.find("seams held"), std::string::npos) << patch.stop_reason;
+    EXPECT_NE(patch.stop_reason.find("seams free"), std::string::npos) << patch.stop_reason;
+  }
+  EXPECT_GT(r.abd_reduction, 0.0);
+}
+
 TEST(Approximate, BadParametersAreRejectedWithoutTouchingTheInput) {
   Problem p = bumpy();
   p.params.tolerance = -1;

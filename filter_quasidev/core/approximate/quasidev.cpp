@@ -273,16 +273,28 @@ struct GroupRun {
   double time_ms = 0;
 };
 
-GroupRun run_group(const Positions& V, const Triangles& F, const std::vector<int>& faces,
-                   const std::vector<int>& patch, const std::vector<char>& constrained,
-                   const std::vector<char>& interior, const VertexFaces& incident,
-                   const Params& params, double ae, const std::function<void(double)>& progress) {
+// With a total tolerance, what each vertex has left of its budget after the moves of earlier
+// groups (input: the positions before any): |v' − v_now| ≤ δ − |v_now − v_input| keeps
+// |v' − v_input| ≤ δ.
+void spend_earlier_moves(GroupMesh& g, const Positions& input) {
+  for (size_t l = 0; l < g.global_vertex.size(); ++l) {
+    const double moved = (g.V0.row(static_cast<Eigen::Index>(l)) - input.row(g.global_vertex[l])).norm();
+    g.tolerance[l] = std::max(0.0, g.tolerance[l] - moved);
+  }
+}
+
+GroupRun run_group(const Positions& input, const Positions& V, const Triangles& F,
+                   const std::vector<int>& faces, const std::vector<int>& patch,
+                   const std::vector<char>& constrained, const std::vector<char>& interior,
+                   const VertexFaces& incident, const Params& params, double ae,
+                   const std::function<void(double)>& progress) {
   const auto t0 = Clock::now();
   GroupRun run;
   double setup_ms = 0;
   {
     StageTimer timer(setup_ms);
     run.group = extract_group(V, F, faces, patch, constrained, interior, incident, params);
+    if (params.tolerance_mode == ToleranceMode::Total) spend_earlier_moves(run.group, input);
   }
   const GroupMesh& g = run.group;
   double step1_ms = 0;
@@ -348,7 +360,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
   // draped garments), then each patch with its seams held, then each patch again moving its
   // seam vertices (moved by one patch, seen by the next, so they stay shared). Measured on the
   // shared garments, free seams then remove more than fixed ones (issue 11). With a total
-  // tolerance the caps are measured from the input, so only the joint pass runs.
+  // tolerance each pass moves a vertex only by what the earlier passes left of its budget.
   std::vector<std::vector<int>> groups;
   std::vector<const char*> pass;  // of each group, named in the reports when there are several
   const auto add_pass = [&](const char* name) {
@@ -358,15 +370,14 @@ Result approximate(const Problem& problem, const Progress& progress) {
     }
   };
   const bool free_seams = params.seams == SeamMode::Free;
-  const bool passes = !free_seams || params.tolerance_mode == ToleranceMode::Step;
   if (free_seams) {
     groups.push_back(indices(nf));
     pass.push_back("all patches at once");
   }
   const size_t joint_groups = groups.size();
-  if (passes) add_pass("seams held");
+  add_pass("seams held");
   const size_t held_groups = groups.size();  // [joint_groups, held_groups): `held` constraints
-  if (free_seams && passes) add_pass("seams free");
+  if (free_seams) add_pass("seams free");
 
   // Step 1 and Step 2 per group, round by round (solve_rounds.h); the groups of a round share
   // no vertex and run in parallel from the positions the earlier rounds left.
@@ -390,7 +401,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
                                     static_cast<double>(groups.size())),
                    "deforming");
       };
-      runs[round[k]] = run_group(r.V, F, groups[round[k]], patch, seams_held ? held : constrained, interior,
+      runs[round[k]] = run_group(V, r.V, F, groups[round[k]], patch, seams_held ? held : constrained, interior,
                                  incident, group_params, r.average_edge, group_progress);
       ++done;
     });
