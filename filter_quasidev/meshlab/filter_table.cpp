@@ -1,5 +1,7 @@
 #include "filter_table.h"
 
+#include <cmath>
+
 #include "flatten_adapter.h"
 #include "quasidev_adapter.h"
 #include "segment_adapter.h"
@@ -9,6 +11,14 @@ namespace qdml {
 double number_value(const ParamValues& values, const std::string& name, double fallback) {
   const auto it = values.find(name);
   return it == values.end() ? fallback : std::get<double>(it->second);
+}
+
+int whole_value(const ParamValues& values, const std::string& name, int fallback) {
+  return static_cast<int>(std::lround(number_value(values, name, fallback)));
+}
+
+bool flag_value(const ParamValues& values, const std::string& name, bool fallback) {
+  return number_value(values, name, fallback ? 1.0 : 0.0) != 0;
 }
 
 std::string text_value(const ParamValues& values, const std::string& name) {

@@ -41,6 +41,10 @@ using ParamValues = std::map<std::string, ParamValue>;
 
 // The number given for `name`, or `fallback` when values do not hold it.
 double number_value(const ParamValues& values, const std::string& name, double fallback);
+// The same rounded to a whole number (Int and Enum parameters).
+int whole_value(const ParamValues& values, const std::string& name, int fallback);
+// The same as a switch (Bool parameters): any value but 0 is on.
+bool flag_value(const ParamValues& values, const std::string& name, bool fallback);
 // The text given for `name` (a SaveFile path), or "" when values do not hold it.
 std::string text_value(const ParamValues& values, const std::string& name);
 

@@ -1,6 +1,5 @@
 #include "flatten_adapter.h"
 
-#include <cmath>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -133,15 +132,13 @@ std::vector<ParamSpec> flatten_parameter_specs() {
 FlattenSettings flatten_settings_from_values(const ParamValues& values) {
   FlattenSettings s;
   qd::FlattenParams& p = s.params;
-  const auto number = [&](const char* name, double fallback) { return number_value(values, name, fallback); };
-  const auto text = [&](const char* name) { return text_value(values, name); };
-  p.max_iterations = static_cast<int>(std::lround(number("max_iter", p.max_iterations)));
-  p.tolerance = number("tolerance", p.tolerance);
-  p.gap = number("gap", p.gap);
-  p.notch_spacing = number("notch_spacing", p.notch_spacing);
-  s.svg_file = text("svg_file");
-  s.dxf_file = text("dxf_file");
-  const long unit = std::lround(number("unit", 0));
+  p.max_iterations = whole_value(values, "max_iter", p.max_iterations);
+  p.tolerance = number_value(values, "tolerance", p.tolerance);
+  p.gap = number_value(values, "gap", p.gap);
+  p.notch_spacing = number_value(values, "notch_spacing", p.notch_spacing);
+  s.svg_file = text_value(values, "svg_file");
+  s.dxf_file = text_value(values, "dxf_file");
+  const long unit = whole_value(values, "unit", 0);
   s.unit = unit > 0 && unit < static_cast<long>(kUnits.size()) ? kUnits[static_cast<std::size_t>(unit)] : "";
   return s;
 }

@@ -1,6 +1,5 @@
 #include "quasidev_adapter.h"
 
-#include <cmath>
 #include <stdexcept>
 #include <utility>
 
@@ -188,26 +187,24 @@ std::vector<ParamSpec> parameter_specs(const CMeshO& m) {
 Settings settings_from_values(const ParamValues& values) {
   Settings s;
   qd::Params& p = s.params;
-  const auto get = [&](const char* name, double fallback) { return number_value(values, name, fallback); };
   const auto choice = [&](const char* name, auto fallback) {
-    return static_cast<decltype(fallback)>(
-        static_cast<int>(std::lround(get(name, static_cast<int>(fallback)))));
+    return static_cast<decltype(fallback)>(whole_value(values, name, static_cast<int>(fallback)));
   };
-  p.tolerance = get("tolerance", p.tolerance);
+  p.tolerance = number_value(values, "tolerance", p.tolerance);
   p.tolerance_mode = choice("tolerance_mode", p.tolerance_mode);
-  p.max_iter = static_cast<int>(std::lround(get("max_iter", p.max_iter)));
-  p.weight = get("weight", p.weight);
-  p.anchor = get("anchor", p.anchor);
+  p.max_iter = whole_value(values, "max_iter", p.max_iter);
+  p.weight = number_value(values, "weight", p.weight);
+  p.anchor = number_value(values, "anchor", p.anchor);
   p.developability = choice("developability", p.developability);
-  p.defect_weight = get("defect_weight", p.defect_weight);
-  s.use_patches = get("use_patches", s.use_patches) != 0;
+  p.defect_weight = number_value(values, "defect_weight", p.defect_weight);
+  s.use_patches = flag_value(values, "use_patches", s.use_patches);
   p.seams = choice("seam_mode", p.seams);
-  p.keep_boundary = get("keep_boundary", p.keep_boundary) != 0;
+  p.keep_boundary = flag_value(values, "keep_boundary", p.keep_boundary);
   p.targets = choice("target_mode", p.targets);
-  p.stop_abd = get("stop_abd", p.stop_abd);
-  p.stop_obd = get("stop_obd", p.stop_obd);
-  s.displacement_quality = get("output_quality", s.displacement_quality) != 0;
-  s.colorize = get("colorize", s.colorize) != 0;
+  p.stop_abd = number_value(values, "stop_abd", p.stop_abd);
+  p.stop_obd = number_value(values, "stop_obd", p.stop_obd);
+  s.displacement_quality = flag_value(values, "output_quality", s.displacement_quality);
+  s.colorize = flag_value(values, "colorize", s.colorize);
   return s;
 }
 

@@ -1,7 +1,6 @@
 #include "segment_adapter.h"
 
 #include <algorithm>
-#include <cmath>
 #include <stdexcept>
 
 #include "engine_mesh.h"  // first: MeshLab's mesh type
@@ -96,19 +95,13 @@ std::vector<ParamSpec> segment_parameter_specs() {
 SegmentSettings segment_settings_from_values(const ParamValues& values) {
   SegmentSettings s;
   qd::SegmentParams& p = s.params;
-  const auto get = [&](const char* name, double fallback) {
-    return number_value(values, name, fallback);
-  };
-  const auto whole = [&](const char* name, int fallback) {
-    return static_cast<int>(std::lround(get(name, fallback)));
-  };
-  p.max_error_deg = get("max_error_deg", p.max_error_deg);
-  p.min_faces = whole("min_faces", p.min_faces);
-  p.min_area = get("min_area", p.min_area);
-  p.target_patches = whole("target_patches", p.target_patches);
-  s.keep_patches = get("keep_patches", s.keep_patches) != 0;
-  s.selection_border = get("selection_border", s.selection_border) != 0;
-  p.crease_deg = get("crease_deg", p.crease_deg);
+  p.max_error_deg = number_value(values, "max_error_deg", p.max_error_deg);
+  p.min_faces = whole_value(values, "min_faces", p.min_faces);
+  p.min_area = number_value(values, "min_area", p.min_area);
+  p.target_patches = whole_value(values, "target_patches", p.target_patches);
+  s.keep_patches = flag_value(values, "keep_patches", s.keep_patches);
+  s.selection_border = flag_value(values, "selection_border", s.selection_border);
+  p.crease_deg = number_value(values, "crease_deg", p.crease_deg);
   return s;
 }
 
