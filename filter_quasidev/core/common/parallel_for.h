@@ -1,6 +1,7 @@
 // Runs work(i) for every i in [0, n) on up to `threads` threads, the caller's among them; each
 // index runs once, on whichever thread is free. After all have finished, rethrows the exception
-// of the lowest index that threw, if any, so errors do not depend on the scheduling.
+// of the lowest index that threw, if any, so errors do not depend on the scheduling. The
+// helper threads run OpenMP regions serially, as SerialLibraries makes the caller's.
 #pragma once
 
 #include <algorithm>
@@ -8,6 +9,8 @@
 #include <exception>
 #include <thread>
 #include <vector>
+
+#include "common/serial_libraries.h"
 
 namespace qd {
 
@@ -25,7 +28,11 @@ void parallel_for(size_t n, size_t threads, const Work& work) {
     }
   };
   std::vector<std::thread> helpers;
-  for (size_t t = 1; t < std::min(n, threads); ++t) helpers.emplace_back(drain);
+  for (size_t t = 1; t < std::min(n, threads); ++t)
+    helpers.emplace_back([&drain] {
+      serial_openmp_in_this_thread();
+      drain();
+    });
   drain();
   for (std::thread& helper : helpers) helper.join();
   for (const std::exception_ptr& error : errors)

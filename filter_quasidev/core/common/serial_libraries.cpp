@@ -16,6 +16,11 @@ Function loaded(const char* name) {
 
 }  // namespace
 
+void serial_openmp_in_this_thread() {
+  static const auto set_levels = loaded<SetCount>("omp_set_max_active_levels");
+  if (set_levels) set_levels(0);
+}
+
 SerialLibraries::SerialLibraries() {
   const auto get_blas = loaded<GetCount>("openblas_get_num_threads");
   const auto set_blas = loaded<SetCount>("openblas_set_num_threads");
