@@ -1,5 +1,5 @@
-// Rounds of solve groups: groups in one round share no vertex, neighbours run one after the
-// other, and the schedule is the same whatever the thread count (it does not take one).
+// Rounds of solve groups: groups in one round move no common vertex, neighbours run one after
+// the other, and the schedule is the same whatever the thread count (it does not take one).
 #include <gtest/gtest.h>
 
 #include <set>
@@ -19,7 +19,7 @@ std::vector<std::vector<int>> groups_by_patch(const Problem& p, int patches) {
 TEST(SolveRounds, NeighbouringGroupsNeverShareARound) {
   const Problem p = test::bumpy_cylinder(24, 6, 0.0, 0.0, 6);  // a ring of 6 sectors
   const auto groups = groups_by_patch(p, 6);
-  const auto rounds = solve_rounds(groups, p.F, p.V.rows());
+  const auto rounds = solve_rounds(groups, p.F, std::vector<char>(static_cast<size_t>(p.V.rows()), 0));
   std::set<size_t> all;
   for (const auto& round : rounds) {
     std::set<int> used;
@@ -38,6 +38,16 @@ TEST(SolveRounds, NeighbouringGroupsNeverShareARound) {
   EXPECT_EQ(rounds[1], (std::vector<size_t>{1, 3, 5}));
 }
 
+// With the seams held (every pass of fixed seams), the sectors move no common vertex: one round.
+TEST(SolveRounds, GroupsSharingOnlyHeldVerticesShareARound) {
+  const Problem p = test::bumpy_cylinder(24, 6, 0.0, 0.0, 6);
+  std::vector<char> held(static_cast<size_t>(p.V.rows()), 0);
+  for (Eigen::Index v = 0; v < p.V.rows(); ++v) held[static_cast<size_t>(v)] = v % 24 % 4 == 0;  // sector borders
+  const auto rounds = solve_rounds(groups_by_patch(p, 6), p.F, held);
+  ASSERT_EQ(rounds.size(), 1u);
+  EXPECT_EQ(rounds[0], (std::vector<size_t>{0, 1, 2, 3, 4, 5}));
+}
+
 TEST(SolveRounds, SeparateGroupsShareOneRound) {
   Problem a = test::bumpy_cylinder(12, 3, 0.0);
   const Eigen::Index n = a.V.rows();
@@ -45,7 +55,7 @@ TEST(SolveRounds, SeparateGroupsShareOneRound) {
   F << a.F, (a.F.array() + static_cast<int>(n)).matrix();  // a second, disjoint copy
   std::vector<std::vector<int>> groups(2);
   for (int f = 0; f < F.rows(); ++f) groups[f < a.F.rows() ? 0 : 1].push_back(f);
-  const auto rounds = solve_rounds(groups, F, 2 * n);
+  const auto rounds = solve_rounds(groups, F, std::vector<char>(static_cast<size_t>(2 * n), 0));
   ASSERT_EQ(rounds.size(), 1u);
   EXPECT_EQ(rounds[0], (std::vector<size_t>{0, 1}));
 }

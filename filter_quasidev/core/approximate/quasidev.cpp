@@ -321,6 +321,22 @@ GroupRun run_group(const Positions& input, const Positions& V, const Triangles& 
   return run;
 }
 
+// Σ|K(v)| over the mesh's interior vertices (Eq. 18): what the never-worse rule keeps from
+// rising when groups run at once.
+double mesh_g_abd(const Positions& V, const Triangles& F, const std::vector<char>& interior) {
+  double sum = 0;
+  for (double k : gaussian_curvature(vertex_angles(V, F), interior)) sum += std::abs(k);
+  return sum;
+}
+
+std::string round_rerun_note(const std::vector<size_t>& round, const std::vector<GroupRun>& runs) {
+  std::string ids;
+  for (size_t gi : round)
+    for (const PatchFit& p : runs[gi].fits) ids += (ids.empty() ? "" : ", ") + std::to_string(p.id);
+  return "note: patches " + ids +
+         ", solved at once, raised the curvature where they meet; solved again one after the other";
+}
+
 // Threads to use: the parameter, or every core when it is 0.
 size_t thread_count(int requested) {
   if (requested > 0) return static_cast<size_t>(requested);
@@ -361,26 +377,30 @@ Result approximate(const Problem& problem, const Progress& progress) {
   // seam vertices (moved by one patch, seen by the next, so they stay shared). Measured on the
   // shared garments, free seams then remove more than fixed ones (issue 11). With a total
   // tolerance each pass moves a vertex only by what the earlier passes left of its budget.
+  struct Pass {
+    const std::vector<char>* constrained;  // the vertices no group of the pass moves
+    size_t first = 0, last = 0;            // its groups
+  };
   std::vector<std::vector<int>> groups;
+  std::vector<Pass> passes;
   std::vector<const char*> pass;  // of each group, named in the reports when there are several
-  const auto add_pass = [&](const char* name) {
-    for (auto& [id, faces] : faces_of_patch) {
-      groups.push_back(faces);
-      pass.push_back(name);
-    }
+  const auto add_pass = [&](const char* name, const std::vector<char>& held_here, bool per_patch) {
+    passes.push_back({&held_here, groups.size(), 0});
+    if (per_patch)
+      for (auto& [id, faces] : faces_of_patch) groups.push_back(faces);
+    else
+      groups.push_back(indices(nf));
+    passes.back().last = groups.size();
+    pass.resize(groups.size(), name);
   };
   const bool free_seams = params.seams == SeamMode::Free;
-  if (free_seams) {
-    groups.push_back(indices(nf));
-    pass.push_back("all patches at once");
-  }
-  const size_t joint_groups = groups.size();
-  add_pass("seams held");
-  const size_t held_groups = groups.size();  // [joint_groups, held_groups): `held` constraints
-  if (free_seams) add_pass("seams free");
+  if (free_seams) add_pass("all patches at once", constrained, false);
+  add_pass("seams held", held, true);
+  if (free_seams) add_pass("seams free", constrained, true);
 
-  // Step 1 and Step 2 per group, round by round (solve_rounds.h); the groups of a round share
-  // no vertex and run in parallel from the positions the earlier rounds left.
+  // Step 1 and Step 2 per group, pass by pass and round by round (solve_rounds.h): the groups
+  // of a round move no common vertex and run in parallel from the positions the earlier
+  // rounds left.
   std::vector<GroupRun> runs(groups.size());
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<size_t> done{0};
@@ -389,27 +409,47 @@ Result approximate(const Problem& problem, const Progress& progress) {
   // the result would depend on --threads (serial_libraries.h). Switched once per call, since switching OpenBLAS
   // back and forth restarts its threads.
   const SerialLibraries serial_libraries;
-  for (const std::vector<size_t>& round : solve_rounds(groups, F, V.rows())) {
-    const size_t threads = std::min(round.size(), thread_count(params.threads));
+  const auto run_round = [&](const std::vector<size_t>& round, const Pass& p) {
     Params group_params = params;  // a patch alone in its round has every thread
     group_params.threads = static_cast<int>(round.size() == 1 ? thread_count(params.threads) : 1);
-    const bool seams_held = round.front() >= joint_groups && round.front() < held_groups;
-    parallel_for(round.size(), threads, [&](size_t k) {
+    parallel_for(round.size(), std::min(round.size(), thread_count(params.threads)), [&](size_t k) {
       const auto group_progress = [&](double fraction) {  // only the caller's thread reports
         if (progress && std::this_thread::get_id() == caller)
           progress(static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
                                     static_cast<double>(groups.size())),
                    "deforming");
       };
-      runs[round[k]] = run_group(V, r.V, F, groups[round[k]], patch, seams_held ? held : constrained, interior,
+      runs[round[k]] = run_group(V, r.V, F, groups[round[k]], patch, *p.constrained, interior,
                                  incident, group_params, r.average_edge, group_progress);
       ++done;
     });
-    for (size_t gi : round) {
-      const GroupRun& run = runs[gi];
-      for (size_t l = 0; l < run.group.global_vertex.size(); ++l)
-        if (!run.group.fixed[l])
-          r.V.row(run.group.global_vertex[l]) = run.outcome.V.row(static_cast<Eigen::Index>(l));
+  };
+  const auto keep = [&](size_t gi) {  // a group's result into r.V
+    const GroupRun& run = runs[gi];
+    for (size_t l = 0; l < run.group.global_vertex.size(); ++l)
+      if (!run.group.fixed[l])
+        r.V.row(run.group.global_vertex[l]) = run.outcome.V.row(static_cast<Eigen::Index>(l));
+  };
+  for (const Pass& p : passes) {
+    const std::vector<std::vector<int>> pass_groups(groups.begin() + static_cast<long>(p.first),
+                                                    groups.begin() + static_cast<long>(p.last));
+    for (std::vector<size_t> round : solve_rounds(pass_groups, F, *p.constrained)) {
+      for (size_t& gi : round) gi += p.first;
+      const Positions start = round.size() > 1 ? r.V : Positions();
+      const double g_abd_before = round.size() > 1 ? mesh_g_abd(r.V, F, interior) : 0.0;
+      run_round(round, p);
+      for (size_t gi : round) keep(gi);
+      if (round.size() < 2 || mesh_g_abd(r.V, F, interior) <= g_abd_before) continue;
+      // Never worse over the mesh (§5.4): each group's step was checked with its neighbours
+      // where they started, and together they raised the curvature where they meet. The
+      // first group's result stands; the others run again, each from the one before.
+      r.log.push_back(round_rerun_note(round, runs));
+      r.V = start;
+      keep(round.front());
+      for (size_t k = 1; k < round.size(); ++k) {
+        run_round({round[k]}, p);
+        keep(round[k]);
+      }
     }
   }
 

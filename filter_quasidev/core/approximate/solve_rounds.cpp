@@ -5,13 +5,15 @@
 namespace qd {
 
 std::vector<std::vector<size_t>> solve_rounds(const std::vector<std::vector<int>>& groups,
-                                              const Triangles& F, Eigen::Index vertex_count) {
-  // Groups touching each vertex, then each group's neighbours.
-  std::vector<std::vector<size_t>> at_vertex(static_cast<size_t>(vertex_count));
+                                              const Triangles& F, const std::vector<char>& held) {
+  // Groups touching each moving vertex, then each group's neighbours.
+  std::vector<std::vector<size_t>> at_vertex(held.size());
   for (size_t g = 0; g < groups.size(); ++g)
     for (int f : groups[g])
       for (int c = 0; c < 3; ++c) {
-        std::vector<size_t>& list = at_vertex[static_cast<size_t>(F(f, c))];
+        const auto v = static_cast<size_t>(F(f, c));
+        if (held[v]) continue;
+        std::vector<size_t>& list = at_vertex[v];
         if (list.empty() || list.back() != g) list.push_back(g);
       }
   std::vector<std::vector<size_t>> neighbours(groups.size());
