@@ -6,8 +6,10 @@
 // and CHOLMOD from there on (the crossover measured by bench/qd_bench, README, Performance), or
 // SimplicialLDLT always in a build without CHOLMOD. The angle-defect rows (angle_defect.h)
 // widen the pattern to pairs of vertices with a common neighbour (about 29 stored non-zeros
-// per unknown instead of 11); the supernodal factor wins there from kCholmodFromUnknownsWide
-// (measured on the shirt's 4.5k-unknown panels: 20 ms CHOLMOD, 42 ms SimplicialLDLT).
+// per unknown instead of 11); the supernodal factor wins there from kCholmodFromUnknownsWide.
+// Measured with bench/qd_bench --grid N -- --max-iter 3 --method direct, three factorisations
+// (CHOLMOD / SimplicialLDLT, ms): vertex-graph pattern 675 unknowns 3.2 / 1.2, 1,386 3.9 / 4.1,
+// 2,883 9.8 / 17; with defect rows 675 unknowns 3.2 / 6.3, 1,386 9.9 / 17.
 #pragma once
 
 #include <Eigen/Core>
@@ -18,9 +20,9 @@ namespace qd {
 
 enum class SolverKind { Auto, Cholmod, EigenLLT, EigenLDLT };  // back end (§5.4)
 
-constexpr long kCholmodFromUnknowns = 6000;
+constexpr long kCholmodFromUnknowns = 1500;
 constexpr long kWidePatternNonZerosPerUnknown = 20;
-constexpr long kCholmodFromUnknownsWide = 1500;
+constexpr long kCholmodFromUnknownsWide = 600;
 
 class SparseCholesky {
  public:
