@@ -29,9 +29,12 @@ qdml::ParamValues defaults() {
   return values;
 }
 
+// One directory per test: ctest runs the tests in processes of their own, two of which may start
+// in the same millisecond and so share gtest's time-based random seed.
 std::filesystem::path temp_dir() {
   const auto dir = std::filesystem::temp_directory_path() /
-                   ("qd_flatten_adapter_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+                   ("qd_flatten_adapter_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
   std::filesystem::create_directories(dir);
   return dir;
 }
