@@ -1,6 +1,8 @@
 // Properties of the whole engine (qd::approximate) on generated meshes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <Eigen/Geometry>
 
 #include "approximate/deformation_system.h"
@@ -248,6 +250,10 @@ TEST(Approximate, PatchesThatRaiseTheirSeamsTogetherAreSolvedAgainInTurn) {
   p.params.developability = Developability::Curve;
   p.params.tolerance = 5;
   const Result r = same_with_1_and_2_threads(p);
+  std::vector<int> percents;
+  approximate(p, [&](int percent, const std::string&) { percents.push_back(percent); });
+  EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));
+  EXPECT_LE(*std::max_element(percents.begin(), percents.end() - 1), 99) << "100 % only when done";
   int notes = 0;
   for (const std::string& line : r.log) notes += line.rfind("note: patches 0, 1, solved at once", 0) == 0;
   EXPECT_EQ(notes, 1);

@@ -413,10 +413,11 @@ Result approximate(const Problem& problem, const Progress& progress) {
     Params group_params = params;  // a patch alone in its round has every thread
     group_params.threads = static_cast<int>(round.size() == 1 ? thread_count(params.threads) : 1);
     parallel_for(round.size(), std::min(round.size(), thread_count(params.threads)), [&](size_t k) {
-      const auto group_progress = [&](double fraction) {  // only the caller's thread reports
+      // Only the caller's thread reports; below 100 % even when groups run again (rare).
+      const auto group_progress = [&](double fraction) {
         if (progress && std::this_thread::get_id() == caller)
-          progress(static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
-                                    static_cast<double>(groups.size())),
+          progress(std::min(99, static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
+                                                 static_cast<double>(groups.size()))),
                    "deforming");
       };
       runs[round[k]] = run_group(V, r.V, F, groups[round[k]], patch, *p.constrained, interior,
