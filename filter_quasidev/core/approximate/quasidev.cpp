@@ -321,12 +321,44 @@ GroupRun run_group(const Positions& input, const Positions& V, const Triangles& 
   return run;
 }
 
-// Σ|K(v)| over the mesh's interior vertices (Eq. 18): what the never-worse rule keeps from
-// rising when groups run at once.
-double mesh_g_abd(const Positions& V, const Triangles& F, const std::vector<char>& interior) {
-  double sum = 0;
-  for (double k : gaussian_curvature(vertex_angles(V, F), interior)) sum += std::abs(k);
-  return sum;
+// G_ABD (Σ|K(v)| over interior vertices, Eq. 18) of the mesh and of each group of a round (over
+// the vertices of its faces, seams included): what the never-worse rule keeps from rising when
+// groups run at once.
+struct RoundFigures {
+  double mesh = 0;
+  std::vector<double> group;
+};
+RoundFigures round_figures(const Positions& V, const Triangles& F, const std::vector<char>& interior,
+                           const std::vector<std::vector<int>>& groups, const std::vector<size_t>& round) {
+  const std::vector<double> K = gaussian_curvature(vertex_angles(V, F), interior);
+  RoundFigures out;
+  for (double k : K) out.mesh += std::abs(k);
+  std::vector<size_t> seen(K.size(), groups.size());  // the last group that counted the vertex
+  for (size_t gi : round) {
+    double sum = 0;
+    for (int f : groups[gi])
+      for (int c = 0; c < 3; ++c) {
+        const auto v = static_cast<size_t>(F(f, c));
+        if (seen[v] != gi) sum += std::abs(K[v]);
+        seen[v] = gi;
+      }
+    out.group.push_back(sum);
+  }
+  return out;
+}
+
+// Worse than before: the mesh's G_ABD, or that of a group that moves a vertex (a group that
+// moves none has no step of its own to hold back), rose. Run in turn, groups never make either
+// rise: each checks its own faces' vertices, seams included, with its neighbours' results.
+bool round_made_worse(const RoundFigures& before, const RoundFigures& after, const std::vector<size_t>& round,
+                      const std::vector<GroupRun>& runs) {
+  if (after.mesh > before.mesh) return true;
+  for (size_t k = 0; k < round.size(); ++k) {
+    const std::vector<char>& fixed = runs[round[k]].group.fixed;
+    const bool moves = std::find(fixed.begin(), fixed.end(), 0) != fixed.end();
+    if (moves && after.group[k] > before.group[k]) return true;
+  }
+  return false;
 }
 
 std::string round_rerun_note(const std::vector<size_t>& round, const std::vector<GroupRun>& runs) {
@@ -436,14 +468,16 @@ Result approximate(const Problem& problem, const Progress& progress) {
                                                     groups.begin() + static_cast<long>(p.last));
     for (std::vector<size_t> round : solve_rounds(pass_groups, F, *p.constrained)) {
       for (size_t& gi : round) gi += p.first;
-      const Positions start = round.size() > 1 ? r.V : Positions();
-      const double g_abd_before = round.size() > 1 ? mesh_g_abd(r.V, F, interior) : 0.0;
+      const bool together = round.size() > 1;
+      const Positions start = together ? r.V : Positions();
+      const RoundFigures before = together ? round_figures(r.V, F, interior, groups, round) : RoundFigures();
       run_round(round, p);
       for (size_t gi : round) keep(gi);
-      if (round.size() < 2 || mesh_g_abd(r.V, F, interior) <= g_abd_before) continue;
-      // Never worse over the mesh (§5.4): each group's step was checked with its neighbours
-      // where they started, and together they raised the curvature where they meet. The
-      // first group's result stands; the others run again, each from the one before.
+      if (!together || !round_made_worse(before, round_figures(r.V, F, interior, groups, round), round, runs))
+        continue;
+      // Never worse (§5.4): each group's step was checked with its neighbours where they
+      // started, and together they raised the curvature where they meet. The first group's
+      // result stands; the others run again, each from the one before, as they used to.
       r.log.push_back(round_rerun_note(round, runs));
       r.V = start;
       keep(round.front());
