@@ -410,20 +410,22 @@ Result approximate(const Problem& problem, const Progress& progress) {
   // shared garments, free seams then remove more than fixed ones (issue 11). With a total
   // tolerance each pass moves a vertex only by what the earlier passes left of its budget.
   struct Pass {
+    const char* name;                      // in the reports when there are several
     const std::vector<char>* constrained;  // the vertices no group of the pass moves
     size_t first = 0, last = 0;            // its groups
   };
   std::vector<std::vector<int>> groups;
   std::vector<Pass> passes;
-  std::vector<const char*> pass;  // of each group, named in the reports when there are several
   const auto add_pass = [&](const char* name, const std::vector<char>& held_here, bool per_patch) {
-    passes.push_back({&held_here, groups.size(), 0});
+    passes.push_back({name, &held_here, groups.size(), 0});
     if (per_patch)
       for (auto& [id, faces] : faces_of_patch) groups.push_back(faces);
     else
       groups.push_back(indices(nf));
     passes.back().last = groups.size();
-    pass.resize(groups.size(), name);
+  };
+  const auto pass_of = [&](size_t gi) -> const Pass& {
+    return *std::find_if(passes.begin(), passes.end(), [gi](const Pass& p) { return gi < p.last; });
   };
   const bool free_seams = params.seams == SeamMode::Free;
   if (free_seams) add_pass("all patches at once", constrained, false);
@@ -509,7 +511,7 @@ Result approximate(const Problem& problem, const Progress& progress) {
       rep.developability_reason = p.why;
       const bool unfitted = p.idle() && !p.skipped.empty();
       std::string stop = unfitted ? "left unchanged: " + p.skipped : run.outcome.stop_reason;
-      if (free_seams) stop = pass[gi] + (": " + stop);
+      if (free_seams) stop = pass_of(gi).name + (": " + stop);
       rep.stop_reason = first ? stop : rep.stop_reason + "; then " + stop;
       if (unfitted && first && skipped_patches++ == 0) first_skip = "patch " + std::to_string(p.id) + ": " + p.skipped;
       rep.history.insert(rep.history.end(), run.outcome.history.begin(), run.outcome.history.end());
