@@ -106,18 +106,52 @@ struct Both {
   DeformationSystem sys;
   Eigen::MatrixXd A;
   Eigen::VectorXd c;
+  // defect_rows: every free vertex also gets an angle-defect row (angle_defect.h, default weight),
+  // linearised at the reference positions.
   Both(double w, double alpha, double ae, SolverKind solver = SolverKind::Auto,
-       SolveMethod method = SolveMethod::Direct, bool smooth = false)
-      : s(smooth), sys(s.g, params(w, alpha, solver, method), ae) {
-    sys.set_rows(s.targets);
+       SolveMethod method = SolveMethod::Direct, bool smooth = false, bool defect_rows = false)
+      : s(smooth), sys(s.g, params(w, alpha, solver, method), ae, rows_of(s, defect_rows)) {
+    sys.set_rows(s.targets, defect_rows ? sys.linearise_defects_at(s.ref) : DefectLinearisation{});
     Eigen::MatrixXd by_vertex;
     dense_system(s, w, alpha, ae, by_vertex, c);
+    if (defect_rows) append_defect_rows(by_vertex);
     A.resize(by_vertex.rows(), by_vertex.cols());
     Eigen::Index k = 0;
     for (size_t v = 0; v < sys.unknown().size(); ++v) {
       if (sys.unknown()[v] < 0) continue;
       for (int d = 0; d < 3; ++d) A.col(3 * sys.unknown()[v] + d) = by_vertex.col(3 * k + d);
       ++k;
+    }
+  }
+  static std::vector<char> rows_of(const Fixture& s, bool defect_rows) {
+    if (!defect_rows) return {};
+    std::vector<char> rows(s.g.fixed.size());
+    for (size_t v = 0; v < rows.size(); ++v) rows[v] = !s.g.fixed[v];
+    return rows;
+  }
+  // The rows s_r·∇K_r·x' = s_r·(∇K_r·x_ref − K_r) over the free vertices, in vertex order.
+  void append_defect_rows(Eigen::MatrixXd& by_vertex) {
+    const VertexFaces incident(s.g.F, s.g.V0.rows());
+    const DefectStars rows = defect_stars(s.g, incident, rows_of(s, true), Params().defect_weight);
+    const DefectLinearisation lin = linearise_defects(rows, s.g, incident, s.ref);
+    std::vector<int> column(s.g.fixed.size(), -1);
+    int k = 0;
+    for (size_t v = 0; v < column.size(); ++v)
+      if (!s.g.fixed[v]) column[v] = 3 * k++;
+    const Eigen::Index first = by_vertex.rows(), n = static_cast<Eigen::Index>(rows.vertex.size());
+    by_vertex.conservativeResize(first + n, Eigen::NoChange);
+    by_vertex.bottomRows(n).setZero();
+    c.conservativeResize(first + n);
+    for (size_t r = 0; r < rows.vertex.size(); ++r) {
+      const auto row = first + static_cast<Eigen::Index>(r);
+      c[row] = -rows.weight[r] * lin.defect[r];
+      for (int q = rows.start[r]; q < rows.start[r + 1]; ++q) {
+        const int u = rows.star[static_cast<size_t>(q)];
+        if (column[static_cast<size_t>(u)] < 0) continue;
+        const Vec3 g = rows.weight[r] * lin.gradient[static_cast<size_t>(q)];
+        by_vertex.block<1, 3>(row, column[static_cast<size_t>(u)]) = g.transpose();
+        c[row] += g.dot(s.ref.row(u).transpose());
+      }
     }
   }
   // Unknown vector of positions X, in the system's order.
@@ -157,6 +191,19 @@ TEST_P(EverySolver, SolveIsTheLeastSquaresMinimiser) {
     }
     EXPECT_LT((X.row(v).transpose() - x.segment<3>(3 * k)).norm(), 1e-8);
   }
+}
+
+// Angle-defect rows, solved through the quasi-definite system K = [[M, Cᵀ], [C, −I]], give the
+// least-squares minimiser of all the rows together, whichever back end factorises K.
+TEST_P(EverySolver, DefectRowsSolveIsTheLeastSquaresMinimiser) {
+  Both b(30.0, 10.0, 0.4, GetParam(), SolveMethod::Direct, false, true);
+  auto& [s, sys, A, c] = b;
+  ASSERT_TRUE(sys.has_defect_rows());
+  const Eigen::VectorXd exact = A.colPivHouseholderQr().solve(c);
+  Both plain(30.0, 10.0, 0.4, GetParam());  // same unknown order: defect rows leave M's pattern
+  const Eigen::VectorXd without = plain.A.colPivHouseholderQr().solve(plain.c);
+  ASSERT_GT((exact - without).cwiseAbs().maxCoeff(), 1e-3) << "the defect rows change the minimiser";
+  EXPECT_LT((b.free_vector(sys.solve(s.ref)) - exact).cwiseAbs().maxCoeff(), 1e-8);
 }
 
 // Conjugate gradients with the frame preconditioner reach the same minimiser, to the stated

@@ -1,6 +1,8 @@
 // While the engine works, the OpenMP regions of the libraries under CHOLMOD run on one thread,
 // on the caller's thread and on the engine's own helper threads alike: OpenMP keeps that
 // setting per thread, so a helper that did not set it would open CHOLMOD's 4-thread regions.
+// OpenBLAS's idle workers are stopped: they spin for a while after the library starts.
+#include <dirent.h>
 #include <dlfcn.h>
 #include <gtest/gtest.h>
 
@@ -28,6 +30,24 @@ TEST(SerialLibraries, HelperThreadsRunOpenMpRegionsSerially) {
     levels[i] = max_active_levels();
   });
   for (size_t i = 0; i < kThreads; ++i) EXPECT_EQ(levels[i], 0) << "index " << i;
+}
+
+int threads_in_this_process() {
+  int count = 0;
+  DIR* tasks = opendir("/proc/self/task");
+  while (const dirent* entry = readdir(tasks)) count += entry->d_name[0] != '.';
+  closedir(tasks);
+  return count;
+}
+
+TEST(SerialLibraries, OpenBlasWorkersStopWhileTheEngineRuns) {
+  if (!dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")) GTEST_SKIP() << "OpenBLAS is not this process's BLAS";
+  const int before = threads_in_this_process();
+  if (before == 1) GTEST_SKIP() << "OpenBLAS started no workers (one core)";
+  {
+    const SerialLibraries serial;
+    EXPECT_EQ(threads_in_this_process(), 1) << "was " << before;
+  }
 }
 
 }  // namespace

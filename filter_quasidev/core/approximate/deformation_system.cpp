@@ -35,7 +35,7 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
     : g_(group), w_(params.weight), incident_(group.F, group.V0.rows()),
       defects_(defect_rows.empty() ? DefectStars{}
                                    : defect_stars(g_, incident_, defect_rows, params.defect_weight)),
-      solver_(params.solver), threads_(params.threads), cholesky_(params.solver) {
+      solver_(params.solver), threads_(params.threads), cholesky_(params.solver), augmented_(params.solver) {
   const size_t n = g_.fixed.size();
   std::vector<int> free_index(n, -1);
   int free_count = 0;
@@ -48,13 +48,6 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
       const int b = free_index[static_cast<size_t>(g_.F(f, pq[1]))];
       if (a >= 0 && b >= 0) edges.emplace_back(a, b);
     }
-  for (size_t r = 0; r < defects_.vertex.size(); ++r)  // a defect row couples its whole star
-    for (int i = defects_.start[r]; i < defects_.start[r + 1]; ++i)
-      for (int j = i + 1; j < defects_.start[r + 1]; ++j) {
-        const int a = free_index[static_cast<size_t>(defects_.star[static_cast<size_t>(i)])];
-        const int b = free_index[static_cast<size_t>(defects_.star[static_cast<size_t>(j)])];
-        if (a >= 0 && b >= 0) edges.emplace_back(a, b);
-      }
   const std::vector<int> rank = fill_reducing_rank(free_count, edges);
   unknown_.assign(n, -1);
   block_vertex_.resize(static_cast<size_t>(free_count));
@@ -64,12 +57,12 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
       block_vertex_[static_cast<size_t>(unknown_[v])] = static_cast<int>(v);
     }
   blocks_ = free_count;
-  // Auto: angle-defect rows are factorised, whatever the size: the frames fit them so poorly
-  // that CG gave up on the 40k tee's two big panels after 34 iterations, and on the bumpy cone
-  // and draped panels it cost 5–30 % more than factorising.
-  iterative_ = params.method == SolveMethod::Iterative ||
-               (params.method == SolveMethod::Auto && 3L * blocks_ >= kIterativeFromUnknowns &&
-                defects_.empty());
+  // Angle-defect rows are always factorised, in K: the frames fit them so poorly that CG gave
+  // up on the 40k tee's two big panels after 34 iterations, and on the bumpy cone and draped
+  // panels it cost 5–30 % more than factorising.
+  iterative_ = defects_.empty() &&
+               (params.method == SolveMethod::Iterative ||
+                (params.method == SolveMethod::Auto && 3L * blocks_ >= kIterativeFromUnknowns));
   const std::vector<double> mls = mls_weights(g_.V0, g_.fixed, ae, threads_);
   anchor2_.resize(static_cast<size_t>(blocks_));
   for (size_t v = 0; v < n; ++v)
@@ -79,6 +72,7 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
     edge = {rank[static_cast<size_t>(edge.first)], rank[static_cast<size_t>(edge.second)]};
   build_pattern(edges);
   index_defect_entries();
+  if (!defects_.empty()) build_augmented_pattern();
 }
 
 // entry_row_ and, per unknown block, the defect star entries of its vertex (counting sort).
@@ -168,40 +162,65 @@ void DeformationSystem::set_rows(const std::vector<Vec3>& targets,
             for (int i = 0; i < 3; ++i) value[block_entry(outer, pattern_, k, s, i, j)] += B(i, j);
         }
       }
-      if (!linearised_.gradient.empty()) add_defect_rows(k, diagonal, value, outer);
       for (int j = 0; j < 3; ++j)
         for (int i = j; i < 3; ++i) value[diagonal_entry(outer, k, i, j)] = diagonal(i, j);
     }
   });
+  if (!defects_.empty()) set_augmented_values();
   factor_current_ = false;
 }
 
-// The defect rows' s²·∇K∇Kᵀ in block column k: the vertex u of k meets row r at one star
-// entry; block (b, u) of that row is s_r²·∇_b K·∇_u Kᵀ, kept for the blocks b ≥ k.
-void DeformationSystem::add_defect_rows(int k, Eigen::Matrix3d& diagonal, double* value,
-                                        const int* outer) const {
-  const auto rows = pattern_.block_row.begin();
-  for (int e = entry_start_[static_cast<size_t>(k)]; e < entry_start_[static_cast<size_t>(k) + 1]; ++e) {
-    const auto i = static_cast<size_t>(entries_[static_cast<size_t>(e)]);
-    const auto r = static_cast<size_t>(entry_row_[i]);
-    const double s2 = defects_.weight[r] * defects_.weight[r];
-    const Vec3& gu = linearised_.gradient[i];
-    diagonal += s2 * gu * gu.transpose();
-    for (int q = defects_.start[r]; q < defects_.start[r + 1]; ++q) {
-      const int b = unknown_[static_cast<size_t>(defects_.star[static_cast<size_t>(q)])];
-      if (b <= k) continue;  // the diagonal above, or a block of b's column
-      const int s = static_cast<int>(
-          std::lower_bound(rows + pattern_.begin(k), rows + pattern_.end(k), b) - rows);
-      const Eigen::Matrix3d B = s2 * linearised_.gradient[static_cast<size_t>(q)] * gu.transpose();
-      for (int j = 0; j < 3; ++j)
-        for (int ii = 0; ii < 3; ++ii) value[block_entry(outer, pattern_, k, s, ii, j)] += B(ii, j);
-    }
+// K's lower triangle: column 3k+j holds M's column, then the defect rows r whose star meets
+// block k (row 3·blocks + r, ascending since star entries are grouped by row); row r's own
+// column holds its −1.
+void DeformationSystem::build_augmented_pattern() {
+  const Eigen::Index size = 3 * static_cast<Eigen::Index>(blocks_), rows = static_cast<Eigen::Index>(defects_.vertex.size());
+  K_.resize(size + rows, size + rows);
+  K_.resizeNonZeros(M_.nonZeros() + 3 * static_cast<Eigen::Index>(entries_.size()) + rows);
+  int* outer = K_.outerIndexPtr();
+  int* inner = K_.innerIndexPtr();
+  int at = 0;
+  for (int c = 0; c < size; ++c) {
+    outer[c] = at;
+    for (int e = M_.outerIndexPtr()[c]; e < M_.outerIndexPtr()[c + 1]; ++e) inner[at++] = M_.innerIndexPtr()[e];
+    const int k = c / 3;
+    for (int e = entry_start_[static_cast<size_t>(k)]; e < entry_start_[static_cast<size_t>(k) + 1]; ++e)
+      inner[at++] = static_cast<int>(size) + entry_row_[static_cast<size_t>(entries_[static_cast<size_t>(e)])];
+  }
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    outer[size + r] = at;
+    inner[at++] = static_cast<int>(size + r);
+  }
+  outer[size + rows] = at;
+  node_of_.resize(static_cast<size_t>(size + rows));
+  for (int c = 0; c < size; ++c) node_of_[static_cast<size_t>(c)] = c / 3;
+  int extra = blocks_;  // a row whose vertex is fixed is a node of its own
+  for (size_t r = 0; r < defects_.vertex.size(); ++r) {
+    const int k = unknown_[static_cast<size_t>(defects_.vertex[r])];
+    node_of_[static_cast<size_t>(size) + r] = k >= 0 ? k : extra++;
   }
 }
 
-// The defect rows' right-hand side: s²·∇K·(∇K·x_ref − K) over the free star entries (the
-// fixed ones do not move, so their part of ∇K·Δx vanishes).
-void DeformationSystem::add_defect_rhs(const Positions& ref, Eigen::VectorXd& b) const {
+// K's values: M's, then the defect rows' s_r·∇_u K_r (Gauss–Newton rows of angle_defect.h).
+void DeformationSystem::set_augmented_values() {
+  const Eigen::Index size = M_.rows();
+  double* value = K_.valuePtr();
+  int at = 0;
+  for (int c = 0; c < size; ++c) {
+    for (int e = M_.outerIndexPtr()[c]; e < M_.outerIndexPtr()[c + 1]; ++e) value[at++] = M_.valuePtr()[e];
+    const int k = c / 3;
+    for (int e = entry_start_[static_cast<size_t>(k)]; e < entry_start_[static_cast<size_t>(k) + 1]; ++e) {
+      const auto i = static_cast<size_t>(entries_[static_cast<size_t>(e)]);
+      value[at++] = defects_.weight[static_cast<size_t>(entry_row_[i])] * linearised_.gradient[i][c % 3];
+    }
+  }
+  for (size_t r = 0; r < defects_.vertex.size(); ++r) value[at++] = -1.0;
+}
+
+// The defect rows' right-hand side d_r = s_r·(∇K_r·x_ref − K_r) over the free star entries
+// (the fixed ones do not move, so their part of ∇K·Δx vanishes).
+Eigen::VectorXd DeformationSystem::defect_rhs(const Positions& ref) const {
+  Eigen::VectorXd d(static_cast<Eigen::Index>(defects_.vertex.size()));
   for (size_t r = 0; r < defects_.vertex.size(); ++r) {
     double c = -linearised_.defect[r];
     for (int q = defects_.start[r]; q < defects_.start[r + 1]; ++q) {
@@ -209,12 +228,9 @@ void DeformationSystem::add_defect_rhs(const Positions& ref, Eigen::VectorXd& b)
       if (unknown_[static_cast<size_t>(v)] >= 0)
         c += linearised_.gradient[static_cast<size_t>(q)].dot(ref.row(v).transpose());
     }
-    c *= defects_.weight[r] * defects_.weight[r];
-    for (int q = defects_.start[r]; q < defects_.start[r + 1]; ++q) {
-      const int k = unknown_[static_cast<size_t>(defects_.star[static_cast<size_t>(q)])];
-      if (k >= 0) b.segment<3>(3 * k) += c * linearised_.gradient[static_cast<size_t>(q)];
-    }
+    d[static_cast<Eigen::Index>(r)] = defects_.weight[r] * c;
   }
+  return d;
 }
 
 Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
@@ -242,7 +258,6 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
     if (unknown_[v] >= 0)
       b.segment<3>(3 * unknown_[v]) +=
           anchor2_[static_cast<size_t>(unknown_[v])] * g_.V0.row(static_cast<Eigen::Index>(v)).transpose();
-  if (!linearised_.gradient.empty()) add_defect_rhs(ref, b);
   return b;
 }
 
@@ -255,14 +270,21 @@ Eigen::VectorXd DeformationSystem::unknowns_of(const Positions& X) const {
 
 void DeformationSystem::factorize() {
   StageTimer timer(times_.factorization);
-  cholesky_.factorize(M_);
+  if (defects_.empty())
+    cholesky_.factorize(M_);
+  else
+    augmented_.factorize(K_, node_of_);
   factor_current_ = true;
 }
 
-Eigen::VectorXd DeformationSystem::solve_directly(const Eigen::VectorXd& b) {
+// With defect rows C, K [x; y] = [b; d] gives (M + CᵀC) x = b + Cᵀd, y = Cx − d.
+Eigen::VectorXd DeformationSystem::solve_directly(const Eigen::VectorXd& b, const Positions& ref) {
   if (!factor_current_) factorize();  // new targets: a numeric factorisation (analysis reused)
   StageTimer timer(times_.solve);
-  return cholesky_.solve(b);
+  if (defects_.empty()) return cholesky_.solve(b);
+  Eigen::VectorXd bd(K_.rows());
+  bd << b, defect_rhs(ref);
+  return augmented_.solve(bd).head(b.size());
 }
 
 // The frames follow the targets: ν of a vertex is the mean target of its solved faces (the
@@ -297,7 +319,7 @@ Eigen::VectorXd DeformationSystem::solve_iteratively(const Eigen::VectorXd& b, c
   if (cg.converged) return x;
   iterative_ = false;  // the frames do not fit this group's targets: factorise M from now on
   preconditioner_.reset();
-  return solve_directly(b);
+  return solve_directly(b, ref);
 }
 
 Positions DeformationSystem::solve(const Positions& ref) {
@@ -307,9 +329,9 @@ Positions DeformationSystem::solve(const Positions& ref) {
     StageTimer timer(times_.assembly);
     b = rhs(ref);
   }
-  const Eigen::VectorXd x = iterative_ ? solve_iteratively(b, ref) : solve_directly(b);
+  const Eigen::VectorXd x = iterative_ ? solve_iteratively(b, ref) : solve_directly(b, ref);
   ++times_.solves;
-  times_.factorizations = cholesky_.factorizations() + scalar_factorizations_;
+  times_.factorizations = cholesky_.factorizations() + augmented_.factorizations() + scalar_factorizations_;
   Positions out = ref;
   for (size_t v = 0; v < unknown_.size(); ++v)
     if (unknown_[v] >= 0) out.row(static_cast<Eigen::Index>(v)) = x.segment<3>(3 * unknown_[v]).transpose();

@@ -30,6 +30,13 @@
 // than factorising, so a solve that CG gives up on (conjugate_gradients.h: too slow after
 // kCgPatience iterations, or not done in kCgIterations) factorises M instead, and so do the
 // group's later solves.
+//
+// Angle-defect rows C (angle_defect.h; beyond the paper) would add CᵀC to M, which couples every
+// pair of vertices of a star: on the 40k tee's big panels that Cholesky factor costs 2.1 GFlop.
+// They are kept apart instead, one multiplier y per row, in the quasi-definite system
+//   K [x; y] = [[M, Cᵀ], [C, −I]] [x; y] = [b; d],  so that (M + CᵀC) x = b + Cᵀd,
+// the same least-squares solution; ordered by METIS as a whole, K's LDLᵀ costs 0.53 GFlop there
+// (quasi_definite_ldlt.h). Such groups are always factorised.
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -41,6 +48,7 @@
 #include "approximate/group_mesh.h"
 #include "approximate/result.h"
 #include "common/block_pattern.h"
+#include "common/quasi_definite_solver.h"
 #include "common/sparse_cholesky.h"
 
 namespace qd {
@@ -53,8 +61,7 @@ class DeformationSystem {
  public:
   // From params: w of Eq. (8), α of Eq. (15), the solver, the method and the threads this
   // group may use; ae: average edge length for Eq. (15); defect_rows: per local vertex, 1 =
-  // it gets an angle-defect row (angle_defect.h; empty = none), whose star widens M's pattern
-  // to pairs of vertices with a common neighbour.
+  // it gets an angle-defect row (angle_defect.h; empty = none).
   DeformationSystem(const GroupMesh& group, const Params& params, double ae,
                     const std::vector<char>& defect_rows = {});
 
@@ -69,13 +76,15 @@ class DeformationSystem {
     return linearise_defects(defects_, g_, incident_, X);
   }
 
-  // Right-hand side Aᵀc − M_fc·x_c + anchor terms for reference positions `ref`.
+  // Right-hand side Aᵀc − M_fc·x_c + anchor terms for reference positions `ref` (the defect
+  // rows' part is added in the solve).
   Eigen::VectorXd rhs(const Positions& ref) const;
 
   // Least-squares positions for reference `ref`: free vertices solved, fixed ones kept.
   Positions solve(const Positions& ref);
 
-  // Lower triangle of M; unknown 3k+d is coordinate d of block k.
+  // Lower triangle of M (the defect rows' CᵀC is not in it: they stay in K); unknown 3k+d is
+  // coordinate d of block k.
   const Eigen::SparseMatrix<double>& matrix() const { return M_; }
   // Unknown block of each local vertex (-1 when fixed).
   const std::vector<int>& unknown() const { return unknown_; }
@@ -84,10 +93,11 @@ class DeformationSystem {
  private:
   void build_pattern(const std::vector<std::pair<int, int>>& edges);
   void index_defect_entries();
-  void add_defect_rows(int k, Eigen::Matrix3d& diagonal, double* value, const int* outer) const;
-  void add_defect_rhs(const Positions& ref, Eigen::VectorXd& b) const;
+  void build_augmented_pattern();
+  void set_augmented_values();
+  Eigen::VectorXd defect_rhs(const Positions& ref) const;
   void factorize();
-  Eigen::VectorXd solve_directly(const Eigen::VectorXd& b);
+  Eigen::VectorXd solve_directly(const Eigen::VectorXd& b, const Positions& ref);
   Eigen::VectorXd solve_iteratively(const Eigen::VectorXd& b, const Positions& ref);
   void build_preconditioner();
   Eigen::VectorXd unknowns_of(const Positions& X) const;
@@ -112,6 +122,9 @@ class DeformationSystem {
   int threads_;
   bool iterative_ = false;
   SparseCholesky cholesky_;
+  Eigen::SparseMatrix<double> K_;  // lower triangle of [[M, Cᵀ], [C, −I]] (defect rows C)
+  std::vector<int> node_of_;       // vertex (node) of each unknown of K, for its order
+  QuasiDefiniteSolver augmented_;
   bool factor_current_ = false;  // the factor belongs to the current M
   std::unique_ptr<FramePreconditioner> preconditioner_;  // built at the first iterative solve
   int scalar_factorizations_ = 0;                        // the preconditioner's

@@ -27,6 +27,8 @@ SerialLibraries::SerialLibraries() {
   if (get_blas && set_blas) {
     saved_blas_threads_ = get_blas();
     set_blas(1);
+    const auto stop_workers = loaded<void (*)()>("blas_thread_shutdown_");
+    if (stop_workers) stop_workers();  // idle, they still spin; a threaded call restarts them
   }
   const auto get_levels = loaded<GetCount>("omp_get_max_active_levels");
   const auto set_levels = loaded<SetCount>("omp_set_max_active_levels");

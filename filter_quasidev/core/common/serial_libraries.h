@@ -6,7 +6,10 @@
 // triangles in 16 patches, engine 1.65 s with OpenBLAS's threads, 0.48 s without; the 40k-face
 // tee, 10 iterations, 1 thread, 6.0 s with CHOLMOD's OpenMP regions (a futex wake per region,
 // 35 % of the time in the kernel), 2.7 s without. Their number would also change the rounding of
-// CHOLMOD's results. While a SerialLibraries lives, OpenBLAS works in the calling thread only and
+// CHOLMOD's results. OpenBLAS's idle workers also spin (sched_yield) for a while after the library
+// starts, which took a core from short runs (the shirt: 0.1 s of system time in a 0.12 s run), so
+// they are stopped; a threaded call after the engine's would start them again.
+// While a SerialLibraries lives, OpenBLAS works in the calling thread only and
 // OpenMP regions run on one thread (max-active-levels 0), if those libraries are loaded in this
 // process; the previous settings come back afterwards, so a host such as MeshLab keeps its own.
 //

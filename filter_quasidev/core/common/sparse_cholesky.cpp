@@ -59,12 +59,10 @@ struct CholmodBackend : EigenApiBackend<Supernodal> {
 };
 #endif
 
-std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unknowns, long nonzeros,
+std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unknowns,
                                                       [[maybe_unused]] bool simplicial_solves) {
-  const bool wide = nonzeros >= kWidePatternNonZerosPerUnknown * unknowns;
-  const long cholmod_from = wide ? kCholmodFromUnknownsWide : kCholmodFromUnknowns;
   if (kind == SolverKind::Auto)
-    kind = unknowns < cholmod_from || !kHaveCholmod ? SolverKind::EigenLDLT : SolverKind::Cholmod;
+    kind = unknowns < kCholmodFromUnknowns || !kHaveCholmod ? SolverKind::EigenLDLT : SolverKind::Cholmod;
   switch (kind) {
     case SolverKind::EigenLLT:
       return std::make_unique<EigenApiBackend<Eigen::SimplicialLLT<Matrix, Eigen::Lower, Natural>>>();
@@ -87,7 +85,7 @@ SparseCholesky::SparseCholesky(SolverKind kind, bool many_solves) : kind_(kind),
 SparseCholesky::~SparseCholesky() = default;
 
 void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& M) {
-  if (!backend_) backend_ = make_backend(kind_, M.rows(), M.nonZeros(), many_solves_);
+  if (!backend_) backend_ = make_backend(kind_, M.rows(), many_solves_);
   const bool ok = backend_->analyse_and_factorize(M, factorizations_ == 0);
   ++factorizations_;
   if (!ok)

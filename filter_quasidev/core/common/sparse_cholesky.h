@@ -4,12 +4,10 @@
 // pattern never changes. Back ends: CHOLMOD supernodal LLᵀ (SuiteSparse), Eigen's SimplicialLLT
 // and SimplicialLDLT. SolverKind::Auto takes SimplicialLDLT below kCholmodFromUnknowns unknowns
 // and CHOLMOD from there on (the crossover measured by bench/qd_bench, README, Performance), or
-// SimplicialLDLT always in a build without CHOLMOD. The angle-defect rows (angle_defect.h)
-// widen the pattern to pairs of vertices with a common neighbour (about 29 stored non-zeros
-// per unknown instead of 11); the supernodal factor wins there from kCholmodFromUnknownsWide.
-// Measured with bench/qd_bench --grid N -- --max-iter 3 --method direct, three factorisations
-// (CHOLMOD / SimplicialLDLT, ms): vertex-graph pattern 675 unknowns 3.2 / 1.2, 1,386 3.9 / 4.1,
-// 2,883 9.8 / 17; with defect rows 675 unknowns 3.2 / 6.3, 1,386 9.9 / 17.
+// SimplicialLDLT always in a build without CHOLMOD. Measured with bench/qd_bench --grid N --
+// --max-iter 3 --method direct, three factorisations (CHOLMOD / SimplicialLDLT, ms): 675
+// unknowns 3.2 / 1.2, 1,386 3.9 / 4.1, 2,883 9.8 / 17. (Groups with angle-defect rows solve
+// the quasi-definite system of quasi_definite_solver.h instead.)
 #pragma once
 
 #include <Eigen/Core>
@@ -21,8 +19,6 @@ namespace qd {
 enum class SolverKind { Auto, Cholmod, EigenLLT, EigenLDLT };  // back end (§5.4)
 
 constexpr long kCholmodFromUnknowns = 1500;
-constexpr long kWidePatternNonZerosPerUnknown = 20;
-constexpr long kCholmodFromUnknownsWide = 600;
 
 class SparseCholesky {
  public:

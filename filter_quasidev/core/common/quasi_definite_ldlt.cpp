@@ -1,0 +1,292 @@
+#include "common/quasi_definite_ldlt.h"
+
+#include <cholmod.h>
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+#include "common/error.h"
+
+extern "C" {
+void dgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const double* alpha,
+            const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
+            const int* ldc);
+void dtrsm_(const char* side, const char* uplo, const char* ta, const char* diag, const int* m, const int* n,
+            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+}
+
+namespace qd {
+namespace {
+
+constexpr int kUnblocked = 32;     // dense blocks up to this size are factorised by plain loops
+constexpr int kUpdateColumns = 256;  // widest block of an update computed at once
+
+void zero_pivot() {
+  throw Error(
+      "the deformation system has a vanishing pivot (degenerate faces?): remove zero-area and "
+      "duplicate faces, then try again");
+}
+
+// C(m×n) = beta·C − A(m×k)·B(n×k)ᵀ, column major.
+void subtract_product(int m, int n, int k, const double* A, int lda, const double* B, int ldb, double beta,
+                      double* C, int ldc) {
+  const double minus_one = -1.0;
+  dgemm_("N", "T", &m, &n, &k, &minus_one, A, &lda, B, &ldb, &beta, C, &ldc);
+}
+
+// B(m×n) := B·L⁻ᵀ for the unit lower triangle L(n×n).
+void solve_right_unit_lower_transposed(int m, int n, const double* L, int ldl, double* B, int ldb) {
+  const double one = 1.0;
+  dtrsm_("R", "L", "T", "U", &m, &n, &one, L, &ldl, B, &ldb);
+}
+
+// A(n×n, lower triangle) = L·D·Lᵀ in place: unit L below the diagonal, D on it. The upper
+// triangle is scratch. Recursive halving puts most of the work in dgemm.
+void dense_ldlt(int n, double* A, int lda) {
+  if (n <= kUnblocked) {
+    for (int j = 0; j < n; ++j) {
+      double* column = A + static_cast<long>(j) * lda;
+      const double d = column[j];
+      if (d == 0.0 || !std::isfinite(d)) zero_pivot();
+      for (int k = j + 1; k < n; ++k) {  // A22 −= l·d·lᵀ, with l·d = the column before scaling
+        const double wk = column[k];
+        double* target = A + static_cast<long>(k) * lda;
+        for (int i = k; i < n; ++i) target[i] -= column[i] * (wk / d);
+      }
+      for (int i = j + 1; i < n; ++i) column[i] /= d;
+    }
+    return;
+  }
+  const int n1 = n / 2, n2 = n - n1;
+  dense_ldlt(n1, A, lda);
+  double* A21 = A + n1;
+  double* A22 = A + n1 + static_cast<long>(n1) * lda;
+  solve_right_unit_lower_transposed(n2, n1, A, lda, A21, lda);  // A21 = L21·D1
+  std::vector<double> W(static_cast<size_t>(n2) * static_cast<size_t>(n1));
+  for (int j = 0; j < n1; ++j) {
+    const double d = A[j + static_cast<long>(j) * lda];
+    for (int i = 0; i < n2; ++i) {
+      W[static_cast<size_t>(i + j * n2)] = A21[i + static_cast<long>(j) * lda];
+      A21[i + static_cast<long>(j) * lda] /= d;
+    }
+  }
+  subtract_product(n2, n2, n1, A21, lda, W.data(), n2, 1.0, A22, lda);  // A22 −= L21·D1·L21ᵀ
+  dense_ldlt(n2, A22, lda);
+}
+
+}  // namespace
+
+namespace {
+
+// cholmod_sparse view of a pattern in Eigen's column-major arrays (lower triangle).
+cholmod_sparse lower_pattern(int n, const int* outer, const int* inner) {
+  cholmod_sparse A{};
+  A.nrow = A.ncol = static_cast<size_t>(n);
+  A.nzmax = static_cast<size_t>(outer[n]);
+  A.p = const_cast<int*>(outer);
+  A.i = const_cast<int*>(inner);
+  A.stype = -1;
+  A.itype = CHOLMOD_INT;
+  A.xtype = CHOLMOD_PATTERN;
+  A.dtype = CHOLMOD_DOUBLE;
+  A.sorted = 1;
+  A.packed = 1;
+  return A;
+}
+
+// METIS's order of the nodes (the graph of `lower` with each node's unknowns merged), expanded
+// to the unknowns.
+std::vector<int> node_order(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& node_of,
+                            cholmod_common& c) {
+  const int nodes = node_of.empty() ? 0 : *std::max_element(node_of.begin(), node_of.end()) + 1;
+  std::vector<std::vector<int>> below(static_cast<size_t>(nodes));
+  for (int j = 0; j < lower.cols(); ++j)
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e) {
+      const int a = node_of[static_cast<size_t>(lower.innerIndexPtr()[e])], b = node_of[static_cast<size_t>(j)];
+      below[static_cast<size_t>(std::min(a, b))].push_back(std::max(a, b));
+    }
+  std::vector<int> outer{0}, inner;
+  for (auto& column : below) {
+    std::sort(column.begin(), column.end());
+    column.erase(std::unique(column.begin(), column.end()), column.end());
+    inner.insert(inner.end(), column.begin(), column.end());
+    outer.push_back(static_cast<int>(inner.size()));
+  }
+  cholmod_sparse G = lower_pattern(nodes, outer.data(), inner.data());
+  std::vector<int> order(static_cast<size_t>(nodes));
+  static std::mutex metis;  // METIS draws from one random generator for the whole process:
+  {                         // two patches ordered at once would get orders that vary run to run
+    const std::lock_guard<std::mutex> one_at_a_time(metis);
+    if (!cholmod_metis(&G, nullptr, 0, 0, order.data(), &c)) return {};
+  }
+  std::vector<int> rank(static_cast<size_t>(nodes));
+  for (int k = 0; k < nodes; ++k) rank[static_cast<size_t>(order[static_cast<size_t>(k)])] = k;
+  std::vector<int> perm(node_of.size());
+  for (size_t k = 0; k < perm.size(); ++k) perm[k] = static_cast<int>(k);
+  std::stable_sort(perm.begin(), perm.end(), [&](int a, int b) {
+    return rank[static_cast<size_t>(node_of[static_cast<size_t>(a)])] < rank[static_cast<size_t>(node_of[static_cast<size_t>(b)])];
+  });
+  return perm;
+}
+
+}  // namespace
+
+QuasiDefiniteLdlt::QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& node_of)
+    : n_(static_cast<int>(lower.rows())) {
+  cholmod_common c;
+  cholmod_start(&c);
+  std::vector<int> order = node_order(lower, node_of, c);
+  c.nmethods = 1;
+  c.method[0].ordering = CHOLMOD_GIVEN;
+  c.supernodal = CHOLMOD_SUPERNODAL;
+  cholmod_sparse A = lower_pattern(n_, lower.outerIndexPtr(), lower.innerIndexPtr());
+  cholmod_factor* L = order.empty() ? nullptr : cholmod_analyze_p(&A, order.data(), nullptr, 0, &c);
+  if (!L || !L->is_super) {
+    cholmod_free_factor(&L, &c);
+    cholmod_finish(&c);
+    throw Error("the sparse analysis of the deformation system failed (out of memory?)");
+  }
+  const auto copy = [](const void* p, size_t n) {
+    const int* first = static_cast<const int*>(p);
+    return std::vector<int>(first, first + n);
+  };
+  const size_t ns = L->nsuper;
+  perm_ = copy(L->Perm, static_cast<size_t>(n_));
+  super_ = copy(L->super, ns + 1);
+  row_start_ = copy(L->pi, ns + 1);
+  rows_ = copy(L->s, static_cast<size_t>(row_start_.back()));
+  const std::vector<int> px = copy(L->px, ns + 1);
+  value_start_.assign(px.begin(), px.end());
+  values_.resize(L->xsize);
+  flops_ = c.fl;
+  cholmod_free_factor(&L, &c);
+  cholmod_finish(&c);
+
+  owner_.resize(static_cast<size_t>(n_));
+  for (size_t s = 0; s < ns; ++s)
+    std::fill(owner_.begin() + super_[s], owner_.begin() + super_[s + 1], static_cast<int>(s));
+  std::vector<int> inverse(static_cast<size_t>(n_));
+  for (int k = 0; k < n_; ++k) inverse[static_cast<size_t>(perm_[static_cast<size_t>(k)])] = k;
+  slot_.resize(static_cast<size_t>(lower.nonZeros()));
+  for (int j = 0; j < n_; ++j)
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e) {
+      const int a = inverse[static_cast<size_t>(lower.innerIndexPtr()[e])];
+      const int b = inverse[static_cast<size_t>(j)];
+      const int row = std::max(a, b), column = std::min(a, b);
+      const auto t = static_cast<size_t>(owner_[static_cast<size_t>(column)]);
+      const auto first = rows_.begin() + row_start_[t], last = rows_.begin() + row_start_[t + 1];
+      const long local_row = std::lower_bound(first, last, row) - first;
+      slot_[static_cast<size_t>(e)] = value_start_[t] + (column - super_[t]) * (last - first) + local_row;
+    }
+}
+
+void QuasiDefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& lower) {
+  std::fill(values_.begin(), values_.end(), 0.0);
+  const double* value = lower.valuePtr();
+  for (size_t e = 0; e < slot_.size(); ++e) values_[static_cast<size_t>(slot_[e])] += value[e];
+  std::vector<double> work;
+  std::vector<int> map(static_cast<size_t>(n_), -1);
+  for (int s = 0; s + 1 < static_cast<int>(super_.size()); ++s) factorize_supernode(s, work, map);
+}
+
+// Supernode s, all of whose updates have arrived: LDLᵀ of its diagonal block, then its rows
+// below (L21 = A21·L11⁻ᵀ·D⁻¹), then its update L21·D·L21ᵀ to the supernodes above.
+void QuasiDefiniteLdlt::factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map) {
+  const auto su = static_cast<size_t>(s);
+  const int columns = super_[su + 1] - super_[su];
+  const int height = row_start_[su + 1] - row_start_[su];
+  const int below = height - columns;
+  double* X = values_.data() + value_start_[su];
+  dense_ldlt(columns, X, height);
+  if (below == 0) return;
+  double* X21 = X + columns;
+  solve_right_unit_lower_transposed(below, columns, X, height, X21, height);  // L21·D
+  std::vector<double> W(static_cast<size_t>(below) * static_cast<size_t>(columns));
+  for (int j = 0; j < columns; ++j) {
+    const double d = X[j + static_cast<long>(j) * height];
+    for (int i = 0; i < below; ++i) {
+      W[static_cast<size_t>(i + static_cast<long>(j) * below)] = X21[i + static_cast<long>(j) * height];
+      X21[i + static_cast<long>(j) * height] /= d;
+    }
+  }
+  update_ancestors(s, W.data(), work, map);
+}
+
+// Subtracts L21·D·L21ᵀ (W = L21·D) from the supernodes that own the rows below s: for each run
+// of rows owned by one supernode t, the block of columns of t is computed by one dgemm and
+// scattered into t's panel through `map` (row → place in t's rows).
+void QuasiDefiniteLdlt::update_ancestors(int s, const double* W, std::vector<double>& work,
+                                         std::vector<int>& map) {
+  const auto su = static_cast<size_t>(s);
+  const int columns = super_[su + 1] - super_[su];
+  const int height = row_start_[su + 1] - row_start_[su];
+  const int below = height - columns;
+  const int* row = rows_.data() + row_start_[su] + columns;
+  const double* L21 = values_.data() + value_start_[su] + columns;
+  int mapped = -1;
+  for (int i = 0; i < below;) {
+    const int t = owner_[static_cast<size_t>(row[i])];
+    int last = i;
+    while (last < below && owner_[static_cast<size_t>(row[last])] == t && last - i < kUpdateColumns) ++last;
+    const auto tu = static_cast<size_t>(t);
+    const int t_height = row_start_[tu + 1] - row_start_[tu];
+    if (mapped != t) {
+      for (int p = 0; p < t_height; ++p) map[static_cast<size_t>(rows_[static_cast<size_t>(row_start_[tu] + p)])] = p;
+      mapped = t;
+    }
+    const int m = below - i, width = last - i;
+    work.resize(static_cast<size_t>(m) * static_cast<size_t>(width));
+    subtract_product(m, width, columns, W + i, below, L21 + i, height, 0.0, work.data(), m);  // −U
+    for (int j = 0; j < width; ++j) {
+      double* target = values_.data() + value_start_[tu] +
+                       static_cast<long>(row[i + j] - super_[tu]) * t_height;
+      const double* u = work.data() + static_cast<long>(j) * m;
+      for (int k = j; k < m; ++k) target[map[static_cast<size_t>(row[i + k])]] += u[k];
+    }
+    i = last;
+  }
+}
+
+Eigen::VectorXd QuasiDefiniteLdlt::solve(const Eigen::VectorXd& b) const {
+  Eigen::VectorXd x(n_);
+  for (int k = 0; k < n_; ++k) x[k] = b[perm_[static_cast<size_t>(k)]];
+  const int ns = static_cast<int>(super_.size()) - 1;
+  const auto panel = [this](int s, int& first, int& columns, int& height, const int*& row, const double*& X) {
+    const auto su = static_cast<size_t>(s);
+    first = super_[su];
+    columns = super_[su + 1] - first;
+    height = row_start_[su + 1] - row_start_[su];
+    row = rows_.data() + row_start_[su];
+    X = values_.data() + value_start_[su];
+  };
+  int first, columns, height;
+  const int* row;
+  const double* X;
+  for (int s = 0; s < ns; ++s) {  // L y = b
+    panel(s, first, columns, height, row, X);
+    for (int j = 0; j < columns; ++j) {
+      const double xj = x[first + j];
+      const double* l = X + static_cast<long>(j) * height;
+      for (int i = j + 1; i < height; ++i) x[row[i]] -= l[i] * xj;
+    }
+  }
+  for (int s = 0; s < ns; ++s) {  // D z = y
+    panel(s, first, columns, height, row, X);
+    for (int j = 0; j < columns; ++j) x[first + j] /= X[j + static_cast<long>(j) * height];
+  }
+  for (int s = ns - 1; s >= 0; --s) {  // Lᵀ x = z
+    panel(s, first, columns, height, row, X);
+    for (int j = columns - 1; j >= 0; --j) {
+      const double* l = X + static_cast<long>(j) * height;
+      double sum = 0.0;
+      for (int i = j + 1; i < height; ++i) sum += l[i] * x[row[i]];
+      x[first + j] -= sum;
+    }
+  }
+  Eigen::VectorXd out(n_);
+  for (int k = 0; k < n_; ++k) out[perm_[static_cast<size_t>(k)]] = x[k];
+  return out;
+}
+
+}  // namespace qd
