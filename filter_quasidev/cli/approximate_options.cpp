@@ -86,8 +86,8 @@ void add_approximate_options(CLI::App& job, ApproximateOptions& o) {
           "sparse Cholesky: cholmod (SuiteSparse supernodal), eigen-llt,\neigen-ldlt (Eigen's "
           "simplicial) or auto (eigen-ldlt below\n" + std::to_string(kCholmodFromUnknowns) +
               " unknowns per patch, else cholmod); same\nresult. Patches with angle-defect rows "
-              "solve their\nquasi-definite system by LDLT: METIS and our\nsupernodal LDLT (auto, "
-              "cholmod) or Eigen's\nsimplicial LDLT (eigen-llt, eigen-ldlt)",
+              "solve their\nquasi-definite system by LDLT: our supernodal LDLT\n(auto, "
+              "cholmod) or Eigen's simplicial LDLT\n(eigen-llt, eigen-ldlt)",
           kSolverKinds, p.solver);
   std::ostringstream method;
   method << "direct: factorise the coupled system; iterative: conjugate\ngradients with two scalar "

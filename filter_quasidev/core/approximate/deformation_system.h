@@ -35,7 +35,7 @@
 // pair of vertices of a star: on the 40k tee's big panels that Cholesky factor costs 2.1 GFlop.
 // They are kept apart instead, one multiplier y per row, in the quasi-definite system
 //   K [x; y] = [[M, Cᵀ], [C, −I]] [x; y] = [b; d],  so that (M + CᵀC) x = b + Cᵀd,
-// the same least-squares solution; ordered by METIS as a whole, K's LDLᵀ costs 0.53 GFlop there
+// the same least-squares solution; numbered in M's vertex order, K's LDLᵀ costs 0.63 GFlop there
 // (quasi_definite_ldlt.h). Such groups are always factorised.
 #pragma once
 
@@ -123,7 +123,9 @@ class DeformationSystem {
   bool iterative_ = false;
   SparseCholesky cholesky_;
   Eigen::SparseMatrix<double> K_;  // lower triangle of [[M, Cᵀ], [C, −I]] (defect rows C)
-  std::vector<int> node_of_;       // vertex (node) of each unknown of K, for its order
+  std::vector<int> place_;         // K's unknown of each unknown of M
+  std::vector<int> multiplier_;    // K's unknown of each defect row's multiplier
+  std::vector<int> slot_;          // place in K's values of each source (build_augmented_pattern)
   QuasiDefiniteSolver augmented_;
   bool factor_current_ = false;  // the factor belongs to the current M
   std::unique_ptr<FramePreconditioner> preconditioner_;  // built at the first iterative solve

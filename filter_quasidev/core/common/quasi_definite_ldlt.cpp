@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 
 #include "common/error.h"
 
@@ -80,7 +79,7 @@ void dense_ldlt(int n, double* A, int lda) {
 namespace {
 
 // cholmod_sparse view of a pattern in Eigen's column-major arrays (lower triangle).
-cholmod_sparse lower_pattern(int n, const int* outer, const int* inner) {
+cholmod_sparse pattern_view(int n, const int* outer, const int* inner) {
   cholmod_sparse A{};
   A.nrow = A.ncol = static_cast<size_t>(n);
   A.nzmax = static_cast<size_t>(outer[n]);
@@ -95,53 +94,17 @@ cholmod_sparse lower_pattern(int n, const int* outer, const int* inner) {
   return A;
 }
 
-// METIS's order of the nodes (the graph of `lower` with each node's unknowns merged), expanded
-// to the unknowns.
-std::vector<int> node_order(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& node_of,
-                            cholmod_common& c) {
-  const int nodes = node_of.empty() ? 0 : *std::max_element(node_of.begin(), node_of.end()) + 1;
-  std::vector<std::vector<int>> below(static_cast<size_t>(nodes));
-  for (int j = 0; j < lower.cols(); ++j)
-    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e) {
-      const int a = node_of[static_cast<size_t>(lower.innerIndexPtr()[e])], b = node_of[static_cast<size_t>(j)];
-      below[static_cast<size_t>(std::min(a, b))].push_back(std::max(a, b));
-    }
-  std::vector<int> outer{0}, inner;
-  for (auto& column : below) {
-    std::sort(column.begin(), column.end());
-    column.erase(std::unique(column.begin(), column.end()), column.end());
-    inner.insert(inner.end(), column.begin(), column.end());
-    outer.push_back(static_cast<int>(inner.size()));
-  }
-  cholmod_sparse G = lower_pattern(nodes, outer.data(), inner.data());
-  std::vector<int> order(static_cast<size_t>(nodes));
-  static std::mutex metis;  // METIS draws from one random generator for the whole process:
-  {                         // two patches ordered at once would get orders that vary run to run
-    const std::lock_guard<std::mutex> one_at_a_time(metis);
-    if (!cholmod_metis(&G, nullptr, 0, 0, order.data(), &c)) return {};
-  }
-  std::vector<int> rank(static_cast<size_t>(nodes));
-  for (int k = 0; k < nodes; ++k) rank[static_cast<size_t>(order[static_cast<size_t>(k)])] = k;
-  std::vector<int> perm(node_of.size());
-  for (size_t k = 0; k < perm.size(); ++k) perm[k] = static_cast<int>(k);
-  std::stable_sort(perm.begin(), perm.end(), [&](int a, int b) {
-    return rank[static_cast<size_t>(node_of[static_cast<size_t>(a)])] < rank[static_cast<size_t>(node_of[static_cast<size_t>(b)])];
-  });
-  return perm;
-}
-
 }  // namespace
 
-QuasiDefiniteLdlt::QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& node_of)
+QuasiDefiniteLdlt::QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower)
     : n_(static_cast<int>(lower.rows())) {
   cholmod_common c;
   cholmod_start(&c);
-  std::vector<int> order = node_order(lower, node_of, c);
   c.nmethods = 1;
-  c.method[0].ordering = CHOLMOD_GIVEN;
+  c.method[0].ordering = CHOLMOD_NATURAL;  // then postordered, which keeps the fill
   c.supernodal = CHOLMOD_SUPERNODAL;
-  cholmod_sparse A = lower_pattern(n_, lower.outerIndexPtr(), lower.innerIndexPtr());
-  cholmod_factor* L = order.empty() ? nullptr : cholmod_analyze_p(&A, order.data(), nullptr, 0, &c);
+  cholmod_sparse A = pattern_view(n_, lower.outerIndexPtr(), lower.innerIndexPtr());
+  cholmod_factor* L = cholmod_analyze(&A, &c);
   if (!L || !L->is_super) {
     cholmod_free_factor(&L, &c);
     cholmod_finish(&c);
@@ -166,19 +129,41 @@ QuasiDefiniteLdlt::QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower, c
   owner_.resize(static_cast<size_t>(n_));
   for (size_t s = 0; s < ns; ++s)
     std::fill(owner_.begin() + super_[s], owner_.begin() + super_[s + 1], static_cast<int>(s));
+  place_entries(lower);
+}
+
+// slot_: each entry (i, j) of `lower` goes to row max and column min of (inverse[i], inverse[j]);
+// entries are taken column by column of the factor, each supernode's rows mapped once.
+void QuasiDefiniteLdlt::place_entries(const Eigen::SparseMatrix<double>& lower) {
   std::vector<int> inverse(static_cast<size_t>(n_));
   for (int k = 0; k < n_; ++k) inverse[static_cast<size_t>(perm_[static_cast<size_t>(k)])] = k;
-  slot_.resize(static_cast<size_t>(lower.nonZeros()));
+  std::vector<int> start(static_cast<size_t>(n_) + 1, 0), entry(static_cast<size_t>(lower.nonZeros()));
+  const auto column_of = [&](int j, int e) {
+    return std::min(inverse[static_cast<size_t>(j)], inverse[static_cast<size_t>(lower.innerIndexPtr()[e])]);
+  };
   for (int j = 0; j < n_; ++j)
-    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e) {
-      const int a = inverse[static_cast<size_t>(lower.innerIndexPtr()[e])];
-      const int b = inverse[static_cast<size_t>(j)];
-      const int row = std::max(a, b), column = std::min(a, b);
-      const auto t = static_cast<size_t>(owner_[static_cast<size_t>(column)]);
-      const auto first = rows_.begin() + row_start_[t], last = rows_.begin() + row_start_[t + 1];
-      const long local_row = std::lower_bound(first, last, row) - first;
-      slot_[static_cast<size_t>(e)] = value_start_[t] + (column - super_[t]) * (last - first) + local_row;
-    }
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e) ++start[static_cast<size_t>(column_of(j, e)) + 1];
+  for (size_t k = 0; k < static_cast<size_t>(n_); ++k) start[k + 1] += start[k];
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (int j = 0; j < n_; ++j)
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
+      entry[static_cast<size_t>(next[static_cast<size_t>(column_of(j, e))]++)] = e;
+  std::vector<int> column_of_entry(entry.size());
+  for (int j = 0; j < n_; ++j)
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e) column_of_entry[static_cast<size_t>(e)] = j;
+  slot_.resize(entry.size());
+  std::vector<int> map(static_cast<size_t>(n_));
+  for (size_t t = 0; t + 1 < super_.size(); ++t) {
+    const int height = row_start_[t + 1] - row_start_[t];
+    for (int p = 0; p < height; ++p) map[static_cast<size_t>(rows_[static_cast<size_t>(row_start_[t] + p)])] = p;
+    for (int k = super_[t]; k < super_[t + 1]; ++k)
+      for (int q = start[static_cast<size_t>(k)]; q < start[static_cast<size_t>(k) + 1]; ++q) {
+        const int e = entry[static_cast<size_t>(q)];
+        const int a = inverse[static_cast<size_t>(lower.innerIndexPtr()[e])];
+        const int b = inverse[static_cast<size_t>(column_of_entry[static_cast<size_t>(e)])];
+        slot_[static_cast<size_t>(e)] = value_start_[t] + static_cast<long>(k - super_[t]) * height + map[static_cast<size_t>(std::max(a, b))];
+      }
+  }
 }
 
 void QuasiDefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& lower) {

@@ -5,10 +5,10 @@
 //
 // Why: the angle-defect rows (angle_defect.h) couple every pair of vertices of a vertex star, and
 // the normal matrix H + CᵀC of the 40k-face tee's big panels costs 2.1 GFlop per Cholesky
-// factorisation. Kept apart, with one multiplier per defect row, the same system ordered by METIS
-// costs 0.56 GFlop. CHOLMOD's supernodal factorisation is LLᵀ only, so this class takes CHOLMOD's
-// symbolic analysis (METIS order, relaxed supernodes) and does the numeric LDLᵀ itself, supernode
-// by supernode with dense BLAS kernels, and the solves.
+// factorisation. Kept apart, with one multiplier per defect row, the same system costs 0.63 GFlop
+// (deformation_system.h). CHOLMOD's supernodal factorisation is LLᵀ only, so this class takes
+// CHOLMOD's symbolic analysis (postorder, relaxed supernodes) and does the numeric LDLᵀ itself,
+// supernode by supernode with dense BLAS kernels, and the solves.
 #pragma once
 
 #include <Eigen/Core>
@@ -19,9 +19,9 @@ namespace qd {
 
 class QuasiDefiniteLdlt {
  public:
-  // Orders and analyses the pattern of `lower`, the lower triangle of K (column major, sorted),
-  // whose unknowns come in nodes (node_of: the node of each unknown, 0-based) ordered together.
-  QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& node_of);
+  // Analyses the pattern of `lower`, the lower triangle of K (column major, sorted), already
+  // in a fill-reducing order (CHOLMOD only postorders it).
+  explicit QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower);
 
   // Factorises K with the values of `lower` (the pattern given at construction); throws
   // qd::Error when a pivot vanishes (K is not quasi-definite).
@@ -32,6 +32,7 @@ class QuasiDefiniteLdlt {
   double flops() const { return flops_; }  // of one factorisation, from the analysis
 
  private:
+  void place_entries(const Eigen::SparseMatrix<double>& lower);
   void factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map);
   void update_ancestors(int s, const double* W, std::vector<double>& work, std::vector<int>& map);
 

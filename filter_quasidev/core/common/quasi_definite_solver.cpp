@@ -1,6 +1,5 @@
 #include "common/quasi_definite_solver.h"
 
-#include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 
 #include "common/error.h"
@@ -19,7 +18,7 @@ struct QuasiDefiniteSolver::Backend {
 namespace {
 
 struct EigenBackend : QuasiDefiniteSolver::Backend {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> ldlt;
   explicit EigenBackend(const Eigen::SparseMatrix<double>& lower) { ldlt.analyzePattern(lower); }
   void factorize(const Eigen::SparseMatrix<double>& lower) override {
     ldlt.factorize(lower);
@@ -34,18 +33,16 @@ struct EigenBackend : QuasiDefiniteSolver::Backend {
 #ifdef QD_WITH_CHOLMOD
 struct SupernodalBackend : QuasiDefiniteSolver::Backend {
   QuasiDefiniteLdlt ldlt;
-  SupernodalBackend(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& node_of)
-      : ldlt(lower, node_of) {}
+  explicit SupernodalBackend(const Eigen::SparseMatrix<double>& lower) : ldlt(lower) {}
   void factorize(const Eigen::SparseMatrix<double>& lower) override { ldlt.factorize(lower); }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const override { return ldlt.solve(b); }
 };
 #endif
 
-std::unique_ptr<QuasiDefiniteSolver::Backend> make_backend(SolverKind kind, const Eigen::SparseMatrix<double>& lower,
-                                                           [[maybe_unused]] const std::vector<int>& node_of) {
+std::unique_ptr<QuasiDefiniteSolver::Backend> make_backend(SolverKind kind, const Eigen::SparseMatrix<double>& lower) {
 #ifdef QD_WITH_CHOLMOD
   if (kind == SolverKind::Auto || kind == SolverKind::Cholmod)
-    return std::make_unique<SupernodalBackend>(lower, node_of);
+    return std::make_unique<SupernodalBackend>(lower);
 #else
   if (kind == SolverKind::Cholmod)
     throw Error("this build of the engine has no CHOLMOD: choose the eigen-llt or eigen-ldlt solver");
@@ -58,8 +55,8 @@ std::unique_ptr<QuasiDefiniteSolver::Backend> make_backend(SolverKind kind, cons
 QuasiDefiniteSolver::QuasiDefiniteSolver(SolverKind kind) : kind_(kind) {}
 QuasiDefiniteSolver::~QuasiDefiniteSolver() = default;
 
-void QuasiDefiniteSolver::factorize(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& node_of) {
-  if (!backend_) backend_ = make_backend(kind_, lower, node_of);
+void QuasiDefiniteSolver::factorize(const Eigen::SparseMatrix<double>& lower) {
+  if (!backend_) backend_ = make_backend(kind_, lower);
   backend_->factorize(lower);
   ++factorizations_;
 }

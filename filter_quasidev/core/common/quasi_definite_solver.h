@@ -1,15 +1,14 @@
 // Factorises and solves the quasi-definite augmented system K = [[M, Cᵀ], [C, −I]] of a group
 // with angle-defect rows C (deformation_system.h), whose pattern never changes: analysed on the
-// first factorisation, refactorised numerically after. Back ends: QuasiDefiniteLdlt (CHOLMOD's
-// analysis, METIS order, supernodal LDLᵀ) for SolverKind::Auto and Cholmod in a build with
-// CHOLMOD; Eigen's SimplicialLDLT in AMD order otherwise (LLᵀ cannot factorise K, so
-// SolverKind::EigenLLT takes it too).
+// first factorisation, refactorised numerically after. K arrives in a fill-reducing order, so no
+// back end reorders it. Back ends: QuasiDefiniteLdlt (CHOLMOD's symbolic analysis, our
+// supernodal LDLᵀ) for SolverKind::Auto and Cholmod in a build with CHOLMOD; Eigen's
+// SimplicialLDLT otherwise (LLᵀ cannot factorise K, so SolverKind::EigenLLT takes it too).
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
-#include <vector>
 
 #include "common/sparse_cholesky.h"
 
@@ -22,9 +21,8 @@ class QuasiDefiniteSolver {
   QuasiDefiniteSolver(const QuasiDefiniteSolver&) = delete;
   QuasiDefiniteSolver& operator=(const QuasiDefiniteSolver&) = delete;
 
-  // Factorises K from its lower triangle; node_of: the node (vertex) of each unknown, ordered
-  // together. Throws qd::Error if K cannot be factorised.
-  void factorize(const Eigen::SparseMatrix<double>& lower, const std::vector<int>& node_of);
+  // Factorises K from its lower triangle; throws qd::Error if K cannot be factorised.
+  void factorize(const Eigen::SparseMatrix<double>& lower);
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   int factorizations() const { return factorizations_; }
 
