@@ -189,7 +189,9 @@ def main():
         "direct method needs (one factorisation per iteration with re-projected targets, one in all "
         "with fixed ones) at the bare solver's speed; solve ratio = per-iteration solve / bare solve. "
         "Patches of 10,000 unknowns and more are solved by conjugate gradients (unless CG stalls), which never factorise "
-        "the coupled system, so their overhead can be below 1.",
+        "the coupled system, so their overhead can be below 1. The floor is the paper's M (bench/bare_solver.h) "
+        "added up over the patches: the garments' patches with angle-defect rows factorise their "
+        "quasi-definite system instead, and the engine runs patches two at a time, so theirs is below 1 too.",
         "## Issue 11 targets: real garments (defaults: angle-defect rows) and a noisy closed tube\n\n"
         "Iterations: " + ", ".join(f"{os.path.basename(r['mesh'])} {r['max_iter']}" for r in garments) +
         ". Targets: a 5.5k-triangle garment under 30 ms in the engine and 0.1 s end to end; the "
