@@ -71,27 +71,7 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
   for (auto& edge : edges)  // now in unknown-block numbering
     edge = {rank[static_cast<size_t>(edge.first)], rank[static_cast<size_t>(edge.second)]};
   build_pattern(edges);
-  index_defect_entries();
   if (!defects_.empty()) build_augmented_pattern();
-}
-
-// entry_row_ and, per unknown block, the defect star entries of its vertex (counting sort).
-void DeformationSystem::index_defect_entries() {
-  entry_row_.resize(defects_.star.size());
-  entry_start_.assign(static_cast<size_t>(blocks_) + 1, 0);
-  for (size_t r = 0; r < defects_.vertex.size(); ++r)
-    for (int i = defects_.start[r]; i < defects_.start[r + 1]; ++i) {
-      entry_row_[static_cast<size_t>(i)] = static_cast<int>(r);
-      const int k = unknown_[static_cast<size_t>(defects_.star[static_cast<size_t>(i)])];
-      if (k >= 0) ++entry_start_[static_cast<size_t>(k) + 1];
-    }
-  for (size_t k = 1; k < entry_start_.size(); ++k) entry_start_[k] += entry_start_[k - 1];
-  entries_.resize(static_cast<size_t>(entry_start_.back()));
-  std::vector<int> next(entry_start_.begin(), entry_start_.end() - 1);
-  for (size_t i = 0; i < defects_.star.size(); ++i) {
-    const int k = unknown_[static_cast<size_t>(defects_.star[i])];
-    if (k >= 0) entries_[static_cast<size_t>(next[static_cast<size_t>(k)]++)] = static_cast<int>(i);
-  }
 }
 
 // The lower-triangle pattern of M from the block edges (unknown block pairs of the faces): per
@@ -178,6 +158,9 @@ void DeformationSystem::set_rows(const std::vector<Vec3>& targets,
 // each entry's value being its source's number, which then tells where each source goes.
 void DeformationSystem::build_augmented_pattern() {
   const size_t rows = defects_.vertex.size(), blocks = static_cast<size_t>(blocks_);
+  entry_row_.resize(defects_.star.size());
+  for (size_t r = 0; r < rows; ++r)
+    std::fill(entry_row_.begin() + defects_.start[r], entry_row_.begin() + defects_.start[r + 1], static_cast<int>(r));
   std::vector<int> block_row(blocks, -1);
   for (size_t r = 0; r < rows; ++r) {
     const int k = unknown_[static_cast<size_t>(defects_.vertex[r])];

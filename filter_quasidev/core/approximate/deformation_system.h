@@ -92,7 +92,6 @@ class DeformationSystem {
 
  private:
   void build_pattern(const std::vector<std::pair<int, int>>& edges);
-  void index_defect_entries();
   void build_augmented_pattern();
   void set_augmented_values();
   Eigen::VectorXd defect_rhs(const Positions& ref) const;
@@ -115,8 +114,6 @@ class DeformationSystem {
   DefectStars defects_;
   DefectLinearisation linearised_;
   std::vector<int> entry_row_;     // row of each defect star entry
-  std::vector<int> entry_start_;   // star entries of unknown block k:
-  std::vector<int> entries_;       //   entries_[entry_start_[k] .. entry_start_[k+1])
   Eigen::SparseMatrix<double> M_;
   SolverKind solver_;
   int threads_;

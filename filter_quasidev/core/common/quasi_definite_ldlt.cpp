@@ -74,10 +74,6 @@ void dense_ldlt(int n, double* A, int lda) {
   dense_ldlt(n2, A22, lda);
 }
 
-}  // namespace
-
-namespace {
-
 // cholmod_sparse view of a pattern in Eigen's column-major arrays (lower triangle).
 cholmod_sparse pattern_view(int n, const int* outer, const int* inner) {
   cholmod_sparse A{};
