@@ -93,7 +93,7 @@ void add_approximate_options(CLI::App& job, ApproximateOptions& o) {
   method << "direct: factorise the coupled system; iterative: conjugate\ngradients with two scalar "
             "factors, to a relative error of\n"
          << kCgTolerance << "; auto: iterative from " << kIterativeFromUnknowns
-         << " unknowns\nper patch without angle-defect rows";
+         << " unknowns\nper patch; patches with angle-defect rows are always\nfactorised";
   choices(job, "--method", "M", method.str(), kSolveMethods, p.method);
   valued(job, "--threads", "N",
          "patches solved at once (fixed seams); 0 = all cores; the\nresult does not depend on it" +
