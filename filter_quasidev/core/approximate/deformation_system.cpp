@@ -35,7 +35,8 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
     : g_(group), w_(params.weight), incident_(group.F, group.V0.rows()),
       defects_(defect_rows.empty() ? DefectStars{}
                                    : defect_stars(g_, incident_, defect_rows, params.defect_weight)),
-      solver_(params.solver), threads_(params.threads), cholesky_(params.solver), augmented_(params.solver) {
+      solver_(params.solver), threads_(params.threads), cholesky_(params.solver),
+      augmented_(params.solver, false, Definiteness::Quasi) {
   const size_t n = g_.fixed.size();
   std::vector<int> free_index(n, -1);
   int free_count = 0;

@@ -48,7 +48,6 @@
 #include "approximate/group_mesh.h"
 #include "approximate/result.h"
 #include "common/block_pattern.h"
-#include "common/quasi_definite_solver.h"
 #include "common/sparse_cholesky.h"
 
 namespace qd {
@@ -123,7 +122,7 @@ class DeformationSystem {
   std::vector<int> place_;         // K's unknown of each unknown of M
   std::vector<int> multiplier_;    // K's unknown of each defect row's multiplier
   std::vector<int> slot_;          // place in K's values of each source (build_augmented_pattern)
-  QuasiDefiniteSolver augmented_;
+  SparseCholesky augmented_;       // K's LDLᵀ
   bool factor_current_ = false;  // the factor belongs to the current M
   std::unique_ptr<FramePreconditioner> preconditioner_;  // built at the first iterative solve
   int scalar_factorizations_ = 0;                        // the preconditioner's

@@ -21,12 +21,6 @@ namespace {
 constexpr int kUnblocked = 32;     // dense blocks up to this size are factorised by plain loops
 constexpr int kUpdateColumns = 256;  // widest block of an update computed at once
 
-void zero_pivot() {
-  throw Error(
-      "the deformation system has a vanishing pivot (degenerate faces?): remove zero-area and "
-      "duplicate faces, then try again");
-}
-
 // C(m×n) = beta·C − A(m×k)·B(n×k)ᵀ, column major.
 void subtract_product(int m, int n, int k, const double* A, int lda, const double* B, int ldb, double beta,
                       double* C, int ldc) {
@@ -40,14 +34,28 @@ void solve_right_unit_lower_transposed(int m, int n, const double* L, int ldl, d
   dtrsm_("R", "L", "T", "U", &m, &n, &one, L, &ldl, B, &ldb);
 }
 
+// Given B(m×n) = L21·D, with D on the diagonal of the factored block above it (leading
+// dimension ld): W(m×n, leading dimension m) := L21·D and B := L21.
+void split_off_diagonal(int m, int n, const double* factored, int ld, double* B, int ldb, std::vector<double>& W) {
+  W.resize(static_cast<size_t>(m) * static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) {
+    const double d = factored[j + static_cast<long>(j) * ld];
+    for (int i = 0; i < m; ++i) {
+      W[static_cast<size_t>(i + static_cast<long>(j) * m)] = B[i + static_cast<long>(j) * ldb];
+      B[i + static_cast<long>(j) * ldb] /= d;
+    }
+  }
+}
+
 // A(n×n, lower triangle) = L·D·Lᵀ in place: unit L below the diagonal, D on it. The upper
-// triangle is scratch. Recursive halving puts most of the work in dgemm.
-void dense_ldlt(int n, double* A, int lda) {
+// triangle is scratch. Recursive halving puts most of the work in dgemm. False when a pivot
+// vanishes.
+bool dense_ldlt(int n, double* A, int lda) {
   if (n <= kUnblocked) {
     for (int j = 0; j < n; ++j) {
       double* column = A + static_cast<long>(j) * lda;
       const double d = column[j];
-      if (d == 0.0 || !std::isfinite(d)) zero_pivot();
+      if (d == 0.0 || !std::isfinite(d)) return false;
       for (int k = j + 1; k < n; ++k) {  // A22 −= l·d·lᵀ, with l·d = the column before scaling
         const double wk = column[k];
         double* target = A + static_cast<long>(k) * lda;
@@ -55,23 +63,17 @@ void dense_ldlt(int n, double* A, int lda) {
       }
       for (int i = j + 1; i < n; ++i) column[i] /= d;
     }
-    return;
+    return true;
   }
   const int n1 = n / 2, n2 = n - n1;
-  dense_ldlt(n1, A, lda);
+  if (!dense_ldlt(n1, A, lda)) return false;
   double* A21 = A + n1;
   double* A22 = A + n1 + static_cast<long>(n1) * lda;
   solve_right_unit_lower_transposed(n2, n1, A, lda, A21, lda);  // A21 = L21·D1
-  std::vector<double> W(static_cast<size_t>(n2) * static_cast<size_t>(n1));
-  for (int j = 0; j < n1; ++j) {
-    const double d = A[j + static_cast<long>(j) * lda];
-    for (int i = 0; i < n2; ++i) {
-      W[static_cast<size_t>(i + j * n2)] = A21[i + static_cast<long>(j) * lda];
-      A21[i + static_cast<long>(j) * lda] /= d;
-    }
-  }
+  std::vector<double> W;
+  split_off_diagonal(n2, n1, A, lda, A21, lda, W);
   subtract_product(n2, n2, n1, A21, lda, W.data(), n2, 1.0, A22, lda);  // A22 −= L21·D1·L21ᵀ
-  dense_ldlt(n2, A22, lda);
+  return dense_ldlt(n2, A22, lda);
 }
 
 // cholmod_sparse view of a pattern in Eigen's column-major arrays (lower triangle).
@@ -118,7 +120,6 @@ QuasiDefiniteLdlt::QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower)
   const std::vector<int> px = copy(L->px, ns + 1);
   value_start_.assign(px.begin(), px.end());
   values_.resize(L->xsize);
-  flops_ = c.fl;
   cholmod_free_factor(&L, &c);
   cholmod_finish(&c);
 
@@ -162,36 +163,33 @@ void QuasiDefiniteLdlt::place_entries(const Eigen::SparseMatrix<double>& lower) 
   }
 }
 
-void QuasiDefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& lower) {
+bool QuasiDefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& lower) {
   std::fill(values_.begin(), values_.end(), 0.0);
   const double* value = lower.valuePtr();
   for (size_t e = 0; e < slot_.size(); ++e) values_[static_cast<size_t>(slot_[e])] += value[e];
   std::vector<double> work;
   std::vector<int> map(static_cast<size_t>(n_), -1);
-  for (int s = 0; s + 1 < static_cast<int>(super_.size()); ++s) factorize_supernode(s, work, map);
+  for (int s = 0; s + 1 < static_cast<int>(super_.size()); ++s)
+    if (!factorize_supernode(s, work, map)) return false;
+  return true;
 }
 
 // Supernode s, all of whose updates have arrived: LDLᵀ of its diagonal block, then its rows
 // below (L21 = A21·L11⁻ᵀ·D⁻¹), then its update L21·D·L21ᵀ to the supernodes above.
-void QuasiDefiniteLdlt::factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map) {
+bool QuasiDefiniteLdlt::factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map) {
   const auto su = static_cast<size_t>(s);
   const int columns = super_[su + 1] - super_[su];
   const int height = row_start_[su + 1] - row_start_[su];
   const int below = height - columns;
   double* X = values_.data() + value_start_[su];
-  dense_ldlt(columns, X, height);
-  if (below == 0) return;
+  if (!dense_ldlt(columns, X, height)) return false;
+  if (below == 0) return true;
   double* X21 = X + columns;
   solve_right_unit_lower_transposed(below, columns, X, height, X21, height);  // L21·D
-  std::vector<double> W(static_cast<size_t>(below) * static_cast<size_t>(columns));
-  for (int j = 0; j < columns; ++j) {
-    const double d = X[j + static_cast<long>(j) * height];
-    for (int i = 0; i < below; ++i) {
-      W[static_cast<size_t>(i + static_cast<long>(j) * below)] = X21[i + static_cast<long>(j) * height];
-      X21[i + static_cast<long>(j) * height] /= d;
-    }
-  }
+  std::vector<double> W;
+  split_off_diagonal(below, columns, X, height, X21, height, W);
   update_ancestors(s, W.data(), work, map);
+  return true;
 }
 
 // Subtracts L21·D·L21ᵀ (W = L21·D) from the supernodes that own the rows below s: for each run

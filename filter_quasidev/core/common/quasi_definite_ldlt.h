@@ -8,7 +8,8 @@
 // factorisation. Kept apart, with one multiplier per defect row, the same system costs 0.63 GFlop
 // (deformation_system.h). CHOLMOD's supernodal factorisation is LLᵀ only, so this class takes
 // CHOLMOD's symbolic analysis (postorder, relaxed supernodes) and does the numeric LDLᵀ itself,
-// supernode by supernode with dense BLAS kernels, and the solves.
+// supernode by supernode with dense BLAS kernels, and the solves. SparseCholesky
+// (Definiteness::Quasi) is how the engine uses it.
 #pragma once
 
 #include <Eigen/Core>
@@ -23,17 +24,15 @@ class QuasiDefiniteLdlt {
   // in a fill-reducing order (CHOLMOD only postorders it).
   explicit QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower);
 
-  // Factorises K with the values of `lower` (the pattern given at construction); throws
-  // qd::Error when a pivot vanishes (K is not quasi-definite).
-  void factorize(const Eigen::SparseMatrix<double>& lower);
+  // Factorises K with the values of `lower` (the pattern given at construction); false when a
+  // pivot vanishes (K is not quasi-definite).
+  bool factorize(const Eigen::SparseMatrix<double>& lower);
   // Solves K x = b with the current factor.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
-  double flops() const { return flops_; }  // of one factorisation, from the analysis
-
  private:
   void place_entries(const Eigen::SparseMatrix<double>& lower);
-  void factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map);
+  bool factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map);
   void update_ancestors(int s, const double* W, std::vector<double>& work, std::vector<int>& map);
 
   int n_ = 0;
@@ -45,7 +44,6 @@ class QuasiDefiniteLdlt {
   std::vector<int> owner_;        // supernode of each column
   std::vector<long> slot_;        // place in values_ of each stored entry of `lower`
   std::vector<double> values_;    // unit-lower L (diagonal entries hold D)
-  double flops_ = 0;
 };
 
 }  // namespace qd

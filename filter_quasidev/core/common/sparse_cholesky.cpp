@@ -3,10 +3,14 @@
 #include <Eigen/SparseCholesky>
 #ifdef QD_WITH_CHOLMOD
 #include <Eigen/CholmodSupport>
+
+#include "common/quasi_definite_ldlt.h"
 constexpr bool kHaveCholmod = true;
 #else
 constexpr bool kHaveCholmod = false;  // the build for plugins whose host ships no SuiteSparse
 #endif
+
+#include <string>
 
 #include "common/error.h"
 
@@ -57,12 +61,29 @@ struct CholmodBackend : EigenApiBackend<Supernodal> {
     return ok;
   }
 };
+
+struct QuasiDefiniteBackend : SparseCholesky::Backend {
+  std::unique_ptr<QuasiDefiniteLdlt> ldlt;
+  bool analyse_and_factorize(const Eigen::SparseMatrix<double>& M, bool analyse) override {
+    if (analyse) ldlt = std::make_unique<QuasiDefiniteLdlt>(M);
+    return ldlt->factorize(M);
+  }
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override {
+    Eigen::MatrixXd x(b.rows(), b.cols());
+    for (Eigen::Index c = 0; c < b.cols(); ++c) x.col(c) = ldlt->solve(b.col(c));
+    return x;
+  }
+};
 #endif
 
 std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unknowns,
-                                                      [[maybe_unused]] bool simplicial_solves) {
+                                                      [[maybe_unused]] bool simplicial_solves,
+                                                      Definiteness definiteness) {
+  const bool quasi = definiteness == Definiteness::Quasi;
   if (kind == SolverKind::Auto)
-    kind = unknowns < kCholmodFromUnknowns || !kHaveCholmod ? SolverKind::EigenLDLT : SolverKind::Cholmod;
+    kind = (unknowns < kCholmodFromUnknowns && !quasi) || !kHaveCholmod ? SolverKind::EigenLDLT
+                                                                         : SolverKind::Cholmod;
+  if (quasi && kind == SolverKind::EigenLLT) kind = SolverKind::EigenLDLT;  // LLᵀ cannot factorise K
   switch (kind) {
     case SolverKind::EigenLLT:
       return std::make_unique<EigenApiBackend<Eigen::SimplicialLLT<Matrix, Eigen::Lower, Natural>>>();
@@ -73,6 +94,7 @@ std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unkn
       break;
   }
 #ifdef QD_WITH_CHOLMOD
+  if (quasi) return std::make_unique<QuasiDefiniteBackend>();
   return std::make_unique<CholmodBackend>(simplicial_solves);
 #else
   throw Error("this build of the engine has no CHOLMOD: choose the eigen-llt or eigen-ldlt solver");
@@ -81,17 +103,18 @@ std::unique_ptr<SparseCholesky::Backend> make_backend(SolverKind kind, long unkn
 
 }  // namespace
 
-SparseCholesky::SparseCholesky(SolverKind kind, bool many_solves) : kind_(kind), many_solves_(many_solves) {}
+SparseCholesky::SparseCholesky(SolverKind kind, bool many_solves, Definiteness definiteness)
+    : kind_(kind), many_solves_(many_solves), definiteness_(definiteness) {}
 SparseCholesky::~SparseCholesky() = default;
 
 void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& M) {
-  if (!backend_) backend_ = make_backend(kind_, M.rows(), many_solves_);
+  if (!backend_) backend_ = make_backend(kind_, M.rows(), many_solves_, definiteness_);
   const bool ok = backend_->analyse_and_factorize(M, factorizations_ == 0);
   ++factorizations_;
   if (!ok)
-    throw Error(
-        "the deformation system is not positive definite (degenerate faces?): remove zero-area "
-        "and duplicate faces, then try again");
+    throw Error(std::string("the deformation system ") +
+                (definiteness_ == Definiteness::Positive ? "is not positive definite" : "has a vanishing pivot") +
+                " (degenerate faces?): remove zero-area and duplicate faces, then try again");
 }
 
 Eigen::MatrixXd SparseCholesky::solve(const Eigen::MatrixXd& b) const { return backend_->solve(b); }
