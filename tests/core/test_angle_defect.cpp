@@ -64,10 +64,15 @@ struct OneGroup {
   }
 };
 
+// The rows of s linearised at X, with X's angles as the engine passes them.
+DefectLinearisation linearised(const OneGroup& s, const Positions& X) {
+  return linearise_defects(s.rows, s.g, s.incident, X, vertex_angles(X, s.g.F));
+}
+
 TEST(AngleDefect, GradientMatchesFiniteDifferences) {
   const OneGroup s(wrinkled_sheet(8));
   ASSERT_FALSE(s.rows.empty());
-  const DefectLinearisation lin = linearise_defects(s.rows, s.g, s.incident, s.g.V0);
+  const DefectLinearisation lin = linearised(s, s.g.V0);
   const double h = 1e-6;
   double worst = 0;
   for (size_t r = 0; r < s.rows.vertex.size(); r += 5)
@@ -76,8 +81,8 @@ TEST(AngleDefect, GradientMatchesFiniteDifferences) {
         Positions plus = s.g.V0, minus = s.g.V0;
         plus(s.rows.star[static_cast<size_t>(i)], d) += h;
         minus(s.rows.star[static_cast<size_t>(i)], d) -= h;
-        const double numeric = (linearise_defects(s.rows, s.g, s.incident, plus).defect[r] -
-                                linearise_defects(s.rows, s.g, s.incident, minus).defect[r]) /
+        const double numeric = (linearised(s, plus).defect[r] -
+                                linearised(s, minus).defect[r]) /
                                (2 * h);
         worst = std::max(worst, std::abs(numeric - lin.gradient[static_cast<size_t>(i)](d)));
       }
@@ -86,10 +91,10 @@ TEST(AngleDefect, GradientMatchesFiniteDifferences) {
 
 TEST(AngleDefect, DefectIsTwoPiMinusTheAngleSum) {
   const OneGroup s(wrinkled_sheet(6));
-  const DefectLinearisation lin = linearise_defects(s.rows, s.g, s.incident, s.g.V0);
+  const DefectLinearisation lin = linearised(s, s.g.V0);
   Problem flat = wrinkled_sheet(6, 0.0);
   const OneGroup f(flat);
-  const DefectLinearisation zero = linearise_defects(f.rows, f.g, f.incident, f.g.V0);
+  const DefectLinearisation zero = linearised(f, f.g.V0);
   for (double k : zero.defect) EXPECT_NEAR(k, 0.0, 1e-12);  // a flat sheet is developable
   double largest = 0;
   for (double k : lin.defect) largest = std::max(largest, std::abs(k));

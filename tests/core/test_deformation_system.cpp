@@ -111,7 +111,8 @@ struct Both {
   Both(double w, double alpha, double ae, SolverKind solver = SolverKind::Auto,
        SolveMethod method = SolveMethod::Direct, bool smooth = false, bool defect_rows = false)
       : s(smooth), sys(s.g, params(w, alpha, solver, method), ae, rows_of(s, defect_rows)) {
-    sys.set_rows(s.targets, defect_rows ? sys.linearise_defects_at(s.ref) : DefectLinearisation{});
+    sys.set_rows(s.targets, defect_rows ? sys.linearise_defects_at(s.ref, vertex_angles(s.ref, s.g.F))
+                                        : DefectLinearisation{});
     Eigen::MatrixXd by_vertex;
     dense_system(s, w, alpha, ae, by_vertex, c);
     if (defect_rows) append_defect_rows(by_vertex);
@@ -133,7 +134,8 @@ struct Both {
   void append_defect_rows(Eigen::MatrixXd& by_vertex) {
     const VertexFaces incident(s.g.F, s.g.V0.rows());
     const DefectStars rows = defect_stars(s.g, incident, rows_of(s, true), Params().defect_weight);
-    const DefectLinearisation lin = linearise_defects(rows, s.g, incident, s.ref);
+    const DefectLinearisation lin =
+        linearise_defects(rows, s.g, incident, s.ref, vertex_angles(s.ref, s.g.F));
     std::vector<int> column(s.g.fixed.size(), -1);
     int k = 0;
     for (size_t v = 0; v < column.size(); ++v)

@@ -9,8 +9,6 @@
 namespace qd {
 namespace {
 
-constexpr double kTwoPi = 2 * 3.14159265358979323846;
-
 // Position of local vertex u in the star of row r (appended when new).
 int star_entry(DefectStars& s, int u) {
   const auto first = s.star.begin() + s.start.back();
@@ -51,12 +49,14 @@ DefectStars defect_stars(const GroupMesh& g, const VertexFaces& incident,
 }
 
 DefectLinearisation linearise_defects(const DefectStars& rows, const GroupMesh& g,
-                                      const VertexFaces& incident, const Positions& X) {
+                                      const VertexFaces& incident, const Positions& X,
+                                      const VertexAngles& angles) {
   DefectLinearisation lin;
-  lin.defect.assign(rows.vertex.size(), kTwoPi);
+  lin.defect.resize(rows.vertex.size());
   lin.gradient.assign(rows.star.size(), Vec3::Zero());
   for (size_t r = 0; r < rows.vertex.size(); ++r) {
     const int v = rows.vertex[r];
+    lin.defect[r] = angles.defect[static_cast<size_t>(v)];
     const int first = rows.start[r], last = rows.start[r + 1];
     const auto entry = [&](int u) {
       return static_cast<size_t>(std::find(rows.star.begin() + first, rows.star.begin() + last, u) -
@@ -70,7 +70,6 @@ DefectLinearisation linearise_defects(const DefectStars& rows, const GroupMesh& 
       const Vec3 ej = X.row(j).transpose() - xi, el = X.row(l).transpose() - xi;
       const Vec3 cross = ej.cross(el);
       const double doubled_area = cross.norm();
-      lin.defect[r] -= std::atan2(doubled_area, ej.dot(el));
       if (!(doubled_area > 0)) continue;  // a degenerate face: no direction to follow
       const Vec3 n = cross / doubled_area;
       const Vec3 dj = -n.cross(ej) / ej.squaredNorm();  // ∂θ/∂x_j

@@ -22,6 +22,7 @@
 
 #include "approximate/group_mesh.h"
 #include "common/mesh.h"
+#include "common/metrics.h"
 
 namespace qd {
 
@@ -43,12 +44,14 @@ DefectStars defect_stars(const GroupMesh& g, const VertexFaces& incident,
                          const std::vector<char>& has_row, double weight);
 
 // K_v and ∇K_v of every row at positions X: defect[r], and gradient[i] = ∂K_v/∂x_u for the
-// star entry i (same indexing as DefectStars::star).
+// star entry i (same indexing as DefectStars::star). K_v is taken from `angles`, the
+// vertex_angles of X: the very defects the never-worse rule measures.
 struct DefectLinearisation {
   std::vector<double> defect;
   std::vector<Vec3> gradient;
 };
 DefectLinearisation linearise_defects(const DefectStars& rows, const GroupMesh& g,
-                                      const VertexFaces& incident, const Positions& X);
+                                      const VertexFaces& incident, const Positions& X,
+                                      const VertexAngles& angles);
 
 }  // namespace qd

@@ -70,9 +70,9 @@ class DeformationSystem {
   void set_rows(const std::vector<Vec3>& targets, const DefectLinearisation& defects = {});
 
   bool has_defect_rows() const { return !defects_.empty(); }
-  // The angle-defect rows linearised at X, for set_rows.
-  DefectLinearisation linearise_defects_at(const Positions& X) const {
-    return linearise_defects(defects_, g_, incident_, X);
+  // The angle-defect rows linearised at X (angles: vertex_angles of X), for set_rows.
+  DefectLinearisation linearise_defects_at(const Positions& X, const VertexAngles& angles) const {
+    return linearise_defects(defects_, g_, incident_, X, angles);
   }
 
   // Right-hand side Aᵀc − M_fc·x_c + anchor terms for reference positions `ref` (the defect

@@ -86,24 +86,29 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
   const std::vector<int> vertices = all_indices(group.solve_vertices);
   DeformOutcome out;
   Figures last;  // figures after the last accepted step
-  auto figures = [&](const Positions& X, const std::vector<Vec3>& t) {
+  const auto angles_at = [&](const Positions& X) {
     StageTimer timer(out.times.metrics);
-    return measure(group.V0, X, group.F, group.owned, faces, t, vertices);
+    return vertex_angles(X, group.F);
+  };
+  auto figures = [&](const VertexAngles& at_X, const Positions& X, const std::vector<Vec3>& t) {
+    StageTimer timer(out.times.metrics);
+    return measure(at_X, group.V0, X, group.F, group.owned, faces, t, vertices);
   };
 
   DeformationSystem system = [&] {  // MLS weights, ordering, sparsity pattern
     StageTimer timer(out.times.setup);
     return DeformationSystem(group, params, ae, defect_rows);
   }();
-  const auto linearised = [&](const Positions& X) {  // the defect rows at X
+  out.V = group.V0;
+  VertexAngles angles = angles_at(out.V);  // kept at the current positions out.V
+  const auto linearised = [&] {  // the defect rows at the current positions
     StageTimer timer(out.times.assembly);
-    return system.linearise_defects_at(X);
+    return system.linearise_defects_at(out.V, angles);
   };
   const bool has_defects = system.has_defect_rows();
   std::vector<Vec3> current_targets = targets;
-  system.set_rows(current_targets, linearised(group.V0));  // Algorithm 1, steps 2.1–2.3
+  system.set_rows(current_targets, linearised());  // Algorithm 1, steps 2.1–2.3
 
-  out.V = group.V0;
   out.stop_reason = "maxIter reached";
   for (int it = 1; it <= params.max_iter; ++it) {
     const bool retargets = it > 1 && params.targets != TargetMode::Fixed;
@@ -112,10 +117,10 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
       current_targets = retarget(out.V);
     }
     if (retargets || (it > 1 && has_defects))  // Gauss–Newton: linearise again at the iterate
-      system.set_rows(current_targets, has_defects ? linearised(out.V) : DefectLinearisation{});
+      system.set_rows(current_targets, has_defects ? linearised() : DefectLinearisation{});
     // The figures of the current positions: all but the OBD carry over from the last accepted
     // step; the OBD is taken against the current targets.
-    Figures before = it == 1 ? figures(out.V, current_targets) : last;
+    Figures before = it == 1 ? figures(angles, out.V, current_targets) : last;
     if (it > 1) {
       StageTimer timer(out.times.metrics);
       before.obd = orientation_developability(out.V, group.F, faces, current_targets);
@@ -132,10 +137,12 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
         StageTimer timer(out.times.metrics);
         flips = flipped_faces(group.F, group.V0, candidate);
       }
-      const Figures after = figures(candidate, current_targets);
+      VertexAngles candidate_angles = angles_at(candidate);
+      const Figures after = figures(candidate_angles, candidate, current_targets);
       if (flips == 0 && after.g_abd <= before.g_abd) {
         report.figures = last = after;
         out.V = candidate;
+        angles = std::move(candidate_angles);
         return true;
       }
       report.note += (report.note.empty() ? "" : "; ") + label +

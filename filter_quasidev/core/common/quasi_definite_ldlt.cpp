@@ -39,11 +39,10 @@ void solve_right_unit_lower_transposed(int m, int n, const double* L, int ldl, d
 void split_off_diagonal(int m, int n, const double* factored, int ld, double* B, int ldb, std::vector<double>& W) {
   W.resize(static_cast<size_t>(m) * static_cast<size_t>(n));
   for (int j = 0; j < n; ++j) {
-    const double d = factored[j + static_cast<long>(j) * ld];
-    for (int i = 0; i < m; ++i) {
-      W[static_cast<size_t>(i + static_cast<long>(j) * m)] = B[i + static_cast<long>(j) * ldb];
-      B[i + static_cast<long>(j) * ldb] /= d;
-    }
+    const double inverse = 1.0 / factored[j + static_cast<long>(j) * ld];
+    double* b = B + static_cast<long>(j) * ldb;
+    std::copy(b, b + m, W.begin() + static_cast<long>(j) * m);
+    for (int i = 0; i < m; ++i) b[i] *= inverse;
   }
 }
 
@@ -203,6 +202,7 @@ void QuasiDefiniteLdlt::update_ancestors(int s, const double* W, std::vector<dou
   const int below = height - columns;
   const int* row = rows_.data() + row_start_[su] + columns;
   const double* L21 = values_.data() + value_start_[su] + columns;
+  std::vector<int> place;  // the places in t's rows of the rows from i on
   int mapped = -1;
   for (int i = 0; i < below;) {
     const int t = owner_[static_cast<size_t>(row[i])];
@@ -217,55 +217,59 @@ void QuasiDefiniteLdlt::update_ancestors(int s, const double* W, std::vector<dou
     const int m = below - i, width = last - i;
     work.resize(static_cast<size_t>(m) * static_cast<size_t>(width));
     subtract_product(m, width, columns, W + i, below, L21 + i, height, 0.0, work.data(), m);  // −U
-    for (int j = 0; j < width; ++j) {
-      double* target = values_.data() + value_start_[tu] +
-                       static_cast<long>(row[i + j] - super_[tu]) * t_height;
+    place.resize(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k) place[static_cast<size_t>(k)] = map[static_cast<size_t>(row[i + k])];
+    for (int j = 0; j < width; ++j) {  // t's own rows come first: a row's place is its column
+      double* target =
+          values_.data() + value_start_[tu] + static_cast<long>(place[static_cast<size_t>(j)]) * t_height;
       const double* u = work.data() + static_cast<long>(j) * m;
-      for (int k = j; k < m; ++k) target[map[static_cast<size_t>(row[i + k])]] += u[k];
+      for (int k = j; k < m; ++k) target[place[static_cast<size_t>(k)]] += u[k];
     }
     i = last;
   }
 }
 
+// Each supernode's part of x is gathered into a dense vector t (its rows), worked on there, and
+// scattered back: the loops then run over contiguous memory.
 Eigen::VectorXd QuasiDefiniteLdlt::solve(const Eigen::VectorXd& b) const {
   Eigen::VectorXd x(n_);
   for (int k = 0; k < n_; ++k) x[k] = b[perm_[static_cast<size_t>(k)]];
   const int ns = static_cast<int>(super_.size()) - 1;
-  const auto panel = [this](int s, int& first, int& columns, int& height, const int*& row, const double*& X) {
-    const auto su = static_cast<size_t>(s);
-    first = super_[su];
-    columns = super_[su + 1] - first;
-    height = row_start_[su + 1] - row_start_[su];
-    row = rows_.data() + row_start_[su];
-    X = values_.data() + value_start_[su];
-  };
-  int first, columns, height;
-  const int* row;
-  const double* X;
-  for (int s = 0; s < ns; ++s) {  // L y = b
-    panel(s, first, columns, height, row, X);
-    for (int j = 0; j < columns; ++j) {
-      const double xj = x[first + j];
-      const double* l = X + static_cast<long>(j) * height;
-      for (int i = j + 1; i < height; ++i) x[row[i]] -= l[i] * xj;
+  std::vector<double> t;
+  for (int s = 0; s < ns; ++s) {  // L y = b, then D z = y
+    const Panel p = panel(s);
+    t.resize(static_cast<size_t>(p.height));
+    for (int i = 0; i < p.height; ++i) t[static_cast<size_t>(i)] = x[p.row[i]];
+    for (int j = 0; j < p.columns; ++j) {
+      const double tj = t[static_cast<size_t>(j)];
+      const double* l = p.X + static_cast<long>(j) * p.height;
+      for (int i = j + 1; i < p.height; ++i) t[static_cast<size_t>(i)] -= l[i] * tj;
     }
-  }
-  for (int s = 0; s < ns; ++s) {  // D z = y
-    panel(s, first, columns, height, row, X);
-    for (int j = 0; j < columns; ++j) x[first + j] /= X[j + static_cast<long>(j) * height];
+    for (int j = 0; j < p.columns; ++j)
+      x[p.row[j]] = t[static_cast<size_t>(j)] / p.X[j + static_cast<long>(j) * p.height];
+    for (int i = p.columns; i < p.height; ++i) x[p.row[i]] = t[static_cast<size_t>(i)];
   }
   for (int s = ns - 1; s >= 0; --s) {  // Lᵀ x = z
-    panel(s, first, columns, height, row, X);
-    for (int j = columns - 1; j >= 0; --j) {
-      const double* l = X + static_cast<long>(j) * height;
-      double sum = 0.0;
-      for (int i = j + 1; i < height; ++i) sum += l[i] * x[row[i]];
-      x[first + j] -= sum;
+    const Panel p = panel(s);
+    t.resize(static_cast<size_t>(p.height));
+    for (int i = 0; i < p.height; ++i) t[static_cast<size_t>(i)] = x[p.row[i]];
+    for (int j = p.columns - 1; j >= 0; --j) {  // Eigen's dot keeps several sums going at once
+      const Eigen::Index rest = p.height - j - 1;
+      const double* l = p.X + static_cast<long>(j) * p.height + j + 1;
+      t[static_cast<size_t>(j)] -= Eigen::Map<const Eigen::VectorXd>(l, rest).dot(
+          Eigen::Map<const Eigen::VectorXd>(t.data() + j + 1, rest));
     }
+    for (int j = 0; j < p.columns; ++j) x[p.row[j]] = t[static_cast<size_t>(j)];
   }
   Eigen::VectorXd out(n_);
   for (int k = 0; k < n_; ++k) out[perm_[static_cast<size_t>(k)]] = x[k];
   return out;
+}
+
+QuasiDefiniteLdlt::Panel QuasiDefiniteLdlt::panel(int s) const {
+  const auto su = static_cast<size_t>(s);
+  return {super_[su + 1] - super_[su], row_start_[su + 1] - row_start_[su], rows_.data() + row_start_[su],
+          values_.data() + value_start_[su]};
 }
 
 }  // namespace qd

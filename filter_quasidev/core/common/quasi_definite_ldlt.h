@@ -31,6 +31,12 @@ class QuasiDefiniteLdlt {
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
  private:
+  struct Panel {  // supernode s: its columns, rows (own columns first) and dense values
+    int columns, height;
+    const int* row;
+    const double* X;
+  };
+  Panel panel(int s) const;
   void place_entries(const Eigen::SparseMatrix<double>& lower);
   bool factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map);
   void update_ancestors(int s, const double* W, std::vector<double>& work, std::vector<int>& map);
