@@ -47,6 +47,32 @@ TEST(ConjugateGradients, StopsAtTheToleranceOfTheCorrection) {
   }
 }
 
+// A warm start near the solution saves iterations and still meets the tolerance of the
+// correction from the reference point; a guess worse than the reference is not taken.
+TEST(ConjugateGradients, AWarmStartSavesIterationsToTheSameTolerance) {
+  const Eigen::MatrixXd M = laplacian_plus_identity(200);
+  const Eigen::VectorXd x_star = Eigen::VectorXd::LinSpaced(200, 0.0, 1.0).array().sin();
+  const Eigen::VectorXd b = M * x_star, x0 = Eigen::VectorXd::Constant(200, 0.5);
+  const auto energy = [&](const Eigen::VectorXd& e) { return std::sqrt(e.dot(M * e)); };
+  const auto solve = [&](const Eigen::VectorXd* guess, Eigen::VectorXd& x) {
+    x = x0;
+    return conjugate_gradients([&](const Eigen::VectorXd& p) -> Eigen::VectorXd { return M * p; },
+                               [&](const Eigen::VectorXd& r) -> Eigen::VectorXd { return r / 3.0; }, b,
+                               x, 1e-6, 400, guess);
+  };
+  Eigen::VectorXd cold, warm, ignored;
+  const CgOutcome from_reference = solve(nullptr, cold);
+  const Eigen::VectorXd near = x_star + 1e-4 * Eigen::VectorXd::LinSpaced(200, -1.0, 1.0);
+  const CgOutcome from_guess = solve(&near, warm);
+  EXPECT_TRUE(from_guess.converged);
+  EXPECT_LE(3 * from_guess.iterations, 2 * from_reference.iterations);
+  EXPECT_LT(energy(warm - x_star), 3.0 * 1e-6 * energy(x_star - x0));
+  const Eigen::VectorXd far = x_star + 10.0 * (x_star - x0);
+  const CgOutcome from_far = solve(&far, ignored);
+  EXPECT_EQ(from_far.iterations, from_reference.iterations);
+  EXPECT_EQ(ignored, cold);
+}
+
 TEST(ConjugateGradients, GivesUpEarlyWhenItCannotMakeTheToleranceInTime) {
   const int n = 400;  // eigenvalues spread evenly in log scale over 1 .. 1e6
   const Eigen::MatrixXd M = Eigen::VectorXd::LinSpaced(n, 0.0, 6.0).unaryExpr([](double e) {

@@ -317,8 +317,9 @@ Eigen::VectorXd DeformationSystem::solve_iteratively(const Eigen::VectorXd& b, c
   CgOutcome cg;
   {
     StageTimer timer(times_.solve);
-    cg = conjugate_gradients(multiply, precondition, b, x, kCgTolerance, kCgIterations);
+    cg = conjugate_gradients(multiply, precondition, b, x, kCgTolerance, kCgIterations, &last_solution_);
   }
+  last_solution_ = x;
   times_.cg_iterations += cg.iterations;
   if (cg.converged) return x;
   iterative_ = false;  // the frames do not fit this group's targets: factorise M from now on
