@@ -192,7 +192,8 @@ TEST(Metrics, MeasureCombinesFigures) {
   V.row(1) += qd::Vec3(0, 0, 0.3).transpose();
   V.row(2) += qd::Vec3(0.4, 0, 0).transpose();
   const std::vector<qd::Vec3> targets = {qd::Vec3(0, 0, 1), qd::Vec3(1, 0, 0), qd::Vec3(0, 1, 0)};
-  const qd::Figures fig = qd::measure(V0, V, F, {0}, {0, 1, 2}, targets, {1, 2, 3});
+  const qd::Figures fig =
+      qd::measure(qd::vertex_angles(V, F), V0, V, F, {0}, {0, 1, 2}, targets, {1, 2, 3});
 
   const double k = qd::gaussian_curvature(qd::vertex_angles(V, F), only(0, 4))[0];
   EXPECT_NEAR(fig.g_abd, std::abs(k), 1e-12);
@@ -204,7 +205,8 @@ TEST(Metrics, MeasureCombinesFigures) {
   EXPECT_NEAR(fig.max_disp, 0.4, 1e-15);
   EXPECT_NEAR(fig.mean_disp, (0.3 + 0.4 + 0.0) / 3, 1e-15);
 
-  const qd::Figures no_targets = qd::measure(V0, V, F, {0}, {0, 1, 2}, {}, {1, 2, 3});
+  const qd::Figures no_targets =
+      qd::measure(qd::vertex_angles(V, F), V0, V, F, {0}, {0, 1, 2}, {}, {1, 2, 3});
   EXPECT_EQ(no_targets.obd, 0.0);
 }
 
@@ -212,7 +214,8 @@ TEST(Metrics, MeasureOfUnchangedCubeCorner) {
   qd::Positions V;
   qd::Triangles F;
   cube_corner(V, F);
-  const qd::Figures fig = qd::measure(V, V, F, {0}, {0, 1, 2}, {}, {0, 1, 2, 3});
+  const qd::Figures fig =
+      qd::measure(qd::vertex_angles(V, F), V, V, F, {0}, {0, 1, 2}, {}, {0, 1, 2, 3});
   EXPECT_NEAR(fig.angle_defect, kPi / 2, 1e-12);
   EXPECT_NEAR(fig.g_abd, 2 * kPi / 3, 1e-12);
   EXPECT_EQ(fig.shape, 0.0);

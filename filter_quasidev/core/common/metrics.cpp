@@ -119,12 +119,6 @@ double shape_difference(const Positions& V0, const Positions& V, const Triangles
   return total;
 }
 
-Figures measure(const Positions& V0, const Positions& V, const Triangles& F,
-                const std::vector<int>& vertices, const std::vector<int>& faces,
-                const std::vector<Vec3>& targets, const std::vector<int>& moved) {
-  return measure(vertex_angles(V, F), V0, V, F, vertices, faces, targets, moved);
-}
-
 Figures measure(const VertexAngles& angles, const Positions& V0, const Positions& V,
                 const Triangles& F, const std::vector<int>& vertices, const std::vector<int>& faces,
                 const std::vector<Vec3>& targets, const std::vector<int>& moved) {

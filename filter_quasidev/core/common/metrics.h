@@ -40,13 +40,10 @@ double orientation_developability(const Positions& V, const Triangles& F,
 double shape_difference(const Positions& V0, const Positions& V, const Triangles& F,
                         const std::vector<int>& faces);
 
-// All Figures of a vertex/face set: curvature figures over `vertices` (which must be interior),
-// OBD over faces/targets (skipped when targets is empty), shape and displacement against V0
-// over `faces` / `moved` (the vertices whose displacement counts).
-Figures measure(const Positions& V0, const Positions& V, const Triangles& F,
-                const std::vector<int>& vertices, const std::vector<int>& faces,
-                const std::vector<Vec3>& targets, const std::vector<int>& moved);
-// The same with vertex_angles(V, F) at hand.
+// All Figures of a vertex/face set, from angles = vertex_angles(V, F): curvature figures over
+// `vertices` (which must be interior), OBD over faces/targets (skipped when targets is empty),
+// shape and displacement against V0 over `faces` / `moved` (the vertices whose displacement
+// counts).
 Figures measure(const VertexAngles& angles, const Positions& V0, const Positions& V,
                 const Triangles& F, const std::vector<int>& vertices, const std::vector<int>& faces,
                 const std::vector<Vec3>& targets, const std::vector<int>& moved);
