@@ -8,6 +8,7 @@
 
 #include "approximate/target_normals.h"
 #include "common/error.h"
+#include "common/parallel_for.h"
 #include "test_gauss_samples.h"
 
 using namespace qd_test;
@@ -221,6 +222,21 @@ TEST(TargetNormals, HintDoesNotChangeTheProjection) {
       }
       std::shuffle(order.begin(), order.end(), std::mt19937(static_cast<unsigned>(c)));
     }
+  }
+}
+
+TEST(TargetNormals, ThreadsDoNotChangeTheTargets) {
+  // More samples than one range of the parallel projection (kRangeChunk), so the ranges start
+  // without a hint on different threads.
+  const Samples s = cylinder(Vec3(1, 2, 2).normalized(), 0.0, 2 * kPi, 10000, 2.0 * kDeg);
+  ASSERT_GT(s.normals.size(), 2 * qd::kRangeChunk);
+  const qd::TargetFit one = qd::fit_targets(s.normals, s.areas, 1);
+  const qd::TargetFit two = qd::fit_targets(s.normals, s.areas, 2);
+  EXPECT_EQ(one.residual_deg, two.residual_deg);
+  EXPECT_EQ(qd::project_normals(*one.model, s.normals, 2), two.targets);
+  for (size_t i = 0; i < s.normals.size(); ++i) {
+    EXPECT_EQ(one.targets[i], two.targets[i]) << "sample " << i;
+    EXPECT_EQ(two.targets[i], one.model->project(s.normals[i])) << "sample " << i;
   }
 }
 

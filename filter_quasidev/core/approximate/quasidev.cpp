@@ -136,10 +136,11 @@ void normals_and_areas(const Positions& X, const Triangles& F, const std::vector
   }
 }
 
-// Step 1 for one patch. A patch too small to fit (validate() let it through, its vertices
-// fixed) or one Step 1 cannot fit keeps its own normals as targets.
+// Step 1 for one patch (its projections on up to `threads` threads). A patch too small to fit
+// (validate() let it through, its vertices fixed) or one Step 1 cannot fit keeps its own
+// normals as targets.
 PatchFit fit_patch(int id, const std::vector<int>& faces, const std::vector<Vec3>& normals,
-                   const std::vector<double>& areas) {
+                   const std::vector<double>& areas, size_t threads) {
   PatchFit p;
   p.id = id;
   p.faces = faces;
@@ -147,7 +148,7 @@ PatchFit fit_patch(int id, const std::vector<int>& faces, const std::vector<Vec3
     p.skipped = "fewer than " + std::to_string(kMinPatchFaces) + " faces, too few to fit";
   } else {
     try {
-      p.fit = fit_targets(normals, areas);
+      p.fit = fit_targets(normals, areas, threads);
       return p;
     } catch (const Error& e) {
       p.skipped = e.what();
@@ -158,7 +159,7 @@ PatchFit fit_patch(int id, const std::vector<int>& faces, const std::vector<Vec3
   return p;
 }
 
-std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
+std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X, size_t threads) {
   std::map<int, std::vector<int>> faces_of;
   for (Eigen::Index f = 0; f < g.solve_faces; ++f)
     faces_of[g.face_patch[static_cast<size_t>(f)]].push_back(static_cast<int>(f));
@@ -167,7 +168,7 @@ std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X) {
   std::vector<double> areas;
   for (auto& [id, faces] : faces_of) {
     normals_and_areas(X, g.F, faces, normals, areas);
-    fits.push_back(fit_patch(id, faces, normals, areas));
+    fits.push_back(fit_patch(id, faces, normals, areas, threads));
   }
   return fits;
 }
@@ -183,19 +184,23 @@ std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>&
 }
 
 // Re-projection (nearest point of the fixed c_3D) or re-fit (Step 1 again, each patch keeping
-// its term) between iterations.
-Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode) {
-  return [&g, &fits, mode](const Positions& X) {
+// its term) between iterations, on up to `threads` threads.
+Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode,
+                       size_t threads) {
+  return [&g, &fits, mode, threads](const Positions& X) {
     if (mode == TargetMode::Refit) {
-      std::vector<PatchFit> refits = fit_patches(g, X);
+      std::vector<PatchFit> refits = fit_patches(g, X, threads);
       for (size_t k = 0; k < refits.size(); ++k) refits[k].term = fits[k].term;
       return group_targets(g, refits);
     }
     std::vector<Vec3> t(static_cast<size_t>(g.solve_faces), Vec3::Zero());
+    std::vector<Vec3> normals;
+    std::vector<double> areas;
     for (const PatchFit& p : fits) {
       if (p.term == Term::Defect) continue;
-      int hint = -1;  // faces in input order: mostly neighbours, with nearby normals
-      for (int f : p.faces) t[static_cast<size_t>(f)] = p.fit.model->project(face_normal(X, g.F, f), hint);
+      normals_and_areas(X, g.F, p.faces, normals, areas);
+      const std::vector<Vec3> targets = project_normals(*p.fit.model, normals, threads);
+      for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = targets[k];
     }
     return t;
   };
@@ -297,10 +302,11 @@ GroupRun run_group(const Positions& input, const Positions& V, const Triangles& 
     if (params.tolerance_mode == ToleranceMode::Total) spend_earlier_moves(run.group, input);
   }
   const GroupMesh& g = run.group;
+  const size_t threads = static_cast<size_t>(params.threads);
   double step1_ms = 0;
   {
     StageTimer timer(step1_ms);
-    run.fits = fit_patches(g, g.V0);
+    run.fits = fit_patches(g, g.V0, threads);
     for (PatchFit& p : run.fits) choose_term(p, params.developability);
     run.targets = group_targets(g, run.fits);
   }
@@ -312,7 +318,7 @@ GroupRun run_group(const Positions& input, const Positions& V, const Triangles& 
                                   ? "planar: the Gauss image is a point, nothing to do"
                                   : "left unchanged: " + run.fits.front().skipped;
   } else {
-    run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets),
+    run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets, threads),
                          group_defect_rows(g, run.fits), params, ae, progress);
   }
   run.outcome.times.setup += setup_ms;

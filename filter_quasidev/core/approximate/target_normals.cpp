@@ -17,6 +17,7 @@
 #include "approximate/gauss_image.h"
 #include "approximate/skeleton_curve.h"
 #include "common/error.h"
+#include "common/parallel_for.h"
 
 namespace qd {
 
@@ -253,7 +254,18 @@ bool fit_skeleton_spline(const std::vector<Vec2>& theta_phi, const std::vector<d
 
 }  // namespace
 
-TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas) {
+std::vector<Vec3> project_normals(const GaussModel& model, const std::vector<Vec3>& normals,
+                                  size_t threads) {
+  std::vector<Vec3> targets(normals.size());
+  parallel_ranges(normals.size(), threads, kRangeChunk, [&](size_t first, size_t last) {
+    int hint = -1;  // successive samples are usually neighbours (see GaussModel::project)
+    for (size_t i = first; i < last; ++i) targets[i] = model.project(normals[i], hint);
+  });
+  return targets;
+}
+
+TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                      size_t threads) {
   const GaussMoments moments = gauss_moments(normals, areas);  // Step 1.1 (throws on bad input)
   if (fills_sphere(moments))
     throw Error("patch normals fill the sphere: it is far from developable; split it into "
@@ -287,11 +299,9 @@ TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double
     fit.model = std::make_shared<PlaneModel>(moments.resultant.normalized());
 
   // Steps 1.5–1.6: nearest point of c_3D and the area-weighted mean residual angle.
-  fit.targets.resize(normals.size());
+  fit.targets = project_normals(*fit.model, normals, threads);
   double weighted = 0;
-  int hint = -1;  // successive samples are usually neighbours (see GaussModel::project)
   for (size_t i = 0; i < normals.size(); ++i) {
-    fit.targets[i] = fit.model->project(normals[i], hint);
     if (areas[i] > 0)
       weighted += areas[i] * std::atan2(normals[i].cross(fit.targets[i]).norm(),
                                         normals[i].dot(fit.targets[i]));

@@ -35,8 +35,15 @@ struct TargetFit {
   double residual_deg = 0;      // area-weighted mean angle between normal and target
 };
 
-// Fits the model to the samples (normals[i] unit, areas[i] >= 0) and projects every sample.
-// Throws qd::Error when the samples fill the sphere (far from developable) or are too few.
-TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas);
+// The model's nearest point to each unit normal (Step 1.5), projected in ranges on up to
+// `threads` threads; the result does not depend on them.
+std::vector<Vec3> project_normals(const GaussModel& model, const std::vector<Vec3>& normals,
+                                  size_t threads);
+
+// Fits the model to the samples (normals[i] unit, areas[i] >= 0) and projects every sample
+// (on up to `threads` threads). Throws qd::Error when the samples fill the sphere (far from
+// developable) or are too few.
+TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                      size_t threads = 1);
 
 }  // namespace qd
