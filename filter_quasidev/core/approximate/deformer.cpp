@@ -130,24 +130,26 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
                                 params.clamp);
     IterationReport report;
     report.iteration = it;
-    // Never worse (§5.4): the first candidate that folds no face and does not raise G_ABD.
+    // Never worse (§5.4): the first candidate that folds no face and does not raise G_ABD (one
+    // that folds a face is not measured further).
+    const auto reject = [&](const std::string& why) {
+      report.note += (report.note.empty() ? "" : "; ") + why;
+      return false;
+    };
     const auto accept = [&](const Positions& candidate, const std::string& label) {
       int flips = 0;
       {
         StageTimer timer(out.times.metrics);
         flips = flipped_faces(group.F, group.V0, candidate);
       }
+      if (flips > 0) return reject(label + " flips " + std::to_string(flips) + " face(s)");
       VertexAngles candidate_angles = angles_at(candidate);
       const Figures after = figures(candidate_angles, candidate, current_targets);
-      if (flips == 0 && after.g_abd <= before.g_abd) {
-        report.figures = last = after;
-        out.V = candidate;
-        angles = std::move(candidate_angles);
-        return true;
-      }
-      report.note += (report.note.empty() ? "" : "; ") + label +
-                     (flips ? " flips " + std::to_string(flips) + " face(s)" : " raises G_ABD");
-      return false;
+      if (!(after.g_abd <= before.g_abd)) return reject(label + " raises G_ABD");
+      report.figures = last = after;
+      out.V = candidate;
+      angles = std::move(candidate_angles);
+      return true;
     };
     bool accepted = accept(step, "step ×1.00");
     if (!accepted && has_defects) {
