@@ -195,10 +195,10 @@ Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, Ta
     }
     std::vector<Vec3> t(static_cast<size_t>(g.solve_faces), Vec3::Zero());
     std::vector<Vec3> normals;
-    std::vector<double> areas;
     for (const PatchFit& p : fits) {
       if (p.term == Term::Defect) continue;
-      normals_and_areas(X, g.F, p.faces, normals, areas);
+      normals.clear();
+      for (int f : p.faces) normals.push_back(face_normal(X, g.F, f));
       const std::vector<Vec3> targets = project_normals(*p.fit.model, normals, threads);
       for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = targets[k];
     }
