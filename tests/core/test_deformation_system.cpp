@@ -25,7 +25,8 @@ struct Fixture {
   // random, or (smooth) a finer one whose targets are its faces' own normals, as Step 1 gives a
   // near-developable patch.
   explicit Fixture(bool smooth = false, int around = 6)
-      : p(smooth ? test::bumpy_cylinder(32, 4, 0.02) : test::bumpy_cylinder(around, around / 2, 0.2)) {
+      : p(smooth ? test::bumpy_cylinder(32, 4, 0.02)
+                 : test::bumpy_cylinder(around, around / 2, 0.2)) {
     const size_t nv = static_cast<size_t>(p.V.rows()), nf = static_cast<size_t>(p.F.rows());
     std::vector<int> faces(nf);
     for (size_t f = 0; f < nf; ++f) faces[f] = static_cast<int>(f);
