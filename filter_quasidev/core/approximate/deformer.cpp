@@ -90,7 +90,8 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
     StageTimer timer(out.times.metrics);
     return vertex_angles(X, group.F);
   };
-  auto figures = [&](const VertexAngles& at_X, const Positions& X, const std::vector<Vec3>& t) {
+  const auto figures = [&](const VertexAngles& at_X, const Positions& X,
+                           const std::vector<Vec3>& t) {
     StageTimer timer(out.times.metrics);
     return measure(at_X, group.V0, X, group.F, group.owned, faces, t, vertices);
   };
