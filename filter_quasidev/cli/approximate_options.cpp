@@ -54,12 +54,16 @@ void add_approximate_options(CLI::App& job, ApproximateOptions& o) {
          [&o](const std::string& v) { patch_tolerance(v, o); });
   valued(job, "--max-iter", "N", "at most N iterations per patch, N >= 1" + by_default(p.max_iter),
          [&p](const std::string& v) { p.max_iter = whole_number("--max-iter", v, 1, 100000, "1"); });
+  choices(job, "--stop-rule", "R",
+          "plateau: stop when the last 3 iterations together removed\nless than δ_ABD of G_ABD, "
+          "keeping the best iterate;\npaper: stop at the first iteration whose ratio_ABD (Eq. "
+          "19)\nis below δ_ABD, or ratio_OBD (Eq. 20) below δ_OBD with fixed\ntargets (§5.4)",
+          kStopRules, p.stop_rule);
   valued(job, "--stop-abd", "P",
-         "stop when G_ABD falls by less than P percent in an iteration\n(ratio_ABD, Eq. 19)" +
-             by_default(p.stop_abd),
+         "δ_ABD, percent of G_ABD (see --stop-rule)" + by_default(p.stop_abd),
          [&p](const std::string& v) { p.stop_abd = non_negative("--stop-abd", v); });
   valued(job, "--stop-obd", "P",
-         "stop when the OBD falls by less than P percent (ratio_OBD,\nEq. 20)" + by_default(p.stop_obd),
+         "δ_OBD, percent (ratio_OBD, Eq. 20; --stop-rule paper with\n--targets fixed)" + by_default(p.stop_obd),
          [&p](const std::string& v) { p.stop_obd = non_negative("--stop-obd", v); });
   valued(job, "--weight", "W", "w of Eq. (8): developability rows vs shape rows" + by_default(p.weight),
          [&p](const std::string& v) { p.weight = positive("--weight", v); });
@@ -68,8 +72,8 @@ void add_approximate_options(CLI::App& job, ApproximateOptions& o) {
   choices(job, "--developability", "D",
           "developability rows per patch: curve (the paper's target\nnormals on the Gauss-image "
           "curve), defect (Gauss-Newton rows\non the angle defects; beyond the paper, for draped "
-          "panels),\nboth, or auto (curve up to a fit residual of 5 degrees, else\ndefect; beyond "
-          "the paper)",
+          "panels),\nboth, or auto (each patch runs the three from the same start\nand keeps the "
+          "one that removes most G_ABD; beyond the paper)",
           kDevelopability, p.developability);
   valued(job, "--defect-weight", "W",
          "w_d of the angle-defect rows, scale-invariant" + by_default(p.defect_weight),
@@ -82,6 +86,11 @@ void add_approximate_options(CLI::App& job, ApproximateOptions& o) {
           "fixed: seam vertices between patches do not move (paper);\nfree: all patches solved "
           "jointly, seams move and stay\nclosed",
           kSeamModes, p.seams);
+  choices(job, "--segment-first", "S",
+          "a mesh without patch ids: auto splits it into nearly\ndevelopable patches first (segment, "
+          "largest fit error 30\ndegrees) and solves them with free seams when it is closed\nor no "
+          "one Gauss-image curve fits it; never keeps it one\npatch; always splits it",
+          kSegmentFirst, p.segment_first);
   choices(job, "--solver", "S",
           "sparse Cholesky: cholmod (SuiteSparse supernodal), eigen-llt,\neigen-ldlt (Eigen's "
           "simplicial) or auto (eigen-ldlt below\n" + std::to_string(kCholmodFromUnknowns) +

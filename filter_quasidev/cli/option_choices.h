@@ -23,6 +23,11 @@ inline const Choices<Developability> kDevelopability = {{"curve", Developability
                                                         {"defect", Developability::Defect},
                                                         {"both", Developability::Both},
                                                         {"auto", Developability::Auto}};
+inline const Choices<StopRule> kStopRules = {{"plateau", StopRule::Plateau},
+                                             {"paper", StopRule::Paper}};
+inline const Choices<SegmentFirst> kSegmentFirst = {{"auto", SegmentFirst::Auto},
+                                                    {"never", SegmentFirst::Never},
+                                                    {"always", SegmentFirst::Always}};
 inline const Choices<SeamMode> kSeamModes = {{"fixed", SeamMode::Fixed}, {"free", SeamMode::Free}};
 inline const Choices<TargetMode> kTargetModes = {{"fixed", TargetMode::Fixed},
                                                  {"reproject", TargetMode::Reproject},

@@ -15,7 +15,8 @@ Json figures(const Figures& f) {
 Json iteration(const IterationReport& it) {
   return {{"iteration", it.iteration}, {"figures", figures(it.figures)},
           {"ratio_abd", it.ratio_abd}, {"ratio_obd", it.ratio_obd},
-          {"step_scale", it.step_scale}, {"note", it.note}};
+          {"step_scale", it.step_scale}, {"weight_scale", it.weight_scale},
+          {"note", it.note}};
 }
 
 // Milliseconds per stage, summed over patches and threads (time_ms is the wall clock).
@@ -27,9 +28,20 @@ Json stage_times(const StageTimes& t) {
           {"cg_iterations", t.cg_iterations}};
 }
 
+Json candidate(const CandidateReport& c) {
+  return {{"term", c.term},
+          {"iterations", c.iterations},
+          {"abd_reduction", c.abd_reduction},
+          {"mean_disp", c.mean_disp},
+          {"kept", c.kept},
+          {"dropped", c.dropped}};
+}
+
 Json patch(const PatchReport& p, double average_edge) {
   Json history = Json::array();
   for (const IterationReport& it : p.history) history.push_back(iteration(it));
+  Json candidates = Json::array();
+  for (const CandidateReport& c : p.candidates) candidates.push_back(candidate(c));
   return {{"id", p.id},
           {"faces", p.faces},
           {"vertices", p.vertices},
@@ -39,8 +51,10 @@ Json patch(const PatchReport& p, double average_edge) {
           {"target_kind", p.target_kind},
           {"developability", p.developability},
           {"developability_reason", p.developability_reason},
+          {"candidates", candidates},
           {"fit_residual_deg", p.fit_residual_deg},
           {"iterations", p.iterations},
+          {"iterations_run", p.iterations_run},
           {"stop_reason", p.stop_reason},
           {"before", figures(p.before)},
           {"after", figures(p.after)},
@@ -65,8 +79,10 @@ Json parameters(const ReportContext& c) {
           {"weight", p.weight},
           {"anchor", p.anchor},
           {"seams", name_of(kSeamModes, p.seams)},
+          {"segment_first", name_of(kSegmentFirst, p.segment_first)},
           {"keep_boundary", p.keep_boundary},
           {"targets", name_of(kTargetModes, p.targets)},
+          {"stop_rule", name_of(kStopRules, p.stop_rule)},
           {"stop_abd", p.stop_abd},
           {"stop_obd", p.stop_obd},
           {"quality", name_of(kQualityKinds, c.options.quality)}};
@@ -82,6 +98,7 @@ std::string report_json(const Result& result, const ReportContext& c) {
                        {"vertices", c.vertices},
                        {"faces", c.faces},
                        {"has_patch_ids", c.has_patch_ids},
+                       {"segmented_first", !result.segmented_patch.empty()},
                        {"constrained_vertices", c.constrained_vertices},
                        {"average_edge", result.average_edge},
                        {"parameters", parameters(c)},

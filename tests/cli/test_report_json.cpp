@@ -69,7 +69,7 @@ TEST(ReportJson, KeepsTheKeyOrderAndWritesValidUtf8) {
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
   const std::vector<std::string> expected = {
-      "input", "output", "vertices", "faces", "has_patch_ids", "constrained_vertices",
+      "input", "output", "vertices", "faces", "has_patch_ids", "segmented_first", "constrained_vertices",
       "average_edge", "parameters", "total_before", "total_after", "abd_reduction",
       "factorizations", "time_ms", "stage_ms", "patches", "warnings", "notes", "log"};
   EXPECT_EQ(keys, expected);

@@ -124,6 +124,7 @@ TEST(AngleDefect, WrinkledSheetLosesMostCurvatureWhereTheCurveCannotHelp) {
 TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
   Problem p = wrinkled_sheet(24, 0.2);  // its normals fill the sphere
   p.params.tolerance = 1.0;
+  p.params.segment_first = SegmentFirst::Never;  // kept one patch
   Problem curve = p;
   curve.params.developability = Developability::Curve;
   EXPECT_THROW(approximate(curve), Error);  // the paper cannot fit it: refused, as before
@@ -134,14 +135,31 @@ TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
   EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
 }
 
-TEST(AngleDefect, AutoKeepsThePaperOnNearDevelopablePatches) {
+// Auto races the candidate terms and keeps the one that removes most G_ABD: its result is
+// exactly that term's own run, and no candidate removes more.
+TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
   Problem p = test::bumpy_cylinder(48, 24, 0.08);
   p.params.tolerance = 0.2;
   const Result r = approximate(p);
-  EXPECT_EQ(r.patches[0].developability, "curve");
-  p.params.developability = Developability::Curve;
-  const Result curve = approximate(p);
-  EXPECT_EQ(r.V, curve.V);  // auto chose the paper, and it runs unchanged
+  const PatchReport& patch = r.patches[0];
+  ASSERT_EQ(patch.candidates.size(), 3u);
+  int kept = 0;
+  for (const CandidateReport& c : patch.candidates) {
+    kept += c.kept;
+    EXPECT_NE(patch.developability_reason.find(c.term), std::string::npos);
+  }
+  EXPECT_EQ(kept, 1);
+  for (const auto& [mode, name] : {std::pair{Developability::Curve, "curve"},
+                                   std::pair{Developability::Defect, "defect"},
+                                   std::pair{Developability::Both, "both"}}) {
+    Problem alone = p;
+    alone.params.developability = mode;
+    const Result single = approximate(alone);
+    if (patch.developability == name) {
+      EXPECT_EQ(r.V, single.V) << name;
+    }
+    EXPECT_GE(r.abd_reduction, single.abd_reduction - 2.0) << name << ": percentage points";
+  }
 }
 
 TEST(AngleDefect, DefectModeIsScaleAndRotationInvariant) {

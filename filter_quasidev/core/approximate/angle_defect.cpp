@@ -22,9 +22,9 @@ int star_entry(DefectStars& s, int u) {
 
 DefectStars defect_stars(const GroupMesh& g, const VertexFaces& incident,
                          const std::vector<char>& has_row, double weight) {
-  std::map<int, double> patch_area;  // A_P of every patch of the group
+  std::map<int, double> patch_area;  // A_P of every patch (or solve group) of the group
   for (Eigen::Index f = 0; f < g.solve_faces; ++f)
-    patch_area[g.face_patch[static_cast<size_t>(f)]] += face_area(g.V0, g.F, static_cast<int>(f));
+    patch_area[g.face_unit[static_cast<size_t>(f)]] += face_area(g.V0, g.F, static_cast<int>(f));
   const std::vector<double> voronoi = vertex_angles(g.V0, g.F).area;  // A_v
 
   DefectStars s;
@@ -37,7 +37,7 @@ DefectStars defect_stars(const GroupMesh& g, const VertexFaces& incident,
       const int f = incident.faces[static_cast<size_t>(k)];
       for (int c = 0; c < 3; ++c) star_entry(s, g.F(f, c));
       if (f < g.solve_faces) {
-        area += patch_area[g.face_patch[static_cast<size_t>(f)]];
+        area += patch_area[g.face_unit[static_cast<size_t>(f)]];
         ++faces;
       }
     }

@@ -109,6 +109,11 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
   outer[size] = at;
 }
 
+void DeformationSystem::scale_developability(double factor) {
+  w_ *= factor;
+  for (double& s : defects_.weight) s *= factor;
+}
+
 // Each block column is summed by the thread that owns it, from the corners of its vertex: its
 // diagonal block, and the off-diagonal blocks whose other vertex comes later in the order.
 void DeformationSystem::set_rows(const std::vector<Vec3>& targets,

@@ -70,6 +70,9 @@ class DeformationSystem {
   // reference positions of the next solve (empty when the group has none).
   void set_rows(const std::vector<Vec3>& targets, const DefectLinearisation& defects = {});
 
+  // Multiplies w (Eq. 8) and every angle-defect row's weight by `factor`; set_rows must follow.
+  void scale_developability(double factor);
+
   bool has_defect_rows() const { return !defects_.empty(); }
   // The angle-defect rows linearised at X (angles: vertex_angles of X), for set_rows.
   DefectLinearisation linearise_defects_at(const Positions& X, const VertexAngles& angles) const {

@@ -49,6 +49,10 @@ Positions hold_folding_vertices(const GroupMesh& g, const Positions& current, co
   return step;
 }
 
+std::string scale_label(double scale) {
+  return scale == 1.0 ? "step ×1" : "step ×1/" + std::to_string(static_cast<int>(std::lround(1 / scale)));
+}
+
 }  // namespace
 
 Positions clamp_step(const GroupMesh& group, const Positions& current, const Positions& proposed,
@@ -79,114 +83,185 @@ int flipped_faces(const Triangles& F, const Positions& V0, const Positions& V) {
   return flipped;
 }
 
-DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
-                     const Retarget& retarget, const std::vector<char>& defect_rows, const Params& params,
-                     double ae, const std::function<void(double)>& progress) {
-  const std::vector<int> faces = all_indices(group.solve_faces);
-  const std::vector<int> vertices = all_indices(group.solve_vertices);
-  DeformOutcome out;
-  Figures last;  // figures after the last accepted step
-  const auto angles_at = [&](const Positions& X) {
-    StageTimer timer(out.times.metrics);
-    return vertex_angles(X, group.F);
-  };
-  const auto figures = [&](const VertexAngles& at_X, const Positions& X,
-                           const std::vector<Vec3>& t) {
-    StageTimer timer(out.times.metrics);
-    return measure(at_X, group.V0, X, group.F, group.owned, faces, t, vertices);
-  };
-
-  DeformationSystem system = [&] {  // MLS weights, ordering, sparsity pattern
-    StageTimer timer(out.times.setup);
-    return DeformationSystem(group, params, ae, defect_rows);
-  }();
-  out.V = group.V0;
-  VertexAngles angles = angles_at(out.V);  // kept at the current positions out.V
-  const auto linearised = [&] {  // the defect rows at the current positions
-    StageTimer timer(out.times.assembly);
-    return system.linearise_defects_at(out.V, angles);
-  };
-  const bool has_defects = system.has_defect_rows();
-  std::vector<Vec3> current_targets = targets;
-  system.set_rows(current_targets, linearised());  // Algorithm 1, steps 2.1–2.3
-
-  out.stop_reason = "maxIter reached";
-  for (int it = 1; it <= params.max_iter; ++it) {
-    const bool retargets = it > 1 && params.targets != TargetMode::Fixed;
-    if (retargets) {
-      StageTimer timer(out.times.step1);
-      current_targets = retarget(out.V);
-    }
-    if (retargets || (it > 1 && has_defects))  // Gauss–Newton: linearise again at the iterate
-      system.set_rows(current_targets, has_defects ? linearised() : DefectLinearisation{});
-    // The figures of the current positions: all but the OBD carry over from the last accepted
-    // step; the OBD is taken against the current targets.
-    Figures before = it == 1 ? figures(angles, out.V, current_targets) : last;
-    if (it > 1) {
-      StageTimer timer(out.times.metrics);
-      before.obd = orientation_developability(out.V, group.F, faces, current_targets);
-    }
-    // Steps 2.4.1–2.4.3: new right-hand side, back substitution, tolerance check.
-    Positions step = clamp_step(group, out.V, system.solve(out.V), params.tolerance_mode,
-                                params.clamp);
-    IterationReport report;
-    report.iteration = it;
-    // Never worse (§5.4): the first candidate that folds no face and does not raise G_ABD (one
-    // that folds a face is not measured further).
-    const auto reject = [&](const std::string& why) {
-      report.note += (report.note.empty() ? "" : "; ") + why;
-      return false;
-    };
-    const auto accept = [&](const Positions& candidate, const std::string& label) {
-      int flips = 0;
-      {
-        StageTimer timer(out.times.metrics);
-        flips = flipped_faces(group.F, group.V0, candidate);
-      }
-      if (flips > 0) return reject(label + " flips " + std::to_string(flips) + " face(s)");
-      VertexAngles candidate_angles = angles_at(candidate);
-      const Figures after = figures(candidate_angles, candidate, current_targets);
-      if (!(after.g_abd <= before.g_abd)) return reject(label + " raises G_ABD");
-      report.figures = last = after;
-      out.V = candidate;
-      angles = std::move(candidate_angles);
-      return true;
-    };
-    bool accepted = accept(step, "step ×1.00");
-    if (!accepted && has_defects) {
-      Positions unfolded;
-      {
-        StageTimer timer(out.times.metrics);
-        unfolded = hold_folding_vertices(group, out.V, step);
-      }
-      accepted = accept(unfolded, "step with folding faces held");
-    }
-    for (double scale = 0.5; !accepted && scale >= 0.25; scale *= 0.5) {
-      report.step_scale = scale;
-      accepted = accept(out.V + scale * (step - out.V), "step ×" + std::to_string(scale).substr(0, 4));
-    }
-    if (!accepted) {
-      out.stop_reason = "never-worse rule: iteration " + std::to_string(it) + " rejected (" +
-                        report.note + ")";
-      break;
-    }
-    report.ratio_abd = decrease_ratio(before.g_abd, report.figures.g_abd);  // Eq. (19)
-    report.ratio_obd = decrease_ratio(before.obd, report.figures.obd);      // Eq. (20)
-    out.history.push_back(report);
-    if (progress) progress(static_cast<double>(it) / params.max_iter);
-    if (report.ratio_abd < params.stop_abd) {
-      out.stop_reason = "ratio_ABD below δ_ABD";
-      break;
-    }
-    // D(P) is comparable between iterations only while the targets stay put (the paper's
-    // mode); with re-projected or re-fitted targets only ratio_ABD stops the iteration.
-    if (params.targets == TargetMode::Fixed && report.ratio_obd < params.stop_obd) {
-      out.stop_reason = "ratio_OBD below δ_OBD";
-      break;
-    }
+Deformation::Deformation(const GroupMesh& group, std::vector<Vec3> targets, Retarget retarget,
+                         const std::vector<char>& defect_rows, const Params& params, double ae)
+    : g_(group),
+      params_(params),
+      targets_(std::move(targets)),
+      retarget_(std::move(retarget)),
+      faces_(all_indices(group.solve_faces)),
+      vertices_(all_indices(group.solve_vertices)),
+      V_(group.V0) {
+  {
+    StageTimer timer(out_.times.setup);  // MLS weights, ordering, sparsity pattern
+    system_ = std::make_unique<DeformationSystem>(g_, params_, ae, defect_rows);
   }
-  out.times += system.times();
-  return out;
+  {
+    StageTimer timer(out_.times.metrics);
+    angles_ = vertex_angles(V_, g_.F);
+    last_ = best_ = measure(angles_, g_.V0, V_, g_.F, g_.owned, faces_, targets_, vertices_);
+  }
+  initial_g_ = best_.g_abd;
+  best_V_ = V_;
+  best_track_.push_back(best_.g_abd);
+  set_rows();  // Algorithm 1, steps 2.1–2.3
+}
+
+// The rows for the current targets, the angle defects linearised at V_ (Gauss–Newton).
+void Deformation::set_rows() {
+  DefectLinearisation defects;
+  if (system_->has_defect_rows()) {
+    StageTimer timer(out_.times.assembly);  // the system times its own assembly
+    defects = system_->linearise_defects_at(V_, angles_);
+  }
+  system_->set_rows(targets_, defects);
+}
+
+// The step, or with angle-defect rows the step with its folding faces held back, or the step
+// halved down to kMinStepScale: the first that accept() takes.
+bool Deformation::accept_shortened(const Positions& step, IterationReport& report,
+                                   const Figures& before) {
+  if (accept(step, scale_label(1), report, before)) return true;
+  if (system_->has_defect_rows()) {
+    Positions unfolded;
+    {
+      StageTimer timer(out_.times.metrics);
+      unfolded = hold_folding_vertices(g_, V_, step);
+    }
+    if (accept(unfolded, "step with folding faces held", report, before)) return true;
+  }
+  for (double scale = 0.5; scale >= kMinStepScale; scale *= 0.5) {
+    report.step_scale = scale;
+    if (accept(V_ + scale * (step - V_), scale_label(scale), report, before)) return true;
+  }
+  return false;
+}
+
+Deformation::~Deformation() = default;
+Deformation::Deformation(Deformation&&) noexcept = default;
+
+bool Deformation::accept(const Positions& candidate, const std::string& label,
+                         IterationReport& report, const Figures& before) {
+  const auto refuse = [&](const std::string& why) {
+    report.note += (report.note.empty() ? "" : "; ") + label + " " + why;
+    return false;
+  };
+  int flips = 0;
+  {
+    StageTimer timer(out_.times.metrics);
+    flips = flipped_faces(g_.F, g_.V0, candidate);
+  }
+  if (flips > 0) return refuse("flips " + std::to_string(flips) + " face(s)");
+  VertexAngles angles;
+  Figures after;
+  {
+    StageTimer timer(out_.times.metrics);
+    angles = vertex_angles(candidate, g_.F);
+    after = measure(angles, g_.V0, candidate, g_.F, g_.owned, faces_, targets_, vertices_);
+  }
+  if (!(after.g_abd <= (1 + kRiseAllowance) * best_.g_abd)) return refuse("raises G_ABD");
+  report.figures = last_ = after;
+  report.ratio_abd = decrease_ratio(before.g_abd, after.g_abd);  // Eq. (19)
+  report.ratio_obd = decrease_ratio(before.obd, after.obd);      // Eq. (20)
+  V_ = candidate;
+  angles_ = std::move(angles);
+  return true;
+}
+
+bool Deformation::step() {
+  if (!running()) return false;
+  if (it_ == params_.max_iter) {
+    out_.stop = StopReason::MaxIter;
+    return false;
+  }
+  ++it_;
+  const bool retargets = it_ > 1 && params_.targets != TargetMode::Fixed;
+  if (retargets) {
+    StageTimer timer(out_.times.step1);
+    targets_ = retarget_(V_);
+  }
+  if (retargets || (it_ > 1 && system_->has_defect_rows())) set_rows();  // linearise again
+  // The figures of the current positions: all but the OBD carry over from the last accepted
+  // step; the OBD is taken against the current targets.
+  Figures before = last_;
+  if (it_ > 1) {
+    StageTimer timer(out_.times.metrics);
+    before.obd = orientation_developability(V_, g_.F, faces_, targets_);
+  }
+  IterationReport report;
+  report.iteration = it_;
+  for (;;) {
+    report.step_scale = 1;
+    // Steps 2.4.1–2.4.3: new right-hand side, back substitution, tolerance check.
+    const Positions step =
+        clamp_step(g_, V_, system_->solve(V_), params_.tolerance_mode, params_.clamp);
+    // A refused full step is solved again with weaker developability weights while they can
+    // be (with angle-defect rows only once no shortened step is accepted); at the weakest, it
+    // is shortened.
+    const bool can_back_off = weight_scale_ / kWeightBackoff >= kMinWeightScale * (1 - 1e-9);
+    const bool shorten_first = system_->has_defect_rows() || !can_back_off;
+    if (shorten_first ? accept_shortened(step, report, before)
+                      : accept(step, scale_label(1), report, before))
+      break;
+    if (!can_back_off) {
+      out_.stop = StopReason::NoStep;
+      out_.stop_detail = report.note;
+      return false;
+    }
+    weight_scale_ /= kWeightBackoff;
+    system_->scale_developability(1 / kWeightBackoff);
+    set_rows();
+    report.note += "; solved again with the developability weights ×1/" +
+                   std::to_string(static_cast<int>(std::lround(1 / weight_scale_)));
+  }
+  report.weight_scale = weight_scale_;
+  out_.history.push_back(report);
+  ++out_.iterations_run;
+  if (last_.g_abd < best_.g_abd) {
+    best_ = last_;
+    best_V_ = V_;
+    best_iterations_ = out_.history.size();
+  }
+  best_track_.push_back(best_.g_abd);
+  check_stop(report);
+  return running();
+}
+
+void Deformation::check_stop(const IterationReport& report) {
+  if (params_.stop_rule == StopRule::Paper) {
+    if (report.ratio_abd < params_.stop_abd) {
+      out_.stop = StopReason::RatioAbd;
+    } else if (params_.targets == TargetMode::Fixed && report.ratio_obd < params_.stop_obd) {
+      // D(P) is comparable between iterations only while the targets stay put (the paper's
+      // mode); with re-projected or re-fitted targets only ratio_ABD stops the iteration.
+      out_.stop = StopReason::RatioObd;
+    }
+    return;
+  }
+  const size_t n = best_track_.size();
+  if (n <= static_cast<size_t>(kPlateauIterations)) return;
+  const double removed = decrease_ratio(best_track_[n - 1 - kPlateauIterations], best_track_[n - 1]);
+  if (removed < params_.stop_abd) {
+    out_.stop = StopReason::Plateau;
+    out_.plateau_removed = removed;
+  }
+}
+
+DeformOutcome Deformation::finish() {
+  if (out_.stop == StopReason::Running) out_.stop = StopReason::MaxIter;
+  out_.history.resize(best_iterations_);  // the best iterate, and the history up to it
+  out_.V = std::move(best_V_);
+  out_.times += system_->times();
+  return std::move(out_);
+}
+
+DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
+                     const Retarget& retarget, const std::vector<char>& defect_rows,
+                     const Params& params, double ae, const std::function<void(double)>& progress) {
+  Deformation run(group, targets, retarget, defect_rows, params, ae);
+  while (run.step())
+    if (progress) progress(static_cast<double>(run.iterations()) / params.max_iter);
+  return run.finish();
 }
 
 }  // namespace qd

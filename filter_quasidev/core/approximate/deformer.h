@@ -1,11 +1,29 @@
-// Step 2 of Algorithm 1 (paper §5.4) for one group: iterate solve → clamp to δ_err → accept,
-// with the three stop criteria (maxIter, ratio_ABD < δ_ABD, ratio_OBD < δ_OBD; Eqs. 19–20) and
-// the never-worse rule (beyond the paper): a step that raises G_ABD or flips a face is halved,
-// and if no shortened step helps, the iteration is rejected and the group stops. With
-// angle-defect rows, a step that folds faces is first tried with their vertices held back.
+// Step 2 of Algorithm 1 (paper §5.4) for one group, one iteration at a time: solve → clamp to
+// δ_err → accept, until a stop rule ends the run.
+//
+// Acceptance (the never-worse rule, beyond the paper): a candidate step that folds a face is
+// refused; one whose G_ABD exceeds the best iterate's by more than kRiseAllowance is refused.
+// A refused step is shortened: with angle-defect rows, first with the vertices of its folding
+// faces held back, then halved down to kMinStepScale. The iteration is then solved again with
+// the developability weights (w of Eq. 8 and w_d) divided by kWeightBackoff, down to
+// kMinWeightScale, for this and the later iterations: a weaker pull toward developability
+// gives a smoother step where the strong one folds faces (damping, as in Levenberg–Marquardt).
+// With the curve targets alone a refused full step is solved again at once, before any
+// shortening, while the weights can still go down: on the generated family that took the
+// curve term from 69 % to 99 % on bumps of 1 AE, where the angle-defect rows lost curvature
+// removed that way on the garments (docs/robustness.md). The run returns its best iterate, so it never hands back a
+// mesh with more curvature than it was given. The small allowed rise lets a run leave a kink
+// of G_ABD (a sum of absolute values: a vertex whose defect is 0 rises at first order
+// whichever way it moves), where a strict descent stalls at iteration 1.
+//
+// Stop rules (StopRule): Plateau (default) stops when the best G_ABD fell by less than δ_ABD
+// percent over the last kPlateauIterations iterations; Paper stops at the first iteration whose
+// ratio_ABD (Eq. 19) is below δ_ABD, or ratio_OBD (Eq. 20) below δ_OBD with fixed targets.
+// Both also stop at maxIter and when no step down to kMinStepScale is accepted.
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,24 +34,80 @@
 
 namespace qd {
 
+constexpr double kRiseAllowance = 0.1;  // accepted G_ABD ≤ (1 + this) · best so far
+constexpr double kMinStepScale = 1.0 / 16;
+constexpr int kPlateauIterations = 3;  // Plateau's window
+constexpr double kWeightBackoff = 3.0;
+constexpr double kMinWeightScale = 1.0 / 9;
+
 // New target normal per group face for the current positions (re-projection or re-fit).
 using Retarget = std::function<std::vector<Vec3>(const Positions& current)>;
 
+// Why a run stopped.
+enum class StopReason { Running, MaxIter, Plateau, RatioAbd, RatioObd, NoStep, NothingToDo };
+
 struct DeformOutcome {
-  Positions V;                        // final local positions
-  std::vector<IterationReport> history;
-  std::string stop_reason;
+  Positions V;                        // the best iterate's local positions
+  std::vector<IterationReport> history;  // accepted iterations up to the best one
+  int iterations_run = 0;             // accepted iterations, including those after the best
+  StopReason stop = StopReason::Running;
+  std::string stop_detail;            // NoStep: the refused candidates; NothingToDo: why
+  double plateau_removed = 0;         // Plateau: percent of G_ABD the last iterations removed
   StageTimes times;                   // assembly, factorisation, solve, re-targeting, metrics
 };
 
-// targets: initial target per group face (zero: no Eq. 13 developability rows for it);
-// retarget: used between iterations unless params.targets == TargetMode::Fixed; defect_rows:
-// per local vertex, 1 = an angle-defect row (angle_defect.h; empty = none), linearised again
-// before every solve; progress receives
-// the fraction of max_iter done.
+class DeformationSystem;
+
+class Deformation {
+ public:
+  // targets: initial target per group face (zero: no Eq. 13 developability rows for it);
+  // retarget: used between iterations unless params.targets == TargetMode::Fixed;
+  // defect_rows: per local vertex, 1 = an angle-defect row (angle_defect.h; empty = none).
+  Deformation(const GroupMesh& group, std::vector<Vec3> targets, Retarget retarget,
+              const std::vector<char>& defect_rows, const Params& params, double ae);
+  ~Deformation();
+  Deformation(Deformation&&) noexcept;
+
+  // One iteration; false once the run has stopped.
+  bool step();
+  bool running() const { return out_.stop == StopReason::Running; }
+  int iterations() const { return out_.iterations_run; }
+  double initial_g_abd() const { return initial_g_; }
+  double best_g_abd() const { return best_.g_abd; }
+  double best_mean_displacement() const { return best_.mean_disp; }
+  // The result (call once, after the last step).
+  DeformOutcome finish();
+
+ private:
+  bool accept(const Positions& candidate, const std::string& label, IterationReport& report,
+              const Figures& before);
+  bool accept_shortened(const Positions& step, IterationReport& report, const Figures& before);
+  void set_rows();
+  void check_stop(const IterationReport& report);
+
+  const GroupMesh& g_;
+  Params params_;
+  std::vector<Vec3> targets_;
+  Retarget retarget_;
+  std::unique_ptr<DeformationSystem> system_;
+  std::vector<int> faces_, vertices_;
+  Positions V_;          // current iterate
+  VertexAngles angles_;  // at V_
+  Figures last_;         // figures of V_
+  Figures best_;         // figures of the best iterate
+  Positions best_V_;
+  std::vector<double> best_track_;  // best G_ABD after each accepted iteration (0: the input)
+  size_t best_iterations_ = 0;      // accepted iterations up to the best iterate
+  double initial_g_ = 0;
+  double weight_scale_ = 1;  // of the developability weights, after back-offs
+  int it_ = 0;
+  DeformOutcome out_;
+};
+
+// The whole run at once.
 DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
-                     const Retarget& retarget, const std::vector<char>& defect_rows, const Params& params,
-                     double ae, const std::function<void(double)>& progress);
+                     const Retarget& retarget, const std::vector<char>& defect_rows,
+                     const Params& params, double ae, const std::function<void(double)>& progress);
 
 // Limits the step from `current` to `proposed` by the group's δ_err (§5.2). Step mode:
 // |Δv| ≤ δ_err for every vertex, by scaling the whole step (ClampMode::Scale) or clamping each

@@ -111,6 +111,7 @@ GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vecto
     }
     g.global_face.push_back(f);
     g.face_patch.push_back(id);
+    g.face_unit.push_back(id);
   };
   for (int f : faces) add_face(f, true);
   g.solve_vertices = static_cast<Eigen::Index>(g.global_vertex.size());

@@ -28,6 +28,9 @@ struct GroupMesh {
   std::vector<int> global_vertex;   // local vertex -> input vertex
   std::vector<int> global_face;     // local face -> input face
   std::vector<int> face_patch;      // patch id of each local face
+  std::vector<int> face_unit;       // per local face: whose area A_P scales its angle-defect rows
+                                    // (angle_defect.h): its patch, or its solve group
+                                    // (solve_groups.h) in the per-patch passes
   std::vector<char> fixed;          // constrained, or only in the ring: not an unknown
   std::vector<double> tolerance;    // δ_err of each local vertex (min over its group patches)
   std::vector<int> owned;           // interior vertices of the group faces: their K counts

@@ -13,7 +13,12 @@
 #include <thread>
 #include <unordered_set>
 
+#include "approximate/approximate_log.h"
 #include "approximate/deformer.h"
+#include "approximate/patch_fit.h"
+#include "approximate/segment_first.h"
+#include "approximate/solve_groups.h"
+#include "approximate/term_race.h"
 #include "approximate/group_mesh.h"
 #include "approximate/solve_rounds.h"
 #include "approximate/target_normals.h"
@@ -34,239 +39,10 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// Below this fit residual a planar patch is already developable: nothing to do.
-constexpr double kPlanarResidualDeg = 0.05;
-// Above this fit residual the patch is far from one developable surface: warn.
-constexpr double kFarResidualDeg = 10.0;
-
-// The model of a patch Step 1 could not fit (e.g. its normals fill the sphere): every face
-// keeps its own normal as target, so the patch keeps its shape.
-class KeepNormals : public GaussModel {
- public:
-  Vec3 project(const Vec3& n, int&) const override { return n; }
-  std::string kind() const override { return "unchanged"; }
-};
-
-// Developability::Auto takes the paper's curve targets up to this fit residual and the
-// angle-defect rows above it (a Gauss image that is a 2-D blob, not a curve; measured on the
-// shared garments and samples, README "Garments").
-constexpr double kAutoDefectResidualDeg = 5.0;
-
-// The developability rows a patch gets.
-enum class Term { None, Curve, Defect, Both };
-
-const char* term_name(Term t) {
-  return t == Term::Curve ? "curve" : t == Term::Defect ? "defect" : t == Term::Both ? "both" : "none";
-}
-
-// Step 1 for one patch of a group: its faces (local indices), the fitted Gauss model, and the
-// developability term chosen for it.
-struct PatchFit {
-  int id = 0;
-  std::vector<int> faces;
-  TargetFit fit;
-  std::string skipped;  // why Step 1 failed; empty when it succeeded
-  Term term = Term::None;
-  std::string why;      // why this term (the log and the report say it)
-  bool planar() const {
-    return fit.model->kind() == "plane" && fit.residual_deg < kPlanarResidualDeg;
-  }
-  bool idle() const { return term == Term::None; }
-  bool has_targets() const { return term == Term::Curve || term == Term::Both; }
-  bool has_defects() const { return term == Term::Defect || term == Term::Both; }
-};
-
-std::string format(const char* fmt, double a, double b = 0, double c = 0, double d = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
-  return buf;
-}
-
-// "G_ABD a → b (−r%), " with the sign of the change: a rise reads "(+r%)".
-std::string g_abd_change(const Figures& before, const Figures& after, double reduction) {
-  return format(reduction >= 0 ? "G_ABD %.4g → %.4g (−%.1f%%), " : "G_ABD %.4g → %.4g (+%.1f%%), ",
-                before.g_abd, after.g_abd, std::abs(reduction));
-}
-
-// The term of a patch from the parameter and its Step 1 fit. Curve is the paper; the angle
-// defects need no fit, so they also take patches whose normals fill the sphere.
-void choose_term(PatchFit& p, Developability mode) {
-  if (p.planar() || p.faces.size() < static_cast<size_t>(kMinPatchFaces)) {
-    p.why = p.planar() ? "planar" : "too small";
-    return;
-  }
-  const bool fitted = p.skipped.empty();
-  switch (mode) {
-    case Developability::Curve:
-      p.term = fitted ? Term::Curve : Term::None;
-      p.why = "as asked";
-      return;
-    case Developability::Defect:
-      p.term = Term::Defect;
-      p.why = "as asked";
-      return;
-    case Developability::Both:
-      p.term = fitted ? Term::Both : Term::Defect;
-      p.why = fitted ? "as asked" : "no Gauss-image curve fits";
-      return;
-    case Developability::Auto:
-      if (!fitted) {
-        p.term = Term::Defect;
-        p.why = "auto: no Gauss-image curve fits";
-      } else if (p.fit.residual_deg > kAutoDefectResidualDeg) {
-        p.term = Term::Defect;
-        p.why = format("auto: fit residual %.1f° > %.0f°, the Gauss image is not a curve",
-                       p.fit.residual_deg, kAutoDefectResidualDeg);
-      } else {
-        p.term = Term::Curve;
-        p.why = format("auto: fit residual %.1f° <= %.0f°", p.fit.residual_deg,
-                       kAutoDefectResidualDeg);
-      }
-      return;
-  }
-}
-
-void normals_and_areas(const Positions& X, const Triangles& F, const std::vector<int>& faces,
-                       std::vector<Vec3>& normals, std::vector<double>& areas) {
-  normals.clear();
-  areas.clear();
-  for (int f : faces) {
-    normals.push_back(face_normal(X, F, f));
-    areas.push_back(face_area(X, F, f));
-  }
-}
-
-// Step 1 for one patch (its projections on up to `threads` threads). A patch too small to fit
-// (validate() let it through, its vertices fixed) or one Step 1 cannot fit keeps its own
-// normals as targets.
-PatchFit fit_patch(int id, const std::vector<int>& faces, const std::vector<Vec3>& normals,
-                   const std::vector<double>& areas, size_t threads) {
-  PatchFit p;
-  p.id = id;
-  p.faces = faces;
-  if (faces.size() < static_cast<size_t>(kMinPatchFaces)) {
-    p.skipped = "fewer than " + std::to_string(kMinPatchFaces) + " faces, too few to fit";
-  } else {
-    try {
-      p.fit = fit_targets(normals, areas, threads);
-      return p;
-    } catch (const Error& e) {
-      p.skipped = e.what();
-    }
-  }
-  p.fit.model = std::make_shared<KeepNormals>();
-  p.fit.targets = normals;
-  return p;
-}
-
-std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X, size_t threads) {
-  std::map<int, std::vector<int>> faces_of;
-  for (Eigen::Index f = 0; f < g.solve_faces; ++f)
-    faces_of[g.face_patch[static_cast<size_t>(f)]].push_back(static_cast<int>(f));
-  std::vector<PatchFit> fits;
-  std::vector<Vec3> normals;
-  std::vector<double> areas;
-  for (auto& [id, faces] : faces_of) {
-    normals_and_areas(X, g.F, faces, normals, areas);
-    fits.push_back(fit_patch(id, faces, normals, areas, threads));
-  }
-  return fits;
-}
-
-// Target per group face from the per-patch fits; zero (no Eq. 13 developability rows) on the
-// faces of patches that take the angle-defect rows only.
-std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>& fits) {
-  std::vector<Vec3> t(static_cast<size_t>(g.solve_faces), Vec3::Zero());
-  for (const PatchFit& p : fits)
-    if (p.term != Term::Defect)
-      for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = p.fit.targets[k];
-  return t;
-}
-
-// Re-projection (nearest point of the fixed c_3D) or re-fit (Step 1 again, each patch keeping
-// its term) between iterations, on up to `threads` threads.
-Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode,
-                       size_t threads) {
-  return [&g, &fits, mode, threads](const Positions& X) {
-    if (mode == TargetMode::Refit) {
-      std::vector<PatchFit> refits = fit_patches(g, X, threads);
-      for (size_t k = 0; k < refits.size(); ++k) refits[k].term = fits[k].term;
-      return group_targets(g, refits);
-    }
-    std::vector<Vec3> t(static_cast<size_t>(g.solve_faces), Vec3::Zero());
-    std::vector<Vec3> normals;
-    for (const PatchFit& p : fits) {
-      if (p.term == Term::Defect) continue;
-      normals.clear();
-      for (int f : p.faces) normals.push_back(face_normal(X, g.F, f));
-      const std::vector<Vec3> targets = project_normals(*p.fit.model, normals, threads);
-      for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = targets[k];
-    }
-    return t;
-  };
-}
-
-// Per local vertex, 1 = an angle-defect row: the free interior vertices that touch a face of
-// a defect patch (empty when there is none).
-std::vector<char> group_defect_rows(const GroupMesh& g, const std::vector<PatchFit>& fits) {
-  std::vector<char> has_row(g.fixed.size(), 0);
-  for (const PatchFit& p : fits)
-    if (p.has_defects())
-      for (int f : p.faces)
-        for (int c = 0; c < 3; ++c) has_row[static_cast<size_t>(g.F(f, c))] = 1;
-  std::vector<char> interior(g.fixed.size(), 0);
-  for (int v : g.owned) interior[static_cast<size_t>(v)] = 1;
-  bool any = false;
-  for (size_t v = 0; v < has_row.size(); ++v) {
-    has_row[v] = has_row[v] && interior[v] && !g.fixed[v];
-    any = any || has_row[v];
-  }
-  if (!any) return {};
-  return has_row;
-}
-
 std::vector<int> indices(size_t n) {
   std::vector<int> v(n);
   std::iota(v.begin(), v.end(), 0);
   return v;
-}
-
-// One log line per patch (what adapters show): its size, Step 1 fit, iterations and why they
-// stopped, G_ABD before → after, the last iteration's ratios (Eqs. 19–20), displacement, time.
-std::string patch_log_line(const PatchReport& p, double ae) {
-  if (p.developability == "none" && p.target_kind == "unchanged")
-    return "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
-           p.stop_reason;
-  const IterationReport last = p.history.empty() ? IterationReport{} : p.history.back();
-  const std::string fit = p.target_kind == "unchanged"
-                              ? "no curve fit"
-                              : p.target_kind + format(" fit residual %.2f°", p.fit_residual_deg);
-  std::string s = "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
-                  fit + ", developability " + p.developability + " (" + p.developability_reason +
-                  "), " +
-                  std::to_string(p.iterations) + " iteration(s) (stop: " + p.stop_reason + "), " +
-                  g_abd_change(p.before, p.after, p.abd_reduction) +
-                  format("last ratio_ABD %.1f%%, ratio_OBD %.1f%%, ", last.ratio_abd,
-                         last.ratio_obd) +
-                  format("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
-  if (p.developability == "curve" && p.fit_residual_deg > kFarResidualDeg)
-    s += format(
-        "; warning: fit residual %.1f°: this patch is far from one developable surface, which "
-        "the paper's method assumes: use --developability defect or auto, or split it into "
-        "finer patches",
-        p.fit_residual_deg);
-  return s;
-}
-
-std::string total_log_line(const Result& r) {
-  int iterations = 0;
-  for (const PatchReport& p : r.patches) iterations = std::max(iterations, p.iterations);
-  return "total: " + std::to_string(r.patches.size()) + " patch(es), " +
-         g_abd_change(r.total_before, r.total_after, r.abd_reduction) +
-         format("max displacement %.3g AE (AE = %.4g), ", r.total_after.max_disp / r.average_edge,
-                r.average_edge) +
-         "up to " + std::to_string(iterations) + " iterations, " + std::to_string(r.factorizations) +
-         format(" factorisation(s), %.0f ms", r.time_ms);
 }
 
 // Step 1 and Step 2 of one solve group, from the input positions.
@@ -275,6 +51,8 @@ struct GroupRun {
   std::vector<PatchFit> fits;
   std::vector<Vec3> targets;  // initial target per group face
   DeformOutcome outcome;
+  std::vector<CandidateFigures> race;  // Developability::Auto's candidates, if it raced
+  double initial_g = 0;                // the group's G_ABD when it started
   double time_ms = 0;
 };
 
@@ -288,10 +66,22 @@ void spend_earlier_moves(GroupMesh& g, const Positions& input) {
   }
 }
 
+// The terms decided for each patch id by an earlier pass's race (Developability::Auto).
+using DecidedTerms = std::map<int, Term>;
+
+// The fits with `term` on every patch the race decides (a patch no curve fits takes the
+// defect rows instead of the curve targets).
+std::vector<PatchFit> with_term(std::vector<PatchFit> fits, Term term) {
+  for (PatchFit& p : fits)
+    if (p.reason == TermReason::Measured) p.term = p.fitted() || term == Term::Defect ? term : Term::Defect;
+  return fits;
+}
+
 GroupRun run_group(const Positions& input, const Positions& V, const Triangles& F,
                    const std::vector<int>& faces, const std::vector<int>& patch,
                    const std::vector<char>& constrained, const std::vector<char>& interior,
                    const VertexFaces& incident, const Params& params, double ae,
+                   const DecidedTerms& decided, bool one_unit,
                    const std::function<void(double)>& progress) {
   const auto t0 = Clock::now();
   GroupRun run;
@@ -299,24 +89,53 @@ GroupRun run_group(const Positions& input, const Positions& V, const Triangles& 
   {
     StageTimer timer(setup_ms);
     run.group = extract_group(V, F, faces, patch, constrained, interior, incident, params);
+    if (one_unit) std::fill(run.group.face_unit.begin(), run.group.face_unit.end(), run.group.face_patch.front());
     if (params.tolerance_mode == ToleranceMode::Total) spend_earlier_moves(run.group, input);
   }
   const GroupMesh& g = run.group;
   const size_t threads = static_cast<size_t>(params.threads);
   double step1_ms = 0;
+  std::vector<Term> candidates;  // of the race, when a patch's term is to be measured
   {
     StageTimer timer(step1_ms);
     run.fits = fit_patches(g, g.V0, threads);
-    for (PatchFit& p : run.fits) choose_term(p, params.developability);
+    for (PatchFit& p : run.fits) {
+      choose_term(p, params.developability);
+      const auto given = decided.find(p.id);
+      if (p.reason != TermReason::Measured) continue;
+      if (given != decided.end()) {
+        p.term = given->second;
+        p.reason = TermReason::Given;
+      } else if (candidates.size() < 2) {
+        candidates = candidate_terms(p);
+      }
+    }
+    if (candidates.size() == 1) run.fits = with_term(run.fits, candidates.front());
     run.targets = group_targets(g, run.fits);
   }
-  bool all_idle = true;
+  bool all_idle = candidates.size() < 2;
   for (const PatchFit& p : run.fits) all_idle = all_idle && p.idle();
   if (all_idle) {
     run.outcome.V = g.V0;
-    run.outcome.stop_reason = run.fits.front().skipped.empty()
+    run.outcome.stop = StopReason::NothingToDo;
+    run.outcome.stop_detail = run.fits.front().skipped.empty()
                                   ? "planar: the Gauss image is a point, nothing to do"
                                   : "left unchanged: " + run.fits.front().skipped;
+  } else if (candidates.size() > 1) {
+    // Each candidate's fits outlive its run: the re-projection keeps a reference to them.
+    std::map<Term, std::vector<PatchFit>> fits_of;
+    for (Term t : candidates) fits_of[t] = with_term(run.fits, t);
+    const auto start = [&](Term t) {
+      const std::vector<PatchFit>& fits = fits_of.at(t);
+      return Deformation(g, group_targets(g, fits), make_retarget(g, fits, params.targets, threads),
+                         group_defect_rows(g, fits), params, ae);
+    };
+    RaceOutcome race = race_terms(candidates, start, params.max_iter, progress);
+    run.fits = fits_of.at(race.winner);
+    run.targets = group_targets(g, run.fits);
+    run.outcome = std::move(race.outcome);
+    run.race = std::move(race.candidates);
+    run.initial_g = race.initial_g;
   } else {
     run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets, threads),
                          group_defect_rows(g, run.fits), params, ae, progress);
@@ -381,16 +200,30 @@ size_t thread_count(int requested) {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-}  // namespace
+// Algorithm 1 over the patches the problem gives (the whole mesh as one when it gives none).
+// "note: patch 12 (8 faces) ..." for each patch solved in another's group (solve_groups.h).
+std::vector<std::string> merge_notes(const SolveGroups& groups) {
+  std::vector<std::string> notes;
+  for (const PatchMerge& m : groups.merged)
+    notes.push_back("note: patch " + std::to_string(m.patch) + " (" + std::to_string(m.faces) +
+                    (m.faces == 1 ? " face" : " faces") +
+                    ") has most of its vertices on seams or the boundary: it is solved together "
+                    "with patch " + std::to_string(m.group) + ", and the seam between them moves");
+  return notes;
+}
 
-Result approximate(const Problem& problem, const Progress& progress) {
+Result approximate_patches(const Problem& problem, const Topology& patch_topo, const Progress& progress) {
   const auto t0 = Clock::now();
-  const Topology topo = validate(problem);
   const Params& params = problem.params;
   const Positions& V = problem.V;
   const Triangles& F = problem.F;
   const size_t nv = static_cast<size_t>(V.rows()), nf = static_cast<size_t>(F.rows());
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
+  // The seams held and the patches too small to fit are those of the solve groups.
+  const SolveGroups solve = solve_groups(F, patch, patch_topo.boundary);
+  const Topology topo = solve.merged.empty()
+                            ? patch_topo
+                            : analyse_topology(F, static_cast<int>(nv), solve.group);
   const VertexRoles roles = vertex_roles(problem, topo, params.seams);
   const std::vector<char>& interior = roles.interior;
   const std::vector<char>& constrained = roles.constrained;
@@ -401,31 +234,37 @@ Result approximate(const Problem& problem, const Progress& progress) {
   r.V = V;
   r.warnings = warnings(topo);
   for (const std::string& w : r.warnings) r.log.push_back("warning: " + w);
+  for (const std::string& note : merge_notes(solve)) r.log.push_back(note);
   r.average_edge = average_edge_length(V, F);
   const VertexAngles angles_before = vertex_angles(V, F);
   r.k_before = gaussian_curvature(angles_before, interior);
   r.times.setup += ms_since(t0);  // validation, topology, the input's figures
 
-  std::map<int, std::vector<int>> faces_of_patch;
-  for (size_t f = 0; f < nf; ++f) faces_of_patch[patch[f]].push_back(static_cast<int>(f));
+  std::map<int, std::vector<int>> faces_of_patch, faces_of_group;
+  for (size_t f = 0; f < nf; ++f) {
+    faces_of_patch[patch[f]].push_back(static_cast<int>(f));
+    faces_of_group[solve.group[f]].push_back(static_cast<int>(f));
+  }
   // One group per patch, its seams held (the paper). Free seams take three passes, each
-  // starting where the one before ended, so none can undo another (never-worse rule): all
-  // patches in one group (its one step scale is set by the worst patch, so it stalls early on
-  // draped garments), then each patch with its seams held, then each patch again moving its
+  // starting where the one before ended, so none can undo another (never-worse rule): each
+  // patch with its seams held (where Developability::Auto measures each patch's term, which
+  // the later passes keep), then all patches in one group (its one step scale is set by the
+  // worst patch, so it stalls early on draped garments), then each patch again moving its
   // seam vertices (moved by one patch, seen by the next, so they stay shared). Measured on the
   // shared garments, free seams then remove more than fixed ones (issue 11). With a total
   // tolerance each pass moves a vertex only by what the earlier passes left of its budget.
   struct Pass {
     const char* name;                      // in the reports when there are several
     const std::vector<char>* constrained;  // the vertices no group of the pass moves
+    bool per_group;                        // one group per solve group (solve_groups.h)
     size_t first = 0, last = 0;            // its groups
   };
   std::vector<std::vector<int>> groups;
   std::vector<Pass> passes;
   const auto add_pass = [&](const char* name, const std::vector<char>& held_here, bool per_patch) {
-    passes.push_back({name, &held_here, groups.size(), 0});
+    passes.push_back({name, &held_here, per_patch, groups.size(), 0});
     if (per_patch)
-      for (auto& [id, faces] : faces_of_patch) groups.push_back(faces);
+      for (auto& [id, faces] : faces_of_group) groups.push_back(faces);
     else
       groups.push_back(indices(nf));
     passes.back().last = groups.size();
@@ -434,14 +273,15 @@ Result approximate(const Problem& problem, const Progress& progress) {
     return *std::find_if(passes.begin(), passes.end(), [gi](const Pass& p) { return gi < p.last; });
   };
   const bool free_seams = params.seams == SeamMode::Free;
-  if (free_seams) add_pass("all patches at once", constrained, false);
   add_pass("seams held", held, true);
+  if (free_seams) add_pass("all patches at once", constrained, false);
   if (free_seams) add_pass("seams free", constrained, true);
 
   // Step 1 and Step 2 per group, pass by pass and round by round (solve_rounds.h): the groups
   // of a round move no common vertex and run in parallel from the positions the earlier
   // rounds left.
   std::vector<GroupRun> runs(groups.size());
+  DecidedTerms decided;  // by the races of the first pass, for the later ones
   const std::thread::id caller = std::this_thread::get_id();
   std::atomic<size_t> done{0};
   // The engine's threads run patches, or the two scalar factors of a lone patch's iterative
@@ -461,9 +301,13 @@ Result approximate(const Problem& problem, const Progress& progress) {
                    "deforming");
       };
       runs[round[k]] = run_group(V, r.V, F, groups[round[k]], patch, *p.constrained, interior,
-                                 incident, group_params, r.average_edge, group_progress);
+                                 incident, group_params, r.average_edge, decided, p.per_group,
+                                 group_progress);
       ++done;
     });
+    for (size_t gi : round)
+      for (const PatchFit& fit : runs[gi].fits)
+        if (fit.reason == TermReason::Measured) decided[fit.id] = fit.term;
   };
   const auto keep = [&](size_t gi) {  // a group's result into r.V
     const GroupRun& run = runs[gi];
@@ -513,10 +357,12 @@ Result approximate(const Problem& problem, const Progress& progress) {
       rep.tolerance = patch_tolerance(params, p.id);
       const bool first = rep.stop_reason.empty();
       rep.iterations += static_cast<int>(run.outcome.history.size());
+      rep.iterations_run += run.outcome.iterations_run;
       rep.developability = term_name(p.term);
-      rep.developability_reason = p.why;
+      if (!run.race.empty()) rep.candidates = candidate_reports(run.race, run.initial_g);
+      if (first || !run.race.empty()) rep.developability_reason = term_reason_text(p, rep.candidates);
       const bool unfitted = p.idle() && !p.skipped.empty();
-      std::string stop = unfitted ? "left unchanged: " + p.skipped : run.outcome.stop_reason;
+      std::string stop = unfitted ? "left unchanged: " + p.skipped : stop_text(run.outcome, params);
       if (free_seams) stop = pass_of(gi).name + (": " + stop);
       rep.stop_reason = first ? stop : rep.stop_reason + "; then " + stop;
       if (unfitted && first && skipped_patches++ == 0) first_skip = "patch " + std::to_string(p.id) + ": " + p.skipped;
@@ -587,6 +433,37 @@ Result approximate(const Problem& problem, const Progress& progress) {
   r.time_ms = ms_since(t0);
   r.log.push_back(total_log_line(r));
   if (progress) progress(100, "done");
+  return r;
+}
+
+}  // namespace
+
+Result approximate(const Problem& problem, const Progress& progress) {
+  const auto t0 = Clock::now();
+  const Topology topo = validate(problem);
+  const SegmentFirstPlan plan = plan_segment_first(problem, topo);
+  if (!plan.segment) return approximate_patches(problem, topo, progress);
+  Problem split;
+  try {
+    split = segmented(problem);
+  } catch (const Error& e) {
+    Result r = approximate_patches(problem, topo, progress);
+    r.log.insert(r.log.begin(), std::string("note: the mesh has no patch ids and ") + plan.why +
+                                    ", but it could not be split into patches (" + e.what() +
+                                    "): solved as one patch");
+    return r;
+  }
+  const double split_ms = ms_since(t0);
+  Result r = approximate_patches(split, validate(split), progress);
+  r.segmented_patch = split.patch;
+  const int count = 1 + *std::max_element(split.patch.begin(), split.patch.end());
+  r.log.insert(r.log.begin(),
+               "note: the mesh has no patch ids and " + plan.why + ": split into " +
+                   std::to_string(count) + " nearly developable patches (segment, largest fit error " +
+                   std::to_string(static_cast<int>(kSegmentFirstMaxErrorDeg)) +
+                   "°), solved with free seams (segment-first set to never keeps it one patch)");
+  r.times.setup += split_ms;
+  r.time_ms += split_ms;
   return r;
 }
 

@@ -15,7 +15,18 @@ struct IterationReport {
   double ratio_abd = 0;      // Eq. (19), percent, vs the previous iteration
   double ratio_obd = 0;      // Eq. (20), percent
   double step_scale = 1;     // 1 = full step; < 1 = shortened by the never-worse rule
+  double weight_scale = 1;   // of the developability weights, < 1 after back-offs (deformer.h)
   std::string note;          // why a step was shortened or rejected, if it was
+};
+
+// One candidate of Developability::Auto's race (term_race.h).
+struct CandidateReport {
+  std::string term;            // "curve", "defect", "both"
+  int iterations = 0;          // accepted iterations it ran
+  double abd_reduction = 0;    // of its best iterate, percent
+  double mean_disp = 0;        // of its best iterate, model units
+  bool kept = false;           // the one whose result the patch keeps
+  bool dropped = false;        // stopped after the trial, not by its own stop rule
 };
 
 struct PatchReport {
@@ -26,9 +37,11 @@ struct PatchReport {
   double tolerance = 0;          // δ_err used, model units
   std::string target_kind;       // "curve", "closed curve", "plane"
   std::string developability;    // rows used: "curve" (paper), "defect", "both", "none"
-  std::string developability_reason;  // why (Developability::Auto says which figure decided)
+  std::string developability_reason;  // why (Developability::Auto: the race's figures)
+  std::vector<CandidateReport> candidates;  // Developability::Auto's race, else empty
   double fit_residual_deg = 0;   // area-weighted mean angle between n_f and its target
-  int iterations = 0;            // accepted iterations
+  int iterations = 0;            // accepted iterations up to the kept (best) iterate
+  int iterations_run = 0;        // accepted iterations, including those after the kept one
   std::string stop_reason;
   Figures before;
   Figures after;
@@ -70,6 +83,8 @@ struct Result {
   int factorizations = 0;            // sparse Cholesky numeric factorisations performed
   StageTimes times;                  // per stage; time_ms is the wall-clock total
   double time_ms = 0;
+  std::vector<int> segmented_patch;  // patch id per face when the engine split the mesh first
+                                     // (segment_first.h), else empty
   std::vector<std::string> warnings; // parts of the mesh left as they are (validate.h warnings())
   std::vector<std::string> log;      // human-readable lines: the warnings, one per patch, total
 };

@@ -1,0 +1,62 @@
+// Step 1 per patch of a solve group (paper §5.1) and what it gives the deformation: the fitted
+// Gauss-image model, the developability term each patch takes, the target normals, the
+// re-projection between iterations and the vertices that get angle-defect rows.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "approximate/deformer.h"
+#include "approximate/group_mesh.h"
+#include "approximate/params.h"
+#include "approximate/target_normals.h"
+
+namespace qd {
+
+// Below this fit residual a planar patch is already developable: nothing to do.
+constexpr double kPlanarResidualDeg = 0.05;
+
+// The developability rows a patch gets: the paper's normal targets (Eq. 13), the angle-defect
+// rows (angle_defect.h), both, or none (planar, too small, or not fitted with Curve asked).
+enum class Term { None, Curve, Defect, Both };
+
+// Why a patch takes its term.
+enum class TermReason { AsAsked, Planar, TooSmall, NoCurveFits, Measured, Given };
+
+struct PatchFit {
+  int id = 0;
+  std::vector<int> faces;     // local faces of the group
+  TargetFit fit;
+  std::string skipped;        // why Step 1 failed; empty when it succeeded
+  Term term = Term::None;
+  TermReason reason = TermReason::AsAsked;
+  bool fitted() const { return skipped.empty(); }
+  bool planar() const;
+  bool idle() const { return term == Term::None; }
+};
+
+// Step 1 for every patch of the group at positions X (projections on up to `threads` threads).
+// A patch too small to fit or one Step 1 cannot fit keeps its own normals as targets.
+std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X, size_t threads);
+
+// The term of a patch for the parameter; Auto leaves Term::None on a patch that can move, for
+// the race (term_race.h) to decide. Curve is the paper's; the angle defects need no fit, so
+// they also take patches whose normals fill the sphere.
+void choose_term(PatchFit& p, Developability mode);
+
+// The candidate terms of Developability::Auto for a patch: Curve and Both where a curve fits.
+std::vector<Term> candidate_terms(const PatchFit& p);
+
+// Target per group face for the patches' terms; zero (no Eq. 13 rows) on defect-only faces.
+std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>& fits);
+
+// Re-projection (nearest point of the fixed c_3D) or re-fit (Step 1 again, each patch keeping
+// its term) between iterations, on up to `threads` threads. Keeps references to g and fits.
+Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode,
+                       size_t threads);
+
+// Per local vertex, 1 = an angle-defect row: the free interior vertices that touch a face of
+// a patch with defect rows (empty when there is none).
+std::vector<char> group_defect_rows(const GroupMesh& g, const std::vector<PatchFit>& fits);
+
+}  // namespace qd

@@ -1,0 +1,110 @@
+#include "approximate/solve_groups.h"
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+namespace qd {
+namespace {
+
+// The two faces of an edge that has two, and whether each runs it from the lower vertex.
+struct EdgeFaces {
+  int f, g;
+  bool f_up, g_up;
+};
+
+std::vector<EdgeFaces> edge_faces(const Triangles& F) {
+  std::vector<std::tuple<int, int, int, bool>> corners;  // (low, high, face, from low)
+  corners.reserve(static_cast<size_t>(3 * F.rows()));
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int u = F(f, c), v = F(f, (c + 1) % 3);
+      corners.emplace_back(std::min(u, v), std::max(u, v), static_cast<int>(f), u < v);
+    }
+  std::sort(corners.begin(), corners.end());
+  std::vector<EdgeFaces> out;
+  for (size_t k = 0; k + 1 < corners.size(); ++k) {
+    const auto& [a, b, f, up] = corners[k];
+    const auto& [a2, b2, g, up2] = corners[k + 1];
+    const bool two = a == a2 && b == b2 && (k + 2 == corners.size() || std::get<0>(corners[k + 2]) != a ||
+                                            std::get<1>(corners[k + 2]) != b);
+    if (two && (k == 0 || std::get<0>(corners[k - 1]) != a || std::get<1>(corners[k - 1]) != b))
+      out.push_back({f, g, up, up2});
+  }
+  return out;
+}
+
+// One round: every group that is mostly seam joins its best neighbour, unless a group it
+// touches changed this round. False when none did.
+bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
+                 const std::vector<char>& boundary, std::vector<int>& group) {
+  const size_t nv = boundary.size();
+  std::vector<std::vector<int>> at(nv);  // groups of each vertex's faces
+  for (Eigen::Index f = 0; f < F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      std::vector<int>& a = at[static_cast<size_t>(F(f, c))];
+      const int g = group[static_cast<size_t>(f)];
+      if (std::find(a.begin(), a.end(), g) == a.end()) a.push_back(g);
+    }
+  std::map<int, size_t> total, interior;
+  std::map<int, std::map<int, int>> shared;
+  for (size_t v = 0; v < nv; ++v) {
+    for (int g : at[v]) {
+      ++total[g];
+      if (at[v].size() == 1 && !boundary[v]) ++interior[g];
+      for (int h : at[v])
+        if (h != g) ++shared[g][h];
+    }
+  }
+  if (total.size() < 2) return false;
+  std::map<std::pair<int, int>, bool> alike;  // group pair: every shared edge oriented alike
+  for (const EdgeFaces& e : edges) {
+    const int p = group[static_cast<size_t>(e.f)], q = group[static_cast<size_t>(e.g)];
+    if (p == q) continue;
+    const auto [slot, fresh] = alike.emplace(std::make_pair(std::min(p, q), std::max(p, q)), e.f_up != e.g_up);
+    if (!fresh) slot->second = slot->second && e.f_up != e.g_up;
+  }
+  std::map<int, int> into;  // group -> the group it joins this round
+  std::map<int, char> touched;
+  for (const auto& [g, n] : total) {
+    if (2 * interior[g] >= n || touched[g]) continue;
+    int best = -1, most = 0;
+    for (const auto& [h, count] : shared[g]) {
+      const auto it = alike.find(std::make_pair(std::min(g, h), std::max(g, h)));
+      if (it != alike.end() && it->second && count > most && !touched[h]) best = h, most = count;
+    }
+    if (best < 0) continue;
+    into[g] = best;
+    touched[g] = touched[best] = 1;
+  }
+  for (int& g : group) {
+    const auto it = into.find(g);
+    if (it != into.end()) g = it->second;
+  }
+  return !into.empty();
+}
+
+}  // namespace
+
+SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
+                         const std::vector<char>& boundary) {
+  SolveGroups out;
+  out.group = patch;
+  if (std::adjacent_find(patch.begin(), patch.end(), std::not_equal_to<int>()) == patch.end())
+    return out;  // one patch
+  const std::vector<EdgeFaces> edges = edge_faces(F);
+  while (merge_round(F, edges, boundary, out.group)) {
+  }
+  std::map<int, PatchMerge> merged;
+  for (size_t f = 0; f < patch.size(); ++f)
+    if (out.group[f] != patch[f]) {
+      PatchMerge& m = merged[patch[f]];
+      m.patch = patch[f];
+      m.group = out.group[f];
+      ++m.faces;
+    }
+  for (const auto& [id, m] : merged) out.merged.push_back(m);
+  return out;
+}
+
+}  // namespace qd

@@ -1,0 +1,84 @@
+#include "approximate/term_race.h"
+
+#include <algorithm>
+#include <cmath>
+
+
+namespace qd {
+namespace {
+
+// a leads b: less G_ABD, or as much and less mean displacement.
+bool leads(const Deformation& a, const Deformation& b) {
+  return a.best_g_abd() < b.best_g_abd() ||
+         (a.best_g_abd() == b.best_g_abd() && a.best_mean_displacement() < b.best_mean_displacement());
+}
+
+// The leading candidate among those not dropped (the first on a tie).
+size_t leader(const std::vector<Deformation>& runs, const std::vector<char>& dropped) {
+  size_t best = runs.size();
+  for (size_t k = 0; k < runs.size(); ++k)
+    if (!dropped[k] && (best == runs.size() || leads(runs[k], runs[best]))) best = k;
+  return best;
+}
+
+// The trailing candidate among those not dropped (the last on a tie).
+size_t trailer(const std::vector<Deformation>& runs, const std::vector<char>& dropped) {
+  size_t worst = runs.size();
+  for (size_t k = 0; k < runs.size(); ++k)
+    if (!dropped[k] && (worst == runs.size() || !leads(runs[k], runs[worst]))) worst = k;
+  return worst;
+}
+
+}  // namespace
+
+RaceOutcome race_terms(const std::vector<Term>& terms, const std::function<Deformation(Term)>& start,
+                       int max_iter, const std::function<void(double)>& progress) {
+  std::vector<Deformation> runs;
+  for (Term t : terms) runs.push_back(start(t));
+  std::vector<char> dropped(runs.size(), 0);
+  const auto active = [&](size_t k) { return runs[k].running() && !dropped[k]; };
+  const auto any_active = [&] {
+    for (size_t k = 0; k < runs.size(); ++k)
+      if (active(k)) return true;
+    return false;
+  };
+  const int drop_worst_after = std::max(1, static_cast<int>(std::lround(kDropWorstShare * max_iter)));
+  const int keep_leader_after =
+      std::max(drop_worst_after + 1, static_cast<int>(std::lround(kKeepLeaderShare * max_iter)));
+  for (int round = 1; any_active(); ++round) {
+    for (size_t k = 0; k < runs.size(); ++k)
+      if (active(k)) runs[k].step();
+    if (progress) progress(static_cast<double>(runs[leader(runs, dropped)].iterations()) / max_iter);
+    // A candidate that has removed nothing stops once another has removed something.
+    const size_t lead = leader(runs, dropped);
+    if (runs[lead].best_g_abd() < runs[lead].initial_g_abd())
+      for (size_t k = 0; k < runs.size(); ++k)
+        if (!(runs[k].best_g_abd() < runs[k].initial_g_abd())) dropped[k] = 1;
+    if (round == drop_worst_after && std::count(dropped.begin(), dropped.end(), 0) > 2)
+      dropped[trailer(runs, dropped)] = 1;
+    if (round == keep_leader_after) {
+      const size_t keep = leader(runs, dropped);
+      for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != keep;
+    }
+  }
+  RaceOutcome out;
+  const size_t lead = leader(runs, dropped);
+  for (size_t k = 0; k < runs.size(); ++k) {
+    CandidateFigures c;
+    c.term = terms[k];
+    c.iterations = runs[k].iterations();
+    c.g_abd = runs[k].best_g_abd();
+    c.mean_disp = runs[k].best_mean_displacement();
+    c.kept = k == lead;
+    c.dropped = dropped[k] != 0;  // by the race, whether or not it had stopped
+    out.candidates.push_back(c);
+  }
+  out.winner = terms[lead];
+  out.initial_g = runs[lead].initial_g_abd();
+  out.outcome = runs[lead].finish();
+  for (size_t k = 0; k < runs.size(); ++k)
+    if (k != lead) out.outcome.times += runs[k].finish().times;
+  return out;
+}
+
+}  // namespace qd

@@ -1,0 +1,48 @@
+// Developability::Auto decides by measuring (beyond the paper). Each candidate term (the
+// paper's curve targets, the angle-defect rows, both) runs from the same start under the same
+// tolerance, one iteration each in turn, by successive halving over a fixed share of the
+// iteration budget: after kDropWorstShare of maxIter rounds the candidate with most G_ABD left
+// stops, after kKeepLeaderShare all but the leader (least G_ABD; ties: least mean
+// displacement) stop, and the leader runs to its own stop. A
+// candidate that has removed nothing stops as soon as another has removed something (on draped
+// garments the curve targets remove nothing). A candidate that stops earlier by its own rule
+// stays in the comparison where it stopped. On
+// the generated family of scripts/robustness_sweep.py this keeps the term that running every
+// candidate to its end would keep, at a fraction of the cost (docs/robustness.md has the
+// figures); the round counts are not fitted to any one mesh.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "approximate/deformer.h"
+#include "approximate/patch_fit.h"
+
+namespace qd {
+
+constexpr double kDropWorstShare = 0.1;  // at the default maxIter of 30: after 3 rounds
+constexpr double kKeepLeaderShare = 0.4;  // and after 12
+
+// A candidate's figures, for the log and the report.
+struct CandidateFigures {
+  Term term = Term::None;
+  int iterations = 0;      // accepted iterations it ran
+  double g_abd = 0;        // its best G_ABD
+  double mean_disp = 0;    // of its best iterate
+  bool kept = false;
+  bool dropped = false;    // stopped by the trial, not by its own stop rule
+};
+
+struct RaceOutcome {
+  Term winner = Term::None;
+  DeformOutcome outcome;   // the winner's run
+  std::vector<CandidateFigures> candidates;
+  double initial_g = 0;    // G_ABD at the start
+};
+
+// terms: the candidates, in order of preference on a tie; start(term): a fresh run with that
+// term; progress receives the fraction of max_iter the leader has done.
+RaceOutcome race_terms(const std::vector<Term>& terms, const std::function<Deformation(Term)>& start,
+                       int max_iter, const std::function<void(double)>& progress);
+
+}  // namespace qd
