@@ -105,14 +105,16 @@ def polo_with_placket(n_around=24, n_along=16, column=6, seams=11):
 
 def panels_with_scraps(n_around=24, n_along=16, scraps=((5, 2), (200, 1), (400, 1), (600, 3))):
     """A tube cut into 4 × 4-cell panels, with a few scraps (first face, faces) of fewer than 4
-    faces cut out as patches of their own (ids 100, 101, ...). Returns V, F, patch ids and the
-    scraps' vertices."""
+    faces cut out as patches of their own (ids 100, 101, ...), their faces turned against the
+    panel around them, so that they cannot be solved together with it (a scrap oriented like
+    its panel would be). Returns V, F, patch ids and the scraps' vertices."""
     V, F = wavy_tube(n_around, n_along)
     patch = [(k // 2 % n_around) // 4 + 6 * ((k // 2 // n_around) // 4) for k in range(len(F))]
     kept = set()
     for n, (first, faces) in enumerate(scraps):
         for f in range(first, first + faces):
             patch[f] = 100 + n
+            F[f] = (F[f][0], F[f][2], F[f][1])
             kept.update(F[f])
     return V, F, patch, sorted(kept)
 

@@ -129,14 +129,13 @@ def test_free_seams_remove_at_least_what_fixed_seams_remove_on_a_garment(tmp_pat
 
 
 def test_patches_whose_round_raises_a_patch_run_again_in_turn(tmp_path):
-    """The four patches of patches.ply (curve targets) run at once, raise each other's seams, and
-    run again one after the other: the log says so, and the reduction is what running them in
-    turn gives (15.7 %), not the 8.3 % of keeping the round."""
+    """The four patches of patches.ply (both terms) run at once, raise each other's seams, and
+    run again one after the other: the log says so, and the mesh ends with less curvature."""
     out, report = tmp_path / "out.ply", tmp_path / "r.json"
-    r = run(REPO / "sample_meshes" / "patches.ply", out, "--report", report)
+    r = run(REPO / "sample_meshes" / "patches.ply", out, "--developability", "both", "--report", report)
     assert r.returncode == 0, r.stderr
     assert "note: patches 0, 1, 2, 3, solved at once, raised the curvature where they meet" in r.stdout
-    assert json.loads(report.read_text())["abd_reduction"] > 15
+    assert json.loads(report.read_text())["abd_reduction"] > 5
 
 
 def test_displacement_quality_equals_the_vertex_moves(tmp_path):
@@ -363,8 +362,9 @@ def test_bad_arguments_exit_2(name, existing_output, tmp_path):
 
 
 def test_report_says_which_developability_term_each_patch_used(tmp_path):
-    """auto (the default) takes the angle-defect rows on draped panels and says why; asking for
-    the paper's curve gives less reduction there, and the report says 'curve'."""
+    """auto (the default) races the terms on each draped panel and keeps the one that removes
+    most; the report gives each candidate's figures, the log says so, and the whole removes at
+    least what either term alone removes (within 2 percentage points)."""
     mesh = REPO / "sample_meshes" / "draped_panels.ply"
     reports = {}
     for term in ("auto", "curve", "defect"):
@@ -372,13 +372,16 @@ def test_report_says_which_developability_term_each_patch_used(tmp_path):
                 tmp_path / f"{term}.json")
         assert r.returncode == 0, r.stderr
         reports[term] = json.loads((tmp_path / f"{term}.json").read_text())
-    auto = reports["auto"]["patches"]
-    assert {p["developability"] for p in auto} == {"defect"}
-    assert all("fit residual" in p["developability_reason"] for p in auto)
+    for p in reports["auto"]["patches"]:
+        assert p["developability_reason"].startswith("auto, measured:")
+        kept = [c for c in p["candidates"] if c["kept"]]
+        assert len(kept) == 1 and kept[0]["term"] == p["developability"]
+        assert kept[0]["abd_reduction"] >= max(c["abd_reduction"] for c in p["candidates"])
     assert {p["developability"] for p in reports["curve"]["patches"]} == {"curve"}
-    assert reports["auto"]["abd_reduction"] > reports["curve"]["abd_reduction"] + 30
+    for term in ("curve", "defect"):
+        assert reports["auto"]["abd_reduction"] >= reports[term]["abd_reduction"] - 2
     r = run(mesh, tmp_path / "log.ply")
-    assert "developability defect (auto: fit residual" in r.stdout
+    assert "(auto, measured: curve −" in r.stdout
 
 
 def test_missing_input_and_unwritable_output(tmp_path):
@@ -409,8 +412,9 @@ def test_engine_refusal_is_one_line(tmp_path):
     if not mesh.exists():
         pytest.skip("shared mesh missing")
     out = tmp_path / "out.ply"
-    assert_clean_failure(run(mesh, out, "--developability", "curve"), out, status=1)
-    r = run(mesh, out, "--report", tmp_path / "r.json")
+    assert_clean_failure(run(mesh, out, "--developability", "curve", "--segment-first", "never"),
+                         out, status=1)
+    r = run(mesh, out, "--segment-first", "never", "--report", tmp_path / "r.json")
     assert r.returncode == 0, r.stderr
     report = json.loads((tmp_path / "r.json").read_text())
     assert report["patches"][0]["developability"] == "defect"

@@ -54,7 +54,7 @@ def test_help_lists_the_subcommands_and_the_defaults():
     sub = run("approximate", "--help")
     assert sub.returncode == 0
     assert "Usage: quasidev approximate [OPTIONS] INPUT OUTPUT" in sub.stdout
-    for option, default in (("--tolerance X", "1"), ("--max-iter N", "10"), ("--weight W", "30"),
+    for option, default in (("--tolerance X", "1"), ("--max-iter N", "30"), ("--weight W", "30"),
                             ("--developability D", "auto"), ("--seams S", "fixed"),
                             ("--targets T", "reproject"), ("--quality Q", "curvature"),
                             ("--threads N", "0"), ("--defect-weight W", "0.03")):
