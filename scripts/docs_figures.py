@@ -57,11 +57,11 @@ def spot(quasidev: Path, meshes: Path, out: Path, tmp: Path) -> None:
     mesh = meshes / SPOT
     seg, after = tmp / "spot_seg.ply", tmp / "spot_dev.ply"
     run(quasidev, "segment", mesh, seg, "--max-error", "30", "--quiet")
-    python("render.py", seg, "-o", out / "spot_segments.png", "--color", "patch", "--size", "560x420",
-           "--labels", "quasidev segment --max-error 30 (colour = patch)")
+    python("render.py", seg, "-o", out / "spot_segments.png", "--color", "patch",
+           "--size", "560x420", "--labels", "quasidev segment --max-error 30 (colour = patch)")
     run(quasidev, "approximate", seg, after, "--seams", "free", "--quiet")
-    python("render_before_after.py", mesh, after, "-o", out / "spot_before_after.png", "--name", "spot",
-           "--after-label", "after segment, then approximate --seams free")
+    python("render_before_after.py", mesh, after, "-o", out / "spot_before_after.png",
+           "--name", "spot", "--after-label", "after segment, then approximate --seams free")
 
 
 def main() -> None:

@@ -46,7 +46,8 @@ def measure_pair(before_path: Path, after_path: Path, meshes: list, k: list) -> 
         import pymeshlab  # noqa: F401
     except ImportError:
         g0, g1 = float(k[0].sum()), float(k[1].sum())
-        move = np.linalg.norm(meshes[1].v - meshes[0].v, axis=1).max() / average_edge(meshes[0].v, meshes[0].f)
+        ae = average_edge(meshes[0].v, meshes[0].f)
+        move = np.linalg.norm(meshes[1].v - meshes[0].v, axis=1).max() / ae
         return g0, {"g_abd": g1, "reduction": 100.0 * (g0 - g1) / g0, "hausdorff_rel": None,
                     "max_move_ae": float(move)}
     before = input_figures(str(before_path))
@@ -141,7 +142,8 @@ def main() -> None:
     print(f"{args.out}: G_ABD {figures['g_abd_before']:.4g} -> {figures['g_abd_after']:.4g} "
           f"({figures['reduction']:.1f} %), "
           + (f"Hausdorff/diag {hausdorff:.2e}, " if hausdorff is not None else "")
-          + f"largest move {figures['max_move_ae']:.2f} AE, |K| scale 0..{figures['scale_max']:.3g}")
+          + f"largest move {figures['max_move_ae']:.2f} AE, "
+          f"|K| scale 0..{figures['scale_max']:.3g}")
 
 
 if __name__ == "__main__":
