@@ -46,10 +46,13 @@ build_plugin() {
 }
 step "build the MeshLab 2020.09 plugin" build_plugin
 
-mkdir -p "$OUT"
-step "install it into a private MeshLab in out/meshlab2020" \
+install_plugin() {
+  mkdir -p "$OUT"
   bash "$ROOT/scripts/install_plugin.sh" --user --prefix "$OUT/meshlab2020" --bin-dir none \
-       --plugin "$BUILD/bin/plugins/libfilter_quasidev.so" >/dev/null
+       --plugin "$BUILD/bin/plugins/libfilter_quasidev.so" >/dev/null \
+    || die "installing into $OUT/meshlab2020"
+}
+step "install it into a private MeshLab in out/meshlab2020" install_plugin
 
 RESULT="$OUT/${NAME}_quasidev.ply"
 LOG="$OUT/${NAME}_quasidev.log"
