@@ -5,10 +5,10 @@ Runs both filters in the same pymeshlab process on the same inputs -- ours
 (apply_coord_quasi_developable_approximation, the 2025.07d plugin of this project) and MeshLab's
 apply_coord_developability_of_mesh (Stein, Grinspun, Crane 2018) -- each with its defaults and one
 tuned setting, and prints a Markdown table per run:
-  wall time of the filter call, ratio_ABD (percent drop of G_ABD = sum |K| over interior vertices,
-  Eq. 19 between input and output), max |K| after, max and mean displacement in AE (the input's
-  average edge length), symmetric Hausdorff distance to the input relative to the input's bbox
-  diagonal, and whether the topology was preserved.
+  wall time of the filter call, G_ABD reduction (percent drop of G_ABD = sum |K| over interior
+  vertices, Eq. 19 between input and output), max |K| after, max and mean displacement in AE
+  (the input's average edge length), symmetric Hausdorff distance to the input relative to the
+  input's bbox diagonal, and whether the topology was preserved.
 K is computed here, identically for both outputs: angle defect over the mixed Voronoi area
 (Meyer et al. 2003) at interior vertices (all incident edges shared by exactly two faces).
 Displacement is |v' - v| per vertex when the output keeps the input's vertices; when a filter
@@ -166,7 +166,7 @@ def run_one(path: str, label: str, filter_name: str, kwargs: dict) -> dict:
 
 
 def table(rows: list[dict]) -> str:
-    head = ("| mesh | run | time (s) | ratio_ABD (%) | max abs K before -> after | max disp (AE) | "
+    head = ("| mesh | run | time (s) | G_ABD reduction (%) | max abs K before -> after | max disp (AE) | "
             "mean disp (AE) | Hausdorff / diag | topology preserved |")
     out = [head, "|" + "---|" * 9]
     for r in rows:
@@ -196,6 +196,10 @@ def main() -> int:
         for label, name, kwargs in RUNS:
             rows.append(run_one(path, label, name, kwargs))
             print(f"{os.path.basename(path)}: {label} done", file=sys.stderr, flush=True)
+    print("# Side by side with MeshLab's Make mesh developable\n")
+    print("Made by `.venv/bin/python scripts/compare_developability.py > docs/comparison.md` "
+          "(one run, both filters in the same pymeshlab process; ours is the pymeshlab plugin, "
+          "which factorises with Eigen only). Columns: see the script's docstring.\n")
     print(table(rows))
     print("\nSettings: " + "; ".join(f"{label}: {kw or 'defaults'}" for label, _, kw in RUNS))
     print("* = remeshed: distance of each output vertex to the input surface instead of |v' - v|.")

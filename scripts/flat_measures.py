@@ -2,7 +2,7 @@
 
 Inputs: V (n,3) float positions, F (m,3) int faces, UV (m,6) per-face corner coordinates
 u0 v0 u1 v1 u2 v2 (wedge texture coordinates), or (n,2) per-vertex ones spread with wedge_uv().
-Outputs (DESIGN.md "Metrics", Flattening): per face the singular values σ1 ≥ σ2 of the 3D→2D
+Outputs (docs/design.md "Metrics", Flattening): per face the singular values σ1 ≥ σ2 of the 3D→2D
 map, signed σ2 < 0 where the face is flipped; length distortion max(σ1 − 1, 1 − σ2) per face,
 its largest value and its area-weighted mean (as fractions); the edge-length error |l₂/l₃ − 1|
 of every face edge; the total area ratio; the best uniform scale of a pattern.

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the MeshLab 2020.09 plugin (libfilter_quasidev.so) against the installed MeshLab and
-# installs it where MeshLab 2020.09 looks for plugins (MESHLAB.md §3):
+# installs it where MeshLab 2020.09 looks for plugins (docs/meshlab-notes.md "Where 2020.09
+# looks for plugins"):
 #   as root:     /usr/lib/x86_64-linux-gnu/meshlab/plugins/  (every user's meshlab/meshlabserver)
 #   as a user:   a private prefix (default ~/.local/opt/meshlab2020) holding COPIES of meshlab and
 #                meshlabserver (2020.09 only searches <dir of the real executable>/../lib/...), links
@@ -98,7 +99,8 @@ fi
 libdir="$prefix/lib/x86_64-linux-gnu/meshlab"
 mkdir -p "$prefix/bin" "$libdir/plugins"
 touch "$prefix/$MARKER"
-# Copies, not links: the plugin dir is derived from the resolved executable path (MESHLAB.md §3.1).
+# Copies, not links: the plugin dir is derived from the resolved executable path
+# (docs/meshlab-notes.md "Where 2020.09 looks for plugins").
 # Re-copied on every run so the prefix follows upgrades of the meshlab package.
 cp -f /usr/bin/meshlab /usr/bin/meshlabserver "$prefix/bin/"
 ln -sfn "$SYSTEM_LIB/libmeshlab-common.so" "$libdir/libmeshlab-common.so"

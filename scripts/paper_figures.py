@@ -168,8 +168,12 @@ def main():
         for (tol, r), paper in zip(trend, PAPER_TABLE2):
             obd_before = sum(p["before"]["obd"] for p in r["patches"])
             obd_after = sum(p["after"]["obd"] for p in r["patches"])
-            print("%-8s %12.2f%% / %5.2f%% %12.2f%% / %5.2f%% %8.4f AE / %7.4f units %10.2f / %5.2f" % (
-                paper[0], r["abd_reduction"], paper[1], 100 * (1 - obd_after / obd_before), paper[2],
+            # ratio_OBD needs target normals: patches on the angle-defect rows (auto on a draped
+            # garment) have none, so their OBD is 0 and the ratio is undefined ("—").
+            obd = ("%11.2f%%" % (100 * (1 - obd_after / obd_before)) if obd_before > 0
+                   else "%12s" % "—")
+            print("%-8s %12.2f%% / %5.2f%% %s / %5.2f%% %8.4f AE / %7.4f units %10.2f / %5.2f" % (
+                paper[0], r["abd_reduction"], paper[1], obd, paper[2],
                 r["total_after"]["max_disp"] / r["average_edge"], paper[3],
                 r["total_after"]["max_abs_k"], paper[4]))
         print()

@@ -44,7 +44,8 @@ DEFAULT_MESHES = [os.path.join(SHARED, f"{name}.ply") for name in
                   ("classic_spot_lowres_crane", "piecewise_wingnut_stein2018", "bowl_hemisphere_ipc")]
 MAX_ERRORS = (20, 30)
 SEAMS = ("fixed", "free")
-PIPELINE_MAX_ERROR = 30  # the pipeline's documented setting (README, segment_then_approximate.mlx)
+# the pipeline's documented setting (docs/usage.md, sample_meshes/segment_then_approximate.mlx)
+PIPELINE_MAX_ERROR = 30
 
 
 def quasidev(binary: str, *args: str) -> dict:

@@ -1,17 +1,23 @@
 #!/usr/bin/env bash
-# Installs everything the project needs on Debian 12 (idempotent; fast when already done):
-#   1. Debian packages for building (compiler, CMake, Qt5, Eigen, GLEW, SuiteSparse, GoogleTest,
-#      nanoflann, CLI11, nlohmann-json; clang and its libFuzzer for tests/cli/run_sanitizers.sh)
-#      and running (meshlab 2020.09, Xvfb, xdotool, ImageMagick, Mesa, python3-venv; debootstrap
-#      and pkgconf for the MeshLab 2025.07 GUI test; rsvg-convert for the README's pattern picture,
-#      scripts/flatten_compare.py);
-#   2. the MeshLab source trees whose headers the plugins compile against, from Debian's source
-#      packages (pinned by sha256), into third_party/meshlab-2020.09 and third_party/meshlab-2025.07;
-#   3. the Python venv .venv with every scripts/requirements-*.txt;
-#   4. scripts/setup_pymeshlab.sh if present (pymeshlab 2025.07 side);
-#   5. scripts/setup_sid_chroot.sh: the Debian sid chroot third_party/sid-chroot in which the
-#      MeshLab 2025.07 GUI test runs (made once, ~1 min and ~490 MB; skipped when complete).
-# Run as root (CI) or as a user with sudo. Fails loudly, naming the step that failed.
+# Installs what the project needs on Debian 12 (idempotent; fast when already done).
+#   scripts/setup.sh --demo   only what scripts/demo.sh needs:
+#     1. Debian packages to build the engine, the command and the MeshLab 2020.09 plugin (compiler,
+#        CMake, Qt5, Eigen, GLEW, SuiteSparse, nanoflann, CLI11, nlohmann-json) and to run it
+#        (meshlab 2020.09, Xvfb, Mesa, python3-venv);
+#     2. the MeshLab 2020.09 source tree whose headers the plugin compiles against, from Debian's
+#        source package (pinned by sha256), into third_party/meshlab-2020.09;
+#     3. the Python venv .venv with scripts/requirements-render.txt (the demo's picture).
+#   scripts/setup.sh          all of the above, plus what only the tests and the docs need:
+#     4. Debian packages: GoogleTest, clang and its libFuzzer (tests/cli/run_sanitizers.sh),
+#        xdotool and ImageMagick (GUI tests), debootstrap and pkgconf (the MeshLab 2025.07 GUI
+#        test), rsvg-convert (scripts/flatten_compare.py's pattern picture);
+#     5. the MeshLab 2025.07 source tree (third_party/meshlab-2025.07);
+#     6. every other scripts/requirements-*.txt into .venv (tests, docs site) and
+#        scripts/setup_pymeshlab.sh (the pymeshlab 2025.07 wheel);
+#     7. scripts/setup_sid_chroot.sh: the Debian sid chroot third_party/sid-chroot in which the
+#        MeshLab 2025.07 GUI test runs (made once, ~1 min and ~490 MB; skipped when complete).
+# Run as root (CI) or as a user with sudo. Fails loudly, naming the step that failed; says how
+# long each step took.
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -21,39 +27,57 @@ VENV="$ROOT/.venv"
 say() { echo "[setup] $*"; }
 die() { echo "[setup] FAILED: $*" >&2; exit 1; }
 
+DEMO_ONLY=0
+case "${1:-}" in
+  --demo) DEMO_ONLY=1 ;;
+  "") ;;
+  *) die "unknown option $1 (usage: scripts/setup.sh [--demo])" ;;
+esac
+
 if [ "$(id -u)" -eq 0 ]; then SUDO=(); else
   command -v sudo >/dev/null || die "not root and no sudo: run this script as root"
   SUDO=(sudo)
 fi
 
-# ---- 1. Debian packages ---------------------------------------------------------------------
-PACKAGES=(cmake g++ make ninja-build qtbase5-dev libqt5opengl5-dev libglew-dev
-          libeigen3-dev libsuitesparse-dev libopenblas0-pthread libgtest-dev libnanoflann-dev
-          libcli11-dev nlohmann-json3-dev
-          meshlab xvfb xauth xdotool imagemagick libgl1-mesa-dri python3-venv
-          ca-certificates debian-archive-keyring xz-utils clang libclang-rt-14-dev
-          debootstrap pkgconf librsvg2-bin)
-missing=()
-for p in "${PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
+# timed LABEL COMMAND...: runs the command and says how long it took.
+timed() {
+  local label="$1" t0=$SECONDS
+  shift
+  "$@"
+  say "$label: $((SECONDS - t0)) s"
+}
+
+# ---- Debian packages ------------------------------------------------------------------------
+# What the demo needs: build the engine, the command and the MeshLab 2020.09 plugin, and run it.
+DEMO_PACKAGES=(cmake g++ make qtbase5-dev libqt5opengl5-dev libglew-dev
+               libeigen3-dev libsuitesparse-dev libopenblas0-pthread libnanoflann-dev
+               libcli11-dev nlohmann-json3-dev
+               meshlab xvfb xauth libgl1-mesa-dri python3-venv
+               ca-certificates debian-archive-keyring xz-utils)
+# What only the tests need (see the header).
+TEST_PACKAGES=(ninja-build libgtest-dev xdotool imagemagick clang libclang-rt-14-dev
+               debootstrap pkgconf librsvg2-bin)
+install_packages() {
+  local missing=() p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    say "Debian packages: all $# present"
+    return
+  fi
   say "installing Debian packages: ${missing[*]}"
   "${SUDO[@]}" apt-get update || die "apt-get update"
   "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y \
       --no-install-recommends "${missing[@]}" || die "apt-get install ${missing[*]}"
-else
-  say "Debian packages: all ${#PACKAGES[@]} present"
-fi
+}
 
-# ---- 2. MeshLab sources from Debian's source packages ---------------------------------------
+# ---- MeshLab sources from Debian's source packages ------------------------------------------
 # name of the orig tarball | sha256 | apt source spec | target dir
-SOURCES=(
-  "meshlab_2020.09+dfsg1.orig.tar.xz|d6715352ff65caffdec0292858d4263eb0c3cbbf3b1e5c2e2bab218e3f234630|meshlab=2020.09+dfsg1-2|meshlab-2020.09"
-  "meshlab_2025.07~dfsg.orig.tar.xz|d22c98d362f2a284e481af8dbfc272b2222f5b9c67b3cf8bec57d1c3161886f4|meshlab=2025.07~dfsg-4|meshlab-2025.07"
-)
-mkdir -p "$THIRD"
-# A private deb-src list: the system's /etc/apt configuration stays untouched (MESHLAB.md §1).
+SOURCE_2020="meshlab_2020.09+dfsg1.orig.tar.xz|d6715352ff65caffdec0292858d4263eb0c3cbbf3b1e5c2e2bab218e3f234630|meshlab=2020.09+dfsg1-2|meshlab-2020.09"
+SOURCE_2025="meshlab_2025.07~dfsg.orig.tar.xz|d22c98d362f2a284e481af8dbfc272b2222f5b9c67b3cf8bec57d1c3161886f4|meshlab=2025.07~dfsg-4|meshlab-2025.07"
+# A private deb-src list: the system's /etc/apt configuration stays untouched
+# (docs/meshlab-notes.md, "MeshLab's sources").
 APTDIR="$THIRD/.apt"
 APT_OPTS=(-o "Dir::Etc::SourceParts=$APTDIR" -o "Dir::Etc::SourceList=/dev/null"
           -o "Dir::State::Lists=$APTDIR/lists" -o "Dir::Cache=$APTDIR/cache"
@@ -73,17 +97,19 @@ EOF
   apt-get "${APT_OPTS[@]}" update >/dev/null || die "apt-get update of the private deb-src list ($APTDIR)"
   apt_ready=1
 }
-for entry in "${SOURCES[@]}"; do
-  IFS='|' read -r tarball sha spec dir <<<"$entry"
+fetch_source() {
+  local tarball sha spec dir
+  IFS='|' read -r tarball sha spec dir <<<"$1"
+  mkdir -p "$THIRD"
   if [ -f "$THIRD/$dir/.sha256" ] && [ "$(cat "$THIRD/$dir/.sha256")" = "$sha" ]; then
     say "$dir: present (sha256 verified at extraction)"
-    continue
+    return
   fi
   if [ ! -f "$THIRD/$tarball" ] || ! echo "$sha  $THIRD/$tarball" | sha256sum -c --status; then
     prepare_source_apt
     say "downloading $spec from Debian's source packages"
-    # The sid .dsc may be 404 while the orig tarball is available (MESHLAB.md §1): only the
-    # orig tarball is needed, so the exit status is judged by its checksum below.
+    # The sid .dsc may be 404 while the orig tarball is available (docs/meshlab-notes.md): only
+    # the orig tarball is needed, so the exit status is judged by its checksum below.
     (cd "$THIRD" && apt-get "${APT_OPTS[@]}" source --download-only "$spec" >/dev/null 2>&1) || true
   fi
   [ -f "$THIRD/$tarball" ] || die "could not download $tarball ($spec) from deb.debian.org"
@@ -94,16 +120,15 @@ for entry in "${SOURCES[@]}"; do
   tar -xJf "$THIRD/$tarball" -C "$THIRD/$dir.tmp" --strip-components=1 || die "extracting $tarball"
   echo "$sha" > "$THIRD/$dir.tmp/.sha256"
   rm -rf "${THIRD:?}/$dir" && mv "$THIRD/$dir.tmp" "$THIRD/$dir"
-done
-[ -f "$THIRD/meshlab-2020.09/src/common/interfaces.h" ] || die "third_party/meshlab-2020.09 lacks src/common/interfaces.h"
+}
 
-# ---- 3. Python venv -------------------------------------------------------------------------
-if [ ! -x "$VENV/bin/python" ]; then
-  say "creating the Python venv $VENV"
-  python3 -m venv "$VENV" || die "python3 -m venv $VENV"
-fi
-shopt -s nullglob
-for req in "$ROOT"/scripts/requirements-*.txt; do
+# ---- Python venv ----------------------------------------------------------------------------
+pip_requirements() {
+  local req="$1" plan
+  if [ ! -x "$VENV/bin/python" ]; then
+    say "creating the Python venv $VENV"
+    python3 -m venv "$VENV" || die "python3 -m venv $VENV"
+  fi
   plan=$("$VENV/bin/python" -m pip install --disable-pip-version-check --dry-run -r "$req" 2>&1) \
     || die "pip cannot resolve ${req#"$ROOT"/}: $(tail -3 <<<"$plan")"
   if grep -q "Would install" <<<"$plan"; then
@@ -112,14 +137,26 @@ for req in "$ROOT"/scripts/requirements-*.txt; do
   else
     say "python requirements ${req#"$ROOT"/}: satisfied"
   fi
-done
+}
 
-# ---- 4. pymeshlab side ----------------------------------------------------------------------
-if [ -f "$ROOT/scripts/setup_pymeshlab.sh" ]; then
-  say "running scripts/setup_pymeshlab.sh"
-  bash "$ROOT/scripts/setup_pymeshlab.sh" || die "scripts/setup_pymeshlab.sh"
+# ---- 1-3: what the demo needs ---------------------------------------------------------------
+timed "Debian packages for the demo" install_packages "${DEMO_PACKAGES[@]}"
+timed "MeshLab 2020.09 source" fetch_source "$SOURCE_2020"
+[ -f "$THIRD/meshlab-2020.09/src/common/interfaces.h" ] || die "third_party/meshlab-2020.09 lacks src/common/interfaces.h"
+timed "Python venv for the demo" pip_requirements "$ROOT/scripts/requirements-render.txt"
+if [ $DEMO_ONLY -eq 1 ]; then
+  say "done (the demo's needs; scripts/setup.sh without --demo adds what the tests need)"
+  exit 0
 fi
-# ---- 5. the sid chroot with MeshLab 2025.07 ------------------------------------------------
-say "running scripts/setup_sid_chroot.sh"
-bash "$ROOT/scripts/setup_sid_chroot.sh" || die "scripts/setup_sid_chroot.sh"
+
+# ---- 4-7: what only the tests and the docs need ---------------------------------------------
+timed "Debian packages for the tests" install_packages "${TEST_PACKAGES[@]}"
+timed "MeshLab 2025.07 source" fetch_source "$SOURCE_2025"
+shopt -s nullglob
+for req in "$ROOT"/scripts/requirements-*.txt; do
+  [ "$req" = "$ROOT/scripts/requirements-render.txt" ] && continue
+  timed "Python ${req#"$ROOT"/}" pip_requirements "$req"
+done
+timed "pymeshlab (scripts/setup_pymeshlab.sh)" bash "$ROOT/scripts/setup_pymeshlab.sh"
+timed "sid chroot (scripts/setup_sid_chroot.sh)" bash "$ROOT/scripts/setup_sid_chroot.sh"
 say "done: build with  cmake -S $ROOT -B $ROOT/build -DCMAKE_BUILD_TYPE=Release && cmake --build $ROOT/build -j2"

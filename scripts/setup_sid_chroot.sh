@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Makes the Debian sid chroot in which the real MeshLab 2025.07 GUI runs for the tests
-# (tests/meshlab/test_gui_2025.py; MESHLAB.md §5b): Debian 12 ships only MeshLab 2020.09, sid ships
-# meshlab 2025.07~dfsg-4 (Qt 5). Called by scripts/setup.sh; can also be run alone (as root, or
+# (tests/meshlab/test_gui_2025.py; docs/meshlab-notes.md "The MeshLab 2025.07 GUI in a sid
+# chroot"): Debian 12 ships only MeshLab 2020.09, sid ships meshlab 2025.07~dfsg-4 (Qt 5). Called by scripts/setup.sh; can also be run alone (as root, or
 # it asks sudo when there is work to do).
 #
 #   debootstrap --variant=minbase sid, then apt-get install --no-install-recommends the pinned

@@ -5,8 +5,9 @@
 #    pymeshlab/lib/libmeshlab-common.so (scripts/setup_pymeshlab.sh installs the wheel into .venv)
 #    -> bin/pymeshlab/libfilter_quasidev.so. `pymeshlab.load_plugin()` accepts it (tests/pymeshlab).
 #  - meshlab2025: float / "2025.07" for the MeshLab 2025.07 application. No float 2025.07
-#    libmeshlab-common exists here, so it links a soname-only stub (MESHLAB.md §5.1), which
-#    gives the DT_NEEDED entry the application resolves at load time -> bin/meshlab2025/.
+#    libmeshlab-common exists here, so it links a soname-only stub (docs/meshlab-notes.md
+#    "The 2025.07 plugins"), which gives the DT_NEEDED entry the application resolves at load
+#    time -> bin/meshlab2025/.
 # What the wheel needs from a plugin (verified, see tests/pymeshlab/test_wheel_abi.py):
 #  DT_NEEDED libmeshlab-common.so (the host dlopens extensions RTLD_LOCAL), no other library the
 #  wheel lacks (so no libGLEW: the wheel ships libexternal-glew.so instead, and no libcholmod:

@@ -1,4 +1,4 @@
-// Developability and shape figures (DESIGN.md "Metrics"): angle defect, mixed Voronoi area,
+// Developability and shape figures (docs/design.md "Metrics"): angle defect, mixed Voronoi area,
 // K(v) (Eq. 18), OBD (Defs. 2–3), shape difference (Defs. 4–5), displacement.
 #include "common/metrics.h"
 

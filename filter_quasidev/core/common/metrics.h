@@ -1,4 +1,4 @@
-// The figures of DESIGN.md "Metrics": OBD (Defs. 2–3), discrete Gaussian curvature with the
+// The figures of docs/design.md "Metrics": OBD (Defs. 2–3), discrete Gaussian curvature with the
 // mixed Voronoi area (Eq. 18, Meyer et al. 2003), G_ABD, angle defect, shape difference
 // (Defs. 4–5), displacement.
 #pragma once
@@ -9,7 +9,7 @@
 
 namespace qd {
 
-// Figures of one set of faces/vertices at one moment (DESIGN.md "Metrics").
+// Figures of one set of faces/vertices at one moment (docs/design.md "Metrics").
 struct Figures {
   double g_abd = 0;          // Σ|K(v)| over owned interior vertices (Eq. 18)
   double angle_defect = 0;   // Σ|2π − Σθ| over the same vertices (density independent)

@@ -3,7 +3,7 @@
 // symbolic analysis is done on the first factorisation and reused, since a group's sparsity
 // pattern never changes. Back ends: CHOLMOD supernodal LLᵀ (SuiteSparse), Eigen's SimplicialLLT
 // and SimplicialLDLT. SolverKind::Auto takes SimplicialLDLT below kCholmodFromUnknowns unknowns
-// and CHOLMOD from there on (the crossover measured by bench/qd_bench, README, Performance), or
+// and CHOLMOD from there on (the crossover measured by bench/qd_bench: docs/performance.md), or
 // SimplicialLDLT always in a build without CHOLMOD. Measured with bench/qd_bench --grid N --
 // --max-iter 3 --method direct, three factorisations (CHOLMOD / SimplicialLDLT, ms): 675
 // unknowns 3.2 / 1.2, 1,386 3.9 / 4.1, 2,883 9.8 / 17.

@@ -1,4 +1,4 @@
-// Mesh checks (DESIGN.md "Bad input"): each says what is wrong and what to do. All O(n log n).
+// Mesh checks (docs/design.md "Bad input"): each says what is wrong and what to do. All O(n log n).
 #include "common/validate_mesh.h"
 
 #include <algorithm>

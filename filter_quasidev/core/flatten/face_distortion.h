@@ -1,4 +1,4 @@
-// How one face's 3D→2D map distorts it (DESIGN.md "Metrics", Flattening): the singular values
+// How one face's 3D→2D map distorts it (docs/design.md "Metrics", Flattening): the singular values
 // σ1 ≥ σ2 of its 2×2 Jacobian J (flat_triangles.h) are the largest and smallest stretch of any
 // direction in the face; 1 and 1 for an isometry.
 #pragma once

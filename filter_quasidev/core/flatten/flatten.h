@@ -1,8 +1,9 @@
-// The flattening's entry point (DESIGN.md "Beyond the paper": segment → approximate → flatten):
-// every patch of a mesh becomes a pattern piece, cut to a disk where it is not one, flattened
-// as rigidly as possible (ARAP, Liu et al. 2008), placed on one sheet at true scale, measured
-// (DESIGN.md "Metrics": Flattening) and drawn as a pattern for the SVG/DXF writers. A patch too
-// far from developable is flattened anyway, with its distortion, flips and overlaps reported.
+// The flattening's entry point (docs/design.md "Beyond the paper": segment → approximate →
+// flatten): every patch of a mesh becomes a pattern piece, cut to a disk where it is not one,
+// flattened as rigidly as possible (ARAP, Liu et al. 2008), placed on one sheet at true scale,
+// measured (docs/design.md "Metrics": Flattening) and drawn as a pattern for the SVG/DXF
+// writers. A patch too far from developable is flattened anyway, with its distortion, flips and
+// overlaps reported.
 #pragma once
 
 #include "flatten/flatten_problem.h"

@@ -1,4 +1,4 @@
-// Input of the flattening (DESIGN.md "Beyond the paper": flatten): one mesh, its patches and
+// Input of the flattening (docs/design.md "Beyond the paper": flatten): one mesh, its patches and
 // the parameters. Each patch becomes one pattern piece per edge-connected component.
 #pragma once
 

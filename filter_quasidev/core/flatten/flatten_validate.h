@@ -1,4 +1,4 @@
-// Checks of a flattening problem before any work (DESIGN.md "Bad input"): the mesh checks of
+// Checks of a flattening problem before any work (docs/design.md "Bad input"): the mesh checks of
 // the approximation (validate.h) and the flattening's own parameters. Throws qd::Error with a
 // message that says what was wrong and what to do.
 #pragma once

@@ -1,4 +1,4 @@
-// How far a flattened piece is from its 3D patch (DESIGN.md "Metrics", Flattening), and
+// How far a flattened piece is from its 3D patch (docs/design.md "Metrics", Flattening), and
 // whether it can be cut out as it is.
 #pragma once
 

@@ -1,5 +1,5 @@
 // Checks a SegmentProblem before any work: throws qd::Error with one line saying what was wrong
-// and what to do (DESIGN.md "Bad input"). Non-manifold edges and inconsistently oriented faces
+// and what to do (docs/design.md "Bad input"). Non-manifold edges and inconsistently oriented faces
 // are not errors: they are kept as patch borders (face_graph.h).
 #pragma once
 
