@@ -220,7 +220,7 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo, c
   const size_t nv = static_cast<size_t>(V.rows()), nf = static_cast<size_t>(F.rows());
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
   // The seams held and the patches too small to fit are those of the solve groups.
-  const SolveGroups solve = solve_groups(F, patch, patch_topo.boundary);
+  const SolveGroups solve = solve_groups(F, patch, patch_topo.boundary, params.seams == SeamMode::Free);
   const Topology topo = solve.merged.empty()
                             ? patch_topo
                             : analyse_topology(F, static_cast<int>(nv), solve.group);
@@ -246,13 +246,14 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo, c
     faces_of_group[solve.group[f]].push_back(static_cast<int>(f));
   }
   // One group per patch, its seams held (the paper). Free seams take three passes, each
-  // starting where the one before ended, so none can undo another (never-worse rule): each
-  // patch with its seams held (where Developability::Auto measures each patch's term, which
-  // the later passes keep), then all patches in one group (its one step scale is set by the
-  // worst patch, so it stalls early on draped garments), then each patch again moving its
-  // seam vertices (moved by one patch, seen by the next, so they stay shared). Measured on the
-  // shared garments, free seams then remove more than fixed ones (issue 11). With a total
-  // tolerance each pass moves a vertex only by what the earlier passes left of its budget.
+  // starting where the one before ended, so none can undo another (never-worse rule): all
+  // patches in one group (its one step scale is set by the worst patch, so it stalls early on
+  // draped garments; Developability::Auto races one term for all its patches), then each patch
+  // with its seams held (where Auto measures each patch's own term, which the last pass
+  // keeps), then each patch again moving its seam vertices (moved by one patch, seen by the
+  // next, so they stay shared). Measured on the shared garments, free seams then remove more
+  // than fixed ones (issue 11). With a total tolerance each pass moves a vertex only by what
+  // the earlier passes left of its budget. Patches are solved in solve groups (solve_groups.h).
   struct Pass {
     const char* name;                      // in the reports when there are several
     const std::vector<char>* constrained;  // the vertices no group of the pass moves
@@ -273,8 +274,8 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo, c
     return *std::find_if(passes.begin(), passes.end(), [gi](const Pass& p) { return gi < p.last; });
   };
   const bool free_seams = params.seams == SeamMode::Free;
-  add_pass("seams held", held, true);
   if (free_seams) add_pass("all patches at once", constrained, false);
+  add_pass("seams held", held, true);
   if (free_seams) add_pass("seams free", constrained, true);
 
   // Step 1 and Step 2 per group, pass by pass and round by round (solve_rounds.h): the groups
@@ -305,9 +306,10 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo, c
                                  group_progress);
       ++done;
     });
-    for (size_t gi : round)
-      for (const PatchFit& fit : runs[gi].fits)
-        if (fit.reason == TermReason::Measured) decided[fit.id] = fit.term;
+    if (p.per_group)  // the per-patch races decide for the later passes
+      for (size_t gi : round)
+        for (const PatchFit& fit : runs[gi].fits)
+          if (fit.reason == TermReason::Measured) decided[fit.id] = fit.term;
   };
   const auto keep = [&](size_t gi) {  // a group's result into r.V
     const GroupRun& run = runs[gi];

@@ -4,6 +4,8 @@
 #include <map>
 #include <tuple>
 
+#include "common/topology.h"
+
 namespace qd {
 namespace {
 
@@ -37,7 +39,7 @@ std::vector<EdgeFaces> edge_faces(const Triangles& F) {
 // One round: every group that is mostly seam joins its best neighbour, unless a group it
 // touches changed this round. False when none did.
 bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
-                 const std::vector<char>& boundary, std::vector<int>& group) {
+                 const std::vector<char>& boundary, bool mostly_seam, std::vector<int>& group) {
   const size_t nv = boundary.size();
   std::vector<std::vector<int>> at(nv);  // groups of each vertex's faces
   for (Eigen::Index f = 0; f < F.rows(); ++f)
@@ -47,6 +49,8 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
       if (std::find(a.begin(), a.end(), g) == a.end()) a.push_back(g);
     }
   std::map<int, size_t> total, interior;
+  std::map<int, int> faces;
+  for (int g : group) ++faces[g];
   std::map<int, std::map<int, int>> shared;
   for (size_t v = 0; v < nv; ++v) {
     for (int g : at[v]) {
@@ -67,7 +71,8 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
   std::map<int, int> into;  // group -> the group it joins this round
   std::map<int, char> touched;
   for (const auto& [g, n] : total) {
-    if (2 * interior[g] >= n || touched[g]) continue;
+    const bool joins = mostly_seam ? 2 * interior[g] < n : faces[g] < kMinPatchFaces;
+    if (!joins || touched[g]) continue;
     int best = -1, most = 0;
     for (const auto& [h, count] : shared[g]) {
       const auto it = alike.find(std::make_pair(std::min(g, h), std::max(g, h)));
@@ -87,13 +92,13 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
 }  // namespace
 
 SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
-                         const std::vector<char>& boundary) {
+                         const std::vector<char>& boundary, bool mostly_seam) {
   SolveGroups out;
   out.group = patch;
   if (std::adjacent_find(patch.begin(), patch.end(), std::not_equal_to<int>()) == patch.end())
     return out;  // one patch
   const std::vector<EdgeFaces> edges = edge_faces(F);
-  while (merge_round(F, edges, boundary, out.group)) {
+  while (merge_round(F, edges, boundary, mostly_seam, out.group)) {
   }
   std::map<int, PatchMerge> merged;
   for (size_t f = 0; f < patch.size(); ++f)

@@ -1,12 +1,13 @@
-// Which patches are solved together (beyond the paper). A patch most of whose vertices lie on
-// seams or the open boundary (fewer interior vertices than others: a small or thin panel) has
-// little that can move while its seams are held, and with fixed seams its curvature and that
-// of its neighbours' seams stays where it is. Such a patch joins the neighbouring solve group
-// with which it shares most vertices, across edges oriented alike on both sides, and the
-// seams inside a group are free like its other vertices; repeated until no group is left that
-// is mostly seam. The patch ids the user gave stay as they are in the output and the report.
-// On the shared shirt re-cut into 50 panels, fixed seams then removed 49 % of G_ABD instead of
-// 24 % (the shirt's own 5 panels: 72 %); docs/robustness.md.
+// Which patches are solved together (beyond the paper). With fixed seams, a patch of fewer
+// than kMinPatchFaces faces (too few to fit, and every vertex on its seam) would stay as it is;
+// it joins the neighbouring solve group with which it shares most vertices, and the seam
+// between them moves (the log names each). With free seams, every patch most of whose vertices
+// lie on seams or the open boundary (fewer interior vertices than others: a small or thin
+// panel) joins its neighbour the same way, so the seams inside a group get angle-defect rows
+// like its other vertices; on the shared shirt re-cut into 50 panels free seams then removed
+// 66 % of G_ABD instead of 41 % (its own 5 panels: 81 %; docs/robustness.md). Joins go across
+// edges oriented alike on both sides only, and repeat until no group qualifies. The patch ids
+// the user gave stay as they are in the output and the report.
 #pragma once
 
 #include <vector>
@@ -26,8 +27,9 @@ struct SolveGroups {
   std::vector<PatchMerge> merged;  // the patches solved in another's group, by patch id
 };
 
-// patch: patch id per face (one per face); boundary: per vertex, on an open boundary edge.
+// patch: patch id per face (one per face); boundary: per vertex, on an open boundary edge;
+// mostly_seam: join every patch mostly on seams (free seams), else only those too small to fit.
 SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
-                         const std::vector<char>& boundary);
+                         const std::vector<char>& boundary, bool mostly_seam);
 
 }  // namespace qd
