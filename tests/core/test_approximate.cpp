@@ -324,5 +324,22 @@ TEST(Approximate, StageTimesCountTheSolverWork) {
             r.time_ms * 1.01);  // one thread: the stages fit in the wall clock
 }
 
+// When little is removed the log says why: here the bumps' vertices are selected (held), so
+// most of the curvature lies where nothing moves, and the note gives that share.
+TEST(Approximate, LittleRemovedSaysTheCurvatureIsOnHeldVertices) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08);
+  p.params.tolerance = 0.2;
+  const std::vector<double> K = gaussian_curvature(vertex_angles(p.V, p.F), std::vector<char>(p.V.rows(), 1));
+  p.constrained.assign(static_cast<size_t>(p.V.rows()), 0);
+  for (size_t v = 0; v < K.size(); ++v) p.constrained[v] = std::abs(K[v]) > 0.05;
+  const Result r = approximate(p);
+  ASSERT_LT(r.abd_reduction, 50.0);
+  int notes = 0;
+  for (const std::string& line : r.log)
+    notes += line.rfind("note: little was removed", 0) == 0 &&
+             line.find("of the curvature lies on vertices that do not move") != std::string::npos;
+  EXPECT_EQ(notes, 1);
+}
+
 }  // namespace
 }  // namespace qd

@@ -116,4 +116,31 @@ std::string total_log_line(const Result& r) {
          format(" factorisation(s), %.0f ms", r.time_ms);
 }
 
+std::vector<std::string> advice(const Result& r, const Params& params, double held_share) {
+  std::vector<std::string> out;
+  if (r.abd_reduction >= 50.0) return out;
+  const std::string head = format("little was removed (%.1f%% of G_ABD): ", r.abd_reduction);
+  if (held_share >= 25.0)
+    out.push_back(head + format("%.0f%% of the curvature lies on vertices that do not move (", held_share) +
+                  (params.seams == SeamMode::Fixed ? "fixed seams, " : "") +
+                  (params.keep_boundary ? "the kept boundary, " : "") +
+                  "the selection); free seams or a free boundary can reach it");
+  for (const PatchReport& p : r.patches) {
+    const bool capped = p.stop_reason.find("maxIter reached") != std::string::npos;
+    if (capped && p.history.size() > static_cast<size_t>(kPlateauIterations)) {
+      const double then = p.history[p.history.size() - 1 - kPlateauIterations].figures.g_abd;
+      const double removed = then > 0 ? 100.0 * (then - p.history.back().figures.g_abd) / then : 0.0;
+      out.push_back(head + "patch " + std::to_string(p.id) +
+                    format(" stopped at maxIter while its last %.0f iterations still removed %.1f%% "
+                           "of its curvature: a larger maxIter goes further",
+                           kPlateauIterations, removed));
+    }
+  }
+  if (out.empty())
+    out.push_back(head + "the patches stopped where no step of their terms removes more within the "
+                         "tolerance (their lines give the candidates' figures); a larger tolerance or "
+                         "developability weight moves the surface further for more");
+  return out;
+}
+
 }  // namespace qd

@@ -30,4 +30,9 @@ std::string patch_log_line(const PatchReport& p, double ae);
 
 std::string total_log_line(const Result& r);
 
+// When the run removed less than half of the curvature: why, with the figures the engine has,
+// and what to try. held_share: percent of the input's G_ABD on interior vertices that no group
+// moved (fixed seams, the kept boundary, the selection).
+std::vector<std::string> advice(const Result& r, const Params& params, double held_share);
+
 }  // namespace qd

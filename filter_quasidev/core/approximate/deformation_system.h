@@ -1,6 +1,6 @@
 // The least-squares system of Step 2 (paper §5.2–5.4) for one group.
 //
-// Per face t = (v1, v2, v3) with target normal n_t, the 12 rows of Eq. (13) as DESIGN.md reads
+// Per face t = (v1, v2, v3) with target normal n_t, the 12 rows of Eq. (13) as docs/design.md reads
 // the garbled printed A_i:
 //   developability  w·n_tᵀ(v2'−v1') = 0,  w·n_tᵀ(v3'−v2') = 0,  w·n_tᵀ(v1'−v3') = 0
 //   shape           (v2'−v1') = (v2−v1),  (v3'−v1') = (v3−v1)          (Eq. 5)
@@ -18,7 +18,7 @@
 // factorised once and every iteration is one back substitution (Algorithm 1, steps 2.3–2.4);
 // re-projected or re-fitted targets change M, which is then factorised again numerically (the
 // analysis is reused). Conjugate gradients preconditioned by the previous factor were measured
-// as the alternative and cost more instructions at every size tried (README, Performance).
+// as the alternative and cost more instructions at every size tried (docs/performance.md).
 //
 // Large groups are solved without factorising M at all (SolveMethod::Iterative, issue 5):
 // conjugate gradients preconditioned by the frame split of frame_preconditioner.h, whose two
@@ -54,7 +54,7 @@
 namespace qd {
 
 constexpr long kIterativeFromUnknowns = 10000;  // SolveMethod::Auto: CG from here on (measured)
-constexpr double kCgTolerance = 1e-2;  // cut by the step limit anyway; 1e-4 bought nothing (README)
+constexpr double kCgTolerance = 1e-2;  // cut by the step limit anyway; 1e-4 bought nothing (docs/performance.md)
 constexpr int kCgIterations = 40;
 
 class DeformationSystem {

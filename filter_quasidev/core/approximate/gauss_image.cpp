@@ -69,7 +69,7 @@ GaussMoments gauss_moments(const std::vector<Vec3>& normals, const std::vector<d
     if (!std::isfinite(a) || a < 0)
       throw Error("face " + std::to_string(i) + " of the patch has an invalid area (" +
                   std::to_string(a) + "); repair the mesh (remove degenerate/NaN faces)");
-    if (a == 0) continue;  // zero-area samples weigh 0 (DESIGN Step 1.1)
+    if (a == 0) continue;  // zero-area samples weigh 0 (docs/design.md Step 1.1)
     const Vec3& n = normals[i];
     if (!n.allFinite() || std::abs(n.norm() - 1.0) > 1e-6)
       throw Error("face " + std::to_string(i) + " of the patch has no valid unit normal; "
@@ -95,7 +95,7 @@ bool fills_sphere(const GaussMoments& m) {
 
 bool is_point_like(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                    const GaussMoments& m) {
-  // Choice (DESIGN Step 1, "detect planar Gauss images"): the Gauss image is a point when the
+  // Choice (docs/design.md Step 1.3, "Planar Gauss images"): the Gauss image is a point when the
   // area-weighted angular spread about the mean normal is below 1° in every direction, or is
   // an isotropic blob (minor/major variance > 0.3, i.e. noise rather than a curve) below 6°.
   constexpr double kPointSpread = 1.0 * kDeg, kBlobSpread = 6.0 * kDeg, kIsotropy = 0.3;

@@ -1,4 +1,4 @@
-// User parameters of the quasi-developable approximation (DESIGN.md "The algorithm").
+// User parameters of the quasi-developable approximation (docs/design.md "The algorithm").
 // Lengths are in model units; adapters convert from multiples of the average edge length AE.
 #pragma once
 

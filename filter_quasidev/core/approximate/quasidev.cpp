@@ -432,8 +432,15 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo, c
                                                      r.total_before.g_abd
                                                : 0.0;
   }
+  double on_held = 0, all = 0;  // the input's |K| on interior vertices, and on those held
+  for (size_t v = 0; v < nv; ++v) {
+    all += std::abs(r.k_before[v]);
+    if (interior[v] && constrained[v]) on_held += std::abs(r.k_before[v]);
+  }
   r.time_ms = ms_since(t0);
   r.log.push_back(total_log_line(r));
+  for (const std::string& line : advice(r, params, all > 0 ? 100.0 * on_held / all : 0.0))
+    r.log.push_back("note: " + line);
   if (progress) progress(100, "done");
   return r;
 }

@@ -1,5 +1,5 @@
 // Ordering the skeleton pixels of the digital image into one curve (§5.1; the paper leaves
-// the ordering open, DESIGN Step 1.4 fixes it): neighbour graph -> minimum spanning tree ->
+// the ordering open, docs/design.md "The algorithm", Step 1.4, fixes it): neighbour graph -> minimum spanning tree ->
 // longest path (tree diameter) as the backbone, spurs dropped; on a θ-periodic image the loop
 // that winds once around θ is taken instead, giving a closed curve.
 //   order_skeleton: skeleton points (pixel units) -> ordered polyline (x unwrapped)

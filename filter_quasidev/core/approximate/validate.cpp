@@ -1,4 +1,4 @@
-// Checks of a Problem before any work (DESIGN.md "Bad input"): the mesh checks of
+// Checks of a Problem before any work (docs/design.md "Bad input"): the mesh checks of
 // common/validate_mesh.h and those of the approximation, in one order; each throws qd::Error
 // with one line saying what is wrong and what to do. All checks are O(n log n).
 #include "approximate/validate.h"
