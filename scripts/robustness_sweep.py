@@ -24,8 +24,11 @@ import subprocess
 import sys
 import tempfile
 
+import numpy as np
+
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mesh_family  # noqa: E402
+import plyio  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_QUASIDEV = os.path.join(ROOT, "build", "bin", "quasidev")
@@ -36,7 +39,19 @@ QUICK = dict(bases=list(mesh_family.BASES), amplitudes=[1, 3], wavelengths=[0.12
 SINGLE = ("curve", "defect", "both")
 
 
-def run(quasidev: str, mesh: str, term: str, extra: list[str], tmp: str) -> dict:
+def positions(path: str) -> np.ndarray:
+    ply = plyio.read_ply(path)
+    return np.column_stack([ply.get("vertex", k) for k in "xyz"]).astype(float)
+
+
+def flipped_faces(V0, V1, F) -> int:
+    """Faces whose normal turned against the input's (or vanished)."""
+    def cross(V):
+        return np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]])
+    return int(np.count_nonzero(np.einsum("ij,ij->i", cross(V0), cross(V1)) <= 0))
+
+
+def run(quasidev: str, mesh: str, term: str, extra: list[str], tmp: str, V, F) -> dict:
     out, rep = os.path.join(tmp, f"{term}.ply"), os.path.join(tmp, f"{term}.json")
     cmd = [quasidev, "approximate", mesh, out, "--developability", term, "--report", rep,
            "--quiet", "--no-progress", *extra]
@@ -47,18 +62,26 @@ def run(quasidev: str, mesh: str, term: str, extra: list[str], tmp: str) -> dict
     p = r["patches"][0]
     return {"reduction": r["abd_reduction"], "iterations": p["iterations"],
             "stop": p["stop_reason"], "max_move_ae": r["total_after"]["max_disp"] / r["average_edge"],
-            "chosen": p["developability"], "time_ms": r["time_ms"]}
+            "chosen": p["developability"], "time_ms": r["time_ms"],
+            "flipped": flipped_faces(V, positions(out), F)}
 
 
-def run_member(args, member: mesh_family.Member) -> dict:
+def run_member(quasidev: str, terms: list[str], extra: list[str], member: mesh_family.Member) -> dict:
     with tempfile.TemporaryDirectory() as tmp:
         mesh = os.path.join(tmp, "in.ply")
         V, F = mesh_family.make(member)
         mesh_family.write_ply(mesh, V, F, member.name)
-        row = {"member": member.name, "smooth": member.smooth, "faces": int(len(F))}
-        for term in args.terms:
-            row[term] = run(args.quasidev, mesh, term, args.extra, tmp)
+        row = {"member": member.name, "base": member.base, "amplitude": member.amplitude,
+               "smooth": member.smooth, "faces": int(len(F))}
+        for term in terms:
+            row[term] = run(quasidev, mesh, term, extra, tmp, V, F)
     return row
+
+
+def sweep(members, terms, quasidev=DEFAULT_QUASIDEV, extra=(), jobs=os.cpu_count() or 1) -> list[dict]:
+    """One row per member (in order): its figures under each term."""
+    with concurrent.futures.ThreadPoolExecutor(jobs) as pool:
+        return list(pool.map(lambda m: run_member(quasidev, list(terms), list(extra), m), members))
 
 
 def verdict(row: dict, margin: float, floor: float) -> str:
@@ -116,8 +139,7 @@ def main() -> int:
     members = [mesh_family.Member(b, a, w, j, int(r), int(s)) for b, a, w, j, r, s in itertools.product(
         axes["bases"], axes["amplitudes"], axes["wavelengths"], axes["jitters"], axes["resolutions"],
         axes["seeds"])]
-    with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-        rows = list(pool.map(lambda m: run_member(args, m), members))
+    rows = sweep(members, args.terms, args.quasidev, args.extra, args.jobs)
     lines = table(rows, args.terms, args.margin, args.smooth_floor)
     failed = [r for r in rows if verdict(r, args.margin, args.smooth_floor)]
     summary = f"{len(rows) - len(failed)} of {len(rows)} members pass"

@@ -40,7 +40,7 @@ Positions hold_folding_vertices(const GroupMesh& g, const Positions& current, co
   for (int round = 0; round < kFoldRounds; ++round) {
     bool held = false;
     for (Eigen::Index f = 0; f < g.solve_faces; ++f)
-      if (face_flipped(g.F, f, g.V0, step)) {
+      if (face_flipped(g.F, f, g.V_input, step)) {
         for (int c = 0; c < 3; ++c) step.row(g.F(f, c)) = current.row(g.F(f, c));
         held = true;
       }
@@ -149,7 +149,7 @@ bool Deformation::accept(const Positions& candidate, const std::string& label,
   int flips = 0;
   {
     StageTimer timer(out_.times.metrics);
-    flips = flipped_faces(g_.F, g_.V0, candidate);
+    flips = flipped_faces(g_.F, g_.V_input, candidate);
   }
   if (flips > 0) return refuse("flips " + std::to_string(flips) + " face(s)");
   VertexAngles angles;

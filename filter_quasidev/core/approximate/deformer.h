@@ -1,8 +1,8 @@
 // Step 2 of Algorithm 1 (paper §5.4) for one group, one iteration at a time: solve → clamp to
 // δ_err → accept, until a stop rule ends the run.
 //
-// Acceptance (the never-worse rule, beyond the paper): a candidate step that folds a face is
-// refused; one whose G_ABD exceeds the best iterate's by more than kRiseAllowance is refused.
+// Acceptance (the never-worse rule, beyond the paper): a candidate step that folds a face (its
+// normal turns against the engine's input one, GroupMesh::V_input) is refused; one whose G_ABD exceeds the best iterate's by more than kRiseAllowance is refused.
 // A refused step is shortened: with angle-defect rows, first with the vertices of its folding
 // faces held back, then halved down to kMinStepScale. The iteration is then solved again with
 // the developability weights (w of Eq. 8 and w_d) divided by kWeightBackoff, down to

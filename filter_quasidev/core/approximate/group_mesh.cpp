@@ -126,6 +126,7 @@ GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vecto
     g.fixed[l] = constrained[v] || !touched_by_group[l];
     if (interior[v] && (touched_by_group[l] || measured_ring[v])) g.owned.push_back(static_cast<int>(l));
   }
+  g.V_input = g.V0;  // run by itself; the engine gives its own input (quasidev.cpp)
   return g;
 }
 

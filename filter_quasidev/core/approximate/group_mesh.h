@@ -22,6 +22,8 @@ struct VertexFaces {
 
 struct GroupMesh {
   Positions V0;                     // positions when the group starts, local numbering
+  Positions V_input;                // the engine's input positions, local numbering: a face
+                                    // whose normal turns against its input one is folded
   Triangles F;                      // group faces (rows < solve_faces), then the ring faces
   Eigen::Index solve_faces = 0;
   Eigen::Index solve_vertices = 0;  // local vertices [0, solve_vertices) touch group faces

@@ -89,6 +89,8 @@ GroupRun run_group(const Positions& input, const Positions& V, const Triangles& 
   {
     StageTimer timer(setup_ms);
     run.group = extract_group(V, F, faces, patch, constrained, interior, incident, params);
+    for (size_t l = 0; l < run.group.global_vertex.size(); ++l)
+      run.group.V_input.row(static_cast<Eigen::Index>(l)) = input.row(run.group.global_vertex[l]);
     if (one_unit) std::fill(run.group.face_unit.begin(), run.group.face_unit.end(), run.group.face_patch.front());
     if (params.tolerance_mode == ToleranceMode::Total) spend_earlier_moves(run.group, input);
   }
@@ -460,6 +462,12 @@ Result approximate(const Problem& problem, const Progress& progress) {
     r.log.insert(r.log.begin(), std::string("note: the mesh has no patch ids and ") + plan.why +
                                     ", but it could not be split into patches (" + e.what() +
                                     "): solved as one patch");
+    return r;
+  }
+  if (std::all_of(split.patch.begin(), split.patch.end(), [](int id) { return id == 0; })) {
+    Result r = approximate_patches(problem, topo, progress);
+    r.log.insert(r.log.begin(), "note: the mesh has no patch ids and " + plan.why +
+                                    ", but the segmentation keeps it one patch");
     return r;
   }
   const double split_ms = ms_since(t0);
