@@ -2,12 +2,12 @@
 """Robustness sweep: `quasidev approximate` on a generated family (scripts/mesh_family.py).
 
 For every member (base x bump amplitude x wavelength x jitter x resolution x seed) it runs each
-developability term (--terms, default curve, defect, auto) from the same input with the same
+developability term (--terms, default curve, defect, both, auto) from the same input with the same
 options, reads the JSON report, and tabulates the G_ABD reduction, the iterations, the stop
 reason and the largest move (AE). A member passes when auto is within --margin percentage points
 of the best single term and, for smooth members (no jitter), removes at least --smooth-floor %.
 
-Writes OUT/robustness.md and OUT/robustness.json; exit status 1 when a member fails.
+Writes OUT/robustness_sweep.md and OUT/robustness_sweep.json; exit status 1 when a member fails.
 
 Usage: .venv/bin/python scripts/robustness_sweep.py [--quick] [--out DIR] [--quasidev PATH]
          [--bases ...] [--amplitudes ...] [--wavelengths ...] [--jitters ...]
@@ -33,7 +33,7 @@ import plyio  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_QUASIDEV = os.path.join(ROOT, "build", "bin", "quasidev")
 FULL = dict(bases=list(mesh_family.BASES), amplitudes=[0.5, 1, 2, 4], wavelengths=[0.08, 0.16],
-            jitters=[0, 0.05, 0.2], resolutions=[1, 2], seeds=[1])
+            jitters=[0, 0.05, 0.2], resolutions=[1, 2], seeds=[1])  # 240 members
 QUICK = dict(bases=list(mesh_family.BASES), amplitudes=[1, 3], wavelengths=[0.12],
              jitters=[0, 0.05, 0.2], resolutions=[1], seeds=[1])
 SINGLE = ("curve", "defect", "both")
@@ -127,7 +127,7 @@ def main() -> int:
     ap.add_argument("--quasidev", default=DEFAULT_QUASIDEV)
     ap.add_argument("--out", default=None, help="folder for robustness.md and .json")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
-    ap.add_argument("--terms", nargs="+", default=["curve", "defect", "auto"])
+    ap.add_argument("--terms", nargs="+", default=["curve", "defect", "both", "auto"])
     ap.add_argument("--margin", type=float, default=2.0, help="auto vs best single term (points)")
     ap.add_argument("--smooth-floor", type=float, default=90.0, help="auto on smooth members (%%)")
     for key, values in FULL.items():
@@ -143,14 +143,20 @@ def main() -> int:
     lines = table(rows, args.terms, args.margin, args.smooth_floor)
     failed = [r for r in rows if verdict(r, args.margin, args.smooth_floor)]
     summary = f"{len(rows) - len(failed)} of {len(rows)} members pass"
+    ratios = sorted(r["auto"]["time_ms"] / r[r["auto"]["chosen"]]["time_ms"] for r in rows
+                    if "auto" in r and "error" not in r["auto"] and r["auto"]["chosen"] in r
+                    and "error" not in r[r["auto"]["chosen"]] and r[r["auto"]["chosen"]]["time_ms"] > 0)
+    if ratios:
+        summary += (f"; auto's engine time over that of the term it kept, run alone: median "
+                    f"{ratios[len(ratios) // 2]:.2f}, worst {ratios[-1]:.2f}")
     print("\n".join(lines))
     print(summary)
     if args.out:
         os.makedirs(args.out, exist_ok=True)
         cmd = "scripts/robustness_sweep.py " + " ".join(sys.argv[1:])
-        with open(os.path.join(args.out, "robustness.md"), "w", encoding="utf-8") as f:
+        with open(os.path.join(args.out, "robustness_sweep.md"), "w", encoding="utf-8") as f:
             f.write(f"Made by `{cmd}`. {summary}.\n\n" + "\n".join(lines) + "\n")
-        with open(os.path.join(args.out, "robustness.json"), "w", encoding="utf-8") as f:
+        with open(os.path.join(args.out, "robustness_sweep.json"), "w", encoding="utf-8") as f:
             json.dump({"command": cmd, "rows": rows}, f, indent=1)
     return 1 if failed else 0
 
