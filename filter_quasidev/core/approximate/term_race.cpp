@@ -49,11 +49,14 @@ RaceOutcome race_terms(const std::vector<Term>& terms, const std::function<Defor
     for (size_t k = 0; k < runs.size(); ++k)
       if (active(k)) runs[k].step();
     if (progress) progress(static_cast<double>(runs[leader(runs, dropped)].iterations()) / max_iter);
-    // A candidate that has removed nothing stops once another has removed something.
+    // A candidate that has removed nothing stops once another has removed something, and from
+    // kFarBehindFrom on one far behind the leader.
     const size_t lead = leader(runs, dropped);
-    if (runs[lead].best_g_abd() < runs[lead].initial_g_abd())
+    const auto removed = [&](size_t k) { return runs[k].initial_g_abd() - runs[k].best_g_abd(); };
+    if (removed(lead) > 0)
       for (size_t k = 0; k < runs.size(); ++k)
-        if (!(runs[k].best_g_abd() < runs[k].initial_g_abd())) dropped[k] = 1;
+        if (!(removed(k) > 0) || (round >= kFarBehindFrom && removed(k) < kFarBehind * removed(lead)))
+          dropped[k] = 1;
     if (round == drop_worst_after && std::count(dropped.begin(), dropped.end(), 0) > 2)
       dropped[trailer(runs, dropped)] = 1;
     if (round == keep_leader_after) {

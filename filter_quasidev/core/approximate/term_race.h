@@ -5,8 +5,9 @@
 // stops, after kKeepLeaderShare all but the leader (least G_ABD; ties: least mean
 // displacement) stop, and the leader runs to its own stop. A
 // candidate that has removed nothing stops as soon as another has removed something (on draped
-// garments the curve targets remove nothing). A candidate that stops earlier by its own rule
-// stays in the comparison where it stopped. On
+// garments the curve targets remove nothing), and from round kFarBehindFrom on, one that has
+// removed less than kFarBehind of what the leader removed stops too. A candidate that stops
+// earlier by its own rule stays in the comparison where it stopped. On
 // the generated family of scripts/robustness_sweep.py this keeps the term that running every
 // candidate to its end would keep, at a fraction of the cost (docs/robustness.md has the
 // figures); the round counts are not fitted to any one mesh.
@@ -22,6 +23,8 @@ namespace qd {
 
 constexpr double kDropWorstShare = 0.1;  // at the default maxIter of 30: after 3 rounds
 constexpr double kKeepLeaderShare = 0.4;  // and after 12
+constexpr int kFarBehindFrom = 2;
+constexpr double kFarBehind = 0.25;
 
 // A candidate's figures, for the log and the report.
 struct CandidateFigures {
