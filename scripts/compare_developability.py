@@ -16,7 +16,7 @@ remeshed (vertex count changed) it is the distance of each output vertex to the 
 marked with '*'.
 
 Usage: .venv/bin/python scripts/compare_developability.py [--plugin SO] [--json OUT] [MESH.ply ...]
-Inputs default to /work/shared/meshes/*.ply and sample_meshes/*.ply.
+Inputs default to the meshes of $QD_SHARED_MESHES (when set) and tests/data/, then sample_meshes/*.ply.
 """
 from __future__ import annotations
 
@@ -31,8 +31,11 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PLUGIN = os.path.join(ROOT, "build", "bin", "pymeshlab", "libfilter_quasidev.so")
-DEFAULT_MESHES = sorted(glob.glob("/work/shared/meshes/*.ply")) + sorted(
-    glob.glob(os.path.join(ROOT, "sample_meshes", "*.ply")))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mesh_folders import SAMPLES, mesh_folders  # noqa: E402
+
+DEFAULT_MESHES = [p for folder in mesh_folders() for p in sorted(glob.glob(os.path.join(folder, "*.ply")))] + sorted(
+    glob.glob(os.path.join(SAMPLES, "*.ply")))
 
 OURS = "apply_coord_quasi_developable_approximation"
 THEIRS = "apply_coord_developability_of_mesh"

@@ -37,11 +37,12 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from tradeoff import (DEFAULT_QUASIDEV, SHARED, THEIRS_DEFAULT_EVALS, THEIRS_KEEP_TOPOLOGY,  # noqa: E402
+from mesh_folders import existing  # noqa: E402
+from tradeoff import (DEFAULT_QUASIDEV, THEIRS_DEFAULT_EVALS, THEIRS_KEEP_TOPOLOGY,  # noqa: E402
                       input_figures, load_pair, measure, run_meshlab)
 
-DEFAULT_MESHES = [os.path.join(SHARED, f"{name}.ply") for name in
-                  ("classic_spot_lowres_crane", "piecewise_wingnut_stein2018", "bowl_hemisphere_ipc")]
+DEFAULT_MESHES = existing(["classic_spot_lowres_crane.ply", "piecewise_wingnut_stein2018.ply",
+                           "bowl_hemisphere_ipc.ply"], "segment_pipeline.py")
 MAX_ERRORS = (20, 30)
 SEAMS = ("fixed", "free")
 PIPELINE_MAX_ERROR = 30  # the pipeline's documented setting (README, segment_then_approximate.mlx)

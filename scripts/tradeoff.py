@@ -44,16 +44,15 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from compare_developability import (_FAILED_MESHSETS, average_edge, gaussian_curvature,  # noqa: E402
                                     hausdorff_one_way)
+from mesh_folders import SAMPLES, existing  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SHARED = "/work/shared/meshes"
-DEFAULT_MESHES = [
-    os.path.join(SHARED, "garment_shirt_initial_diffavatar.ply"),
-    os.path.join(SHARED, "garment_tee_gcd_0AZKWACRSY.ply"),
-    os.path.join(SHARED, "garment_tee4panel_gpg.ply"),
-    os.path.join(SHARED, "lampshade_frustum_ipc.ply"),
-    os.path.join(ROOT, "sample_meshes", "bumpy_cone.ply"),
-    os.path.join(ROOT, "sample_meshes", "bumpy_cylinder.ply"),
+# The 3 garments and the lampshade: tests/data/ or $QD_SHARED_MESHES (scripts/mesh_folders.py);
+# those found in neither are skipped with a message.
+DEFAULT_MESHES = existing(["garment_shirt_initial_diffavatar.ply", "garment_tee_gcd_0AZKWACRSY.ply",
+                           "garment_tee4panel_gpg.ply", "lampshade_frustum_ipc.ply"], "tradeoff.py") + [
+    os.path.join(SAMPLES, "bumpy_cone.ply"),
+    os.path.join(SAMPLES, "bumpy_cylinder.ply"),
 ]
 DEFAULT_QUASIDEV = os.path.join(ROOT, "build", "bin", "quasidev")
 THEIRS = "apply_coord_developability_of_mesh"
@@ -346,7 +345,7 @@ def resolve_mesh(name: str) -> str:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--meshes", nargs="+", default=DEFAULT_MESHES,
-                    help="PLY paths or names from the default list (default: the 3 shared garments, "
+                    help="PLY paths or names from the default list (default: the 3 garments, "
                          "the lampshade, bumpy_cone and bumpy_cylinder)")
     ap.add_argument("--quick", action="store_true", help="2 points per series")
     ap.add_argument("--quasidev", default=DEFAULT_QUASIDEV, help="the quasidev command")
@@ -383,8 +382,9 @@ def main() -> int:
                 "(AE); time = the filter alone (quasidev's engine time, the pymeshlab call).\n\n")
         f.write(tab + "\n\n## Verdicts\n\n" + "\n".join(f"- {v}" for v in verdicts) + "\n")
     with open(os.path.join(args.out, "tradeoff.json"), "w") as f:
-        json.dump({"quick": args.quick, "quasidev": args.quasidev, "quasidev_version": version, "commit": commit, "quasidev_options": options,
-                   "meshes": paths, "rows": rows, "verdicts": verdicts}, f, indent=1)
+        json.dump({"quick": args.quick, "quasidev": os.path.relpath(args.quasidev, ROOT), "quasidev_version": version,
+                   "commit": commit, "quasidev_options": options,
+                   "meshes": [os.path.basename(p) for p in paths], "rows": rows, "verdicts": verdicts}, f, indent=1)
     print(tab)
     print()
     print("\n".join(verdicts))

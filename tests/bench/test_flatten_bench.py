@@ -1,4 +1,4 @@
-"""The flattening benchmark (bench/qd_flatten_bench) against ground truth: the shared
+"""The flattening benchmark (bench/qd_flatten_bench) against ground truth: tests/data/
 developable_crumpled_crane.ply is exactly developable and its per-corner texcoord is its exact
 flattening, so our pattern's edge lengths must match both the 3D edges and that pattern to 0.1 %.
 The SVG it writes must parse as XML and the DXF as group-code pairs. Timings are not asserted."""
@@ -13,10 +13,7 @@ import pytest
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD = pathlib.Path(os.environ.get("QD_BUILD_DIR", REPO / "build"))
 BENCH = BUILD / "bin" / "qd_flatten_bench"
-SHARED = pathlib.Path(os.environ.get("QD_SHARED_MESHES", REPO.parent / "shared" / "meshes"))
-if not SHARED.is_dir():
-    SHARED = pathlib.Path("/work/shared/meshes")
-CRANE = SHARED / "developable_crumpled_crane.ply"
+CRANE = REPO / "tests" / "data" / "developable_crumpled_crane.ply"
 
 
 def run(*args):
@@ -32,7 +29,6 @@ def dxf_groups(path):
     return [(int(lines[i]), lines[i + 1].strip()) for i in range(0, len(lines), 2)]
 
 
-@pytest.mark.skipif(not CRANE.exists(), reason=f"{CRANE} not present")
 def test_crane_flattens_to_its_known_pattern(tmp_path):
     r = run("--mesh", CRANE, "--svg", tmp_path / "crane.svg", "--dxf", tmp_path / "crane.dxf")
     assert r["pieces"] == 1

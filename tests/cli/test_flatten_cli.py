@@ -3,7 +3,7 @@ in model units, every other attribute kept bit for bit, the SVG and DXF patterns
 report's per-piece figures, and bad command lines or files that leave nothing written.
 
 Measures: scripts/flat_measures.py (numpy, independent of the engine). Meshes: sample_meshes/
-(cone_panels.ply is exactly developable) and, where present, the shared developer meshes.
+(cone_panels.ply is exactly developable) and tests/data/ (public meshes).
 """
 import json
 import pathlib
@@ -16,7 +16,7 @@ import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from plyfile import column, element, prop_type, read_ply, write_ply  # noqa: E402
-from test_quasidev_cli import BINARY, REPO, SHARED, assert_clean_failure, run  # noqa: E402
+from test_quasidev_cli import BINARY, DATA, REPO, assert_clean_failure, run  # noqa: E402
 
 sys.path.insert(0, str(REPO / "scripts"))
 import flat_measures  # noqa: E402
@@ -24,8 +24,8 @@ import flat_measures  # noqa: E402
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 
 CONE = REPO / "sample_meshes" / "cone_panels.ply"
-CRANE = SHARED / "developable_crumpled_crane.ply"
-SHIRT = SHARED / "garment_shirt_initial_diffavatar.ply"
+CRANE = DATA / "developable_crumpled_crane.ply"
+SHIRT = DATA / "garment_shirt_initial_diffavatar.ply"
 
 
 def flattened(path):
@@ -87,9 +87,8 @@ def test_a_tube_gets_one_cut_and_still_its_true_lengths(tmp_path):
     assert flat_measures.edge_length_errors(V, F, UV).max() < 1e-3
 
 
-@pytest.mark.skipif(not CRANE.exists(), reason="shared mesh missing")
 def test_crumpled_crane_flattens_to_its_known_pattern_lengths(tmp_path):
-    """The shared exactly developable crane: edge lengths and area to 0.1 %, and its flat
+    """The exactly developable crumpled crane: edge lengths and area to 0.1 %, and its flat
     pattern (its texture coordinates) has the same edge lengths as ours."""
     out, report, _ = flatten(tmp_path, CRANE)
     V, F, UV = flattened(out)
@@ -143,7 +142,7 @@ def test_everything_but_texcoord_quality_and_face_colour_is_kept_bit_for_bit(tmp
 
 
 def test_face_quality_is_the_signed_stretch_with_a_ramp_centred_on_green(tmp_path):
-    mesh = SHIRT if SHIRT.exists() else REPO / "sample_meshes" / "patches.ply"
+    mesh = SHIRT
     out, report, _ = flatten(tmp_path, mesh)
     V, F, UV = flattened(out)
     res, _ = read_ply(out)
@@ -163,7 +162,7 @@ def test_face_quality_is_the_signed_stretch_with_a_ramp_centred_on_green(tmp_pat
 
 
 def test_pieces_lie_side_by_side_without_overlap(tmp_path):
-    mesh = SHIRT if SHIRT.exists() else REPO / "sample_meshes" / "patches.ply"
+    mesh = SHIRT
     _, report, _ = flatten(tmp_path, mesh)
     boxes = [p["box"] for p in report["pieces"]]
     for i, a in enumerate(boxes):
@@ -173,7 +172,7 @@ def test_pieces_lie_side_by_side_without_overlap(tmp_path):
 
 
 def test_output_does_not_depend_on_the_number_of_threads(tmp_path):
-    mesh = SHIRT if SHIRT.exists() else REPO / "sample_meshes" / "patches.ply"
+    mesh = SHIRT
     one, _, _ = flatten(tmp_path, mesh, "--threads", "1", "--quiet", name="one")
     two, _, _ = flatten(tmp_path, mesh, "--threads", "2", "--quiet", name="two")
     assert one.read_bytes() == two.read_bytes()
@@ -299,9 +298,7 @@ def test_progress_quiet_and_obj_groups(tmp_path):
     assert r.returncode == 0 and r.stdout == "", r.stderr
     progress = [l for l in r.stderr.splitlines() if l.startswith("quasidev: ")]
     assert progress and progress[-1].startswith("quasidev: 100%"), r.stderr
-    obj = SHARED / "obj" / "garment_shirt_initial_diffavatar.obj"
-    if not obj.exists():
-        pytest.skip("shared OBJ missing")
+    obj = DATA / "garment_shirt_initial_diffavatar.obj"
     _, from_obj, _ = flatten(tmp_path, obj, "--quiet", name="obj")
     _, from_ply, _ = flatten(tmp_path, SHIRT, "--quiet", name="ply")
     assert from_obj["has_patch_ids"]

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import compare_developability as measures
-from pymeshlab_paths import FILTER, sample, shared
+from pymeshlab_paths import FILTER, data, sample
 
 FIGURE_KEYS = {"abd_reduction", "obd_reduction", "max_displacement", "max_displacement_ae",
                "mean_displacement", "mean_displacement_ae", "iterations", "factorizations",
@@ -135,7 +135,7 @@ def test_free_seams_move_seam_vertices(meshset):
 @pytest.mark.parametrize("name", ["developable_crumpled_crane.ply", "bowl_hemisphere_ipc.ply",
                                   "garment_shirt_initial_diffavatar.ply"])
 def test_shared_meshes_run_and_keep_connectivity(meshset, name):
-    ms = meshset(shared(name))
+    ms = meshset(data(name))
     V0, F0, fig, m = run(ms)
     assert np.array_equal(m.face_matrix(), F0)
     assert np.isfinite(m.vertex_matrix()).all()

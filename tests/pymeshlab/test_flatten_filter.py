@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import flat_measures
-from pymeshlab_paths import CLI, FAILED_MESHSETS, FLATTEN_FILTER, FILTER, require_file, sample, shared
+from pymeshlab_paths import CLI, FAILED_MESHSETS, FLATTEN_FILTER, FILTER, data, require_file, sample
 
 PIECE_LISTS = {"piece_patch", "piece_component", "piece_faces", "piece_vertices", "piece_cut",
                "piece_iterations", "piece_energy", "piece_max_distortion", "piece_mean_distortion",
@@ -53,8 +53,8 @@ def test_developable_cone_gets_texcoords_in_model_units(meshset):
     assert np.abs(m.face_scalar_array()).max() < 1e-3
 
 
-@pytest.mark.parametrize("path", [sample("patches.ply"), shared("garment_shirt_initial_diffavatar.ply"),
-                                  shared("lampshade_frustum_ipc.ply")])
+@pytest.mark.parametrize("path", [sample("patches.ply"), data("garment_shirt_initial_diffavatar.ply"),
+                                  data("lampshade_frustum_ipc.ply")])
 def test_dict_has_every_piece_figure_and_matches_the_command(meshset, tmp_path, path):
     ms = meshset(path)
     fig = ms.apply_filter(FLATTEN_FILTER)
