@@ -159,7 +159,6 @@ void approximate(const qd::cli::ApproximateOptions& o) {
       {o.output, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size()))}};
   if (!o.report.empty()) {
     const qd::cli::ReportContext context{o,
-                                         problem.params,
                                          static_cast<int>(mesh.positions.size()),
                                          static_cast<int>(mesh.triangles.size()),
                                          !mesh.patch.empty(),
@@ -202,16 +201,15 @@ void flatten(const qd::cli::FlattenOptions& o) {
                                                 !mesh.patch.empty(), mesh.notes};
     files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
   }
-  const std::string unit = o.unit == qd::cli::PatternUnit::Model ? "" : name_of(qd::cli::kPatternUnits, o.unit);
-  if (!o.svg.empty()) {
+  if (!o.settings.svg_file.empty()) {
     std::ostringstream svg;
-    qd::write_svg(svg, result.pattern, unit);
-    files.emplace_back(o.svg, svg.str());
+    qd::write_svg(svg, result.pattern, qd::params::svg_unit(o.settings));
+    files.emplace_back(o.settings.svg_file, svg.str());
   }
-  if (!o.dxf.empty()) {
+  if (!o.settings.dxf_file.empty()) {
     std::ostringstream dxf;
     qd::write_dxf(dxf, result.pattern);
-    files.emplace_back(o.dxf, dxf.str());
+    files.emplace_back(o.settings.dxf_file, dxf.str());
   }
   write_files(files);
   print_outcome(o, {}, result.log, mesh.notes);

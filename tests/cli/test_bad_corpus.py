@@ -24,7 +24,7 @@ WARNED = make_bad_corpus.warned_cases()
 # (subcommand, case, the files it writes besides OUTPUT)
 RUNS = [("approximate", c, ["--report"]) for c in CASES] + \
        [("segment", c, ["--report"]) for c in make_bad_corpus.segment_cases()] + \
-       [("flatten", c, ["--report", "--svg", "--dxf"]) for c in make_bad_corpus.flatten_cases()]
+       [("flatten", c, ["--report", "--svg-file", "--dxf-file"]) for c in make_bad_corpus.flatten_cases()]
 
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 

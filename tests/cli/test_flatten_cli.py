@@ -179,10 +179,11 @@ def test_output_does_not_depend_on_the_number_of_threads(tmp_path):
 
 
 def test_report_names_every_piece_figure(tmp_path):
-    _, report, r = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--max-iter", "7",
-                           "--tolerance", "0", "--gap", "0.5", "--notch-spacing", "0.3")
-    assert report["parameters"] == {"max_iter": 7, "tolerance": 0.0, "gap": 0.5, "notch_spacing": 0.3,
-                                    "solver": "auto", "threads": 0, "unit": "model"}
+    _, report, r = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--arap-max-iter", "7",
+                           "--arap-tolerance", "0", "--gap", "0.5", "--notch-spacing", "0.3")
+    assert report["parameters"] == {"arap_max_iter": 7, "arap_tolerance": 0.0, "gap": 0.5,
+                                    "notch_spacing": 0.3, "svg_file": "", "dxf_file": "", "unit": "model",
+                                    "solver": "auto", "threads": 0}
     assert report["faces"] == sum(p["faces"] for p in report["pieces"])
     for p, line in zip(report["pieces"], r.stdout.splitlines()):
         for key in ("patch", "component", "label", "faces", "vertices", "cut", "iterations",
@@ -201,7 +202,7 @@ def test_report_names_every_piece_figure(tmp_path):
 
 def test_svg_pattern_is_xml_with_every_piece_notches_and_a_scale_bar(tmp_path):
     svg = tmp_path / "p.svg"
-    _, report, _ = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--svg", svg, "--unit", "cm")
+    _, report, _ = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--svg-file", svg, "--unit", "cm")
     root = ET.parse(svg).getroot()
     ns = "{http://www.w3.org/2000/svg}"
     assert root.tag == f"{ns}svg" and root.get("width").endswith("cm")
@@ -220,7 +221,7 @@ def test_svg_pattern_is_xml_with_every_piece_notches_and_a_scale_bar(tmp_path):
 
 def test_dxf_pattern_reads_back_as_r12_polylines_per_patch(tmp_path):
     dxf = tmp_path / "p.dxf"
-    _, report, _ = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--dxf", dxf)
+    _, report, _ = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--dxf-file", dxf)
     pairs = dxf_pairs(dxf)
     assert pairs[-1] == (0, "EOF")
     assert (9, "$ACADVER") in pairs and pairs[pairs.index((9, "$ACADVER")) + 1] == (1, "AC1009")
@@ -241,25 +242,25 @@ def test_dxf_pattern_reads_back_as_r12_polylines_per_patch(tmp_path):
 
 
 @pytest.mark.parametrize("option,value,hint", [
-    ("--max-iter", "-1", "whole number from 0 to 100000"),
-    ("--max-iter", "2.5", "whole number"),
-    ("--tolerance", "1", "must be below 1"),
-    ("--tolerance", "-0.1", "must not be negative"),
+    ("--arap-max-iter", "-1", "whole number from 0 to 100000"),
+    ("--arap-max-iter", "2.5", "whole number"),
+    ("--arap-tolerance", "1", "must be below 1"),
+    ("--arap-tolerance", "-0.1", "must not be negative"),
     ("--gap", "nan", "expects a finite number"),
     ("--notch-spacing", "-2", "must not be negative"),
     ("--unit", "km", "model|mm|cm|in"),
-    ("--threads", "-1", "whole number from 0 (all cores)"),
+    ("--threads", "-1", "whole number from 0 to 1024"),
     ("--solver", "magic", "auto|cholmod|eigen-llt|eigen-ldlt"),
 ])
 def test_bad_option_names_option_value_and_writes_nothing(option, value, hint, tmp_path):
     out, svg = tmp_path / "out.ply", tmp_path / "p.svg"
-    r = run("flatten", CONE, out, "--svg", svg, option, value)
+    r = run("flatten", CONE, out, "--svg-file", svg, option, value)
     assert_clean_failure(r, out, status=2)
     assert option in r.stderr and value in r.stderr and hint in r.stderr, r.stderr
     assert not svg.exists()
 
 
-@pytest.mark.parametrize("clash", [["--svg", "OUT"], ["--dxf", "IN"], ["--svg", "X", "--dxf", "X"],
+@pytest.mark.parametrize("clash", [["--svg-file", "OUT"], ["--dxf-file", "IN"], ["--svg-file", "X", "--dxf-file", "X"],
                                    ["--report", "X", "--svg", "X"]])
 def test_two_outputs_in_one_file_are_refused(clash, tmp_path):
     out = tmp_path / "out.ply"
@@ -272,7 +273,7 @@ def test_two_outputs_in_one_file_are_refused(clash, tmp_path):
 def test_an_unwritable_pattern_leaves_every_file_as_it_was(tmp_path):
     out, report = tmp_path / "out.ply", tmp_path / "r.json"
     out.write_bytes(b"precious")
-    r = run("flatten", CONE, out, "--report", report, "--svg", tmp_path / "no" / "such" / "p.svg")
+    r = run("flatten", CONE, out, "--report", report, "--svg-file", tmp_path / "no" / "such" / "p.svg")
     assert r.returncode == 1 and r.stderr.count("\n") == 1, r.stderr
     assert "p.svg" in r.stderr
     assert out.read_bytes() == b"precious" and not report.exists()
@@ -284,11 +285,12 @@ def test_help_lists_flatten_and_its_defaults():
     assert re.search(r"^Subcommands:\napproximate\n.*\nflatten\n", top.stdout, re.M | re.S), top.stdout
     sub = run("flatten", "--help")
     assert sub.returncode == 0 and "Usage: quasidev flatten [OPTIONS] INPUT OUTPUT" in sub.stdout
-    for option, default in (("--max-iter N", "100"), ("--tolerance T", "0.0001"), ("--gap G", "0"),
-                            ("--notch-spacing S", "0"), ("--unit U", "model"), ("--threads N", "0")):
-        entry = re.search(rf"  {option} .*?(?=\n  -|\n\n)", sub.stdout, re.S).group(0)
-        assert f"(default {default})" in entry, entry
-    for option in ("--svg", "--dxf", "--report", "--progress", "--quiet", "--overwrite-input"):
+    for option, default in (("--arap-max-iter,--max-iter N", "100"), ("--arap-tolerance,--tolerance X", "0.0001"),
+                            ("--gap X", "0"), ("--notch-spacing X", "0"), ("--unit NAME", "model"),
+                            ("--threads N", "0")):
+        entry = re.search(rf"  {option}\s.*?(?=\n  -|\n\n)", sub.stdout, re.S).group(0)
+        assert f"default {default})" in " ".join(entry.split()), entry
+    for option in ("--svg-file", "--dxf-file", "--report", "--progress", "--quiet", "--overwrite-input"):
         assert option in sub.stdout
 
 

@@ -84,7 +84,7 @@ def test_success_keeps_order_adds_quality_and_colour(mesh, tmp_path):
     assert rep["average_edge"] > 0
     assert rep["patches"], "one entry per patch"
     for p in rep["patches"]:
-        for key in ("id", "faces", "vertices", "free_vertices", "tolerance", "target_kind",
+        for key in ("id", "faces", "vertices", "free_vertices", "tolerance_model", "tolerance_ae", "target_kind",
                     "fit_residual_deg", "iterations", "stop_reason", "before", "after",
                     "abd_reduction", "obd_reduction", "time_ms", "history"):
             assert key in p, key
@@ -111,7 +111,7 @@ def test_free_seams_remove_at_least_what_fixed_seams_remove_on_a_garment(tmp_pat
     figures = {}
     for seams in ("fixed", "free"):
         out, report = tmp_path / f"{seams}.ply", tmp_path / f"{seams}.json"
-        assert run(mesh, out, "--seams", seams, "--report", report, "--quiet").returncode == 0
+        assert run(mesh, out, "--seam-mode", seams, "--report", report, "--quiet").returncode == 0
         figures[seams] = json.loads(report.read_text())
         assert column(read_ply(out)[0], "face", "vertex_indices") == column(read_ply(mesh)[0], "face", "vertex_indices")
     assert figures["free"]["abd_reduction"] >= figures["fixed"]["abd_reduction"] > 60
@@ -133,7 +133,7 @@ def test_patches_whose_round_raises_a_patch_run_again_in_turn(tmp_path):
 def test_displacement_quality_equals_the_vertex_moves(tmp_path):
     mesh = SAMPLES[0]
     out = tmp_path / "out.ply"
-    assert run(mesh, out, "--quality", "displacement", "--no-color", "--quiet").returncode == 0
+    assert run(mesh, out, "--output-quality", "displacement", "--no-colorize", "--quiet").returncode == 0
     inp, _ = read_ply(mesh)
     res, _ = read_ply(out)
     assert not has(res, "vertex", "red")
@@ -153,7 +153,7 @@ def test_constrained_vertices_do_not_move(tmp_path):
     cfile = tmp_path / "fixed.txt"
     cfile.write_text("# every 7th vertex\n" + "\n".join(map(str, chosen)) + "\n")
     out, report = tmp_path / "out.ply", tmp_path / "r.json"
-    r = run(mesh, out, "--constraints", cfile, "--report", report, "--quiet")
+    r = run(mesh, out, "--constraints-file", cfile, "--report", report, "--quiet")
     assert r.returncode == 0, r.stderr
     res, _ = read_ply(out)
     for c in "xyz":
@@ -230,18 +230,29 @@ def test_every_ply_encoding_and_off_give_the_same_result(tmp_path):
 
 def test_tolerances_are_in_average_edge_units(tmp_path):
     mesh = REPO / "sample_meshes" / "patches.ply"
-    if not mesh.exists():
-        pytest.skip("sample with patches missing")
     report = tmp_path / "r.json"
-    r = run(mesh, tmp_path / "o.ply", "--tolerance", "0.5", "--patch-tolerance", "1=0.02",
+    r = run(mesh, tmp_path / "o.ply", "--tolerance-ae", "0.5", "--patch-tolerance-ae", "1=0.02",
             "--report", report, "--quiet")
     assert r.returncode == 0, r.stderr
     rep = json.loads(report.read_text())
     ae = rep["average_edge"]
+    assert rep["parameters"]["tolerance_ae"] == 0.5 and rep["parameters"]["patch_tolerance_ae"] == "1=0.02"
     for p in rep["patches"]:
         expected = 0.02 if p["id"] == 1 else 0.5
-        assert p["tolerance"] == pytest.approx(expected * ae, rel=1e-12), p["id"]
+        assert p["tolerance_model"] == pytest.approx(expected * ae, rel=1e-12), p["id"]
+        assert p["tolerance_ae"] == pytest.approx(expected, rel=1e-12), p["id"]
         assert p["after"]["max_disp"] <= 10 * 0.5 * ae  # at most max_iter steps of δ_err
+
+
+def test_tolerance_in_model_units_replaces_the_one_in_ae(tmp_path):
+    mesh = REPO / "sample_meshes" / "patches.ply"
+    report = tmp_path / "r.json"
+    r = run(mesh, tmp_path / "o.ply", "--tolerance-model", "0.01", "--report", report, "--quiet")
+    assert r.returncode == 0, r.stderr
+    rep = json.loads(report.read_text())
+    assert rep["parameters"]["tolerance_model"] == 0.01
+    assert all(p["tolerance_model"] == 0.01 for p in rep["patches"])
+    assert rep["total_after"]["max_disp"] <= 10 * 0.01 * (1 + 1e-9)
 
 
 def test_progress_lines_on_request(tmp_path):
@@ -258,10 +269,10 @@ def test_progress_lines_on_request(tmp_path):
 def test_help_and_version():
     r = run("--help")
     assert r.returncode == 0
-    for opt in ("--report", "--tolerance", "--tolerance-mode", "--max-iter", "--seams",
-                "--keep-boundary", "--free-boundary", "--weight", "--anchor", "--targets",
-                "--stop-abd", "--stop-obd", "--patch-tolerance", "--constraints", "--quality",
-                "--no-color", "--progress", "--quiet", "--version"):
+    for opt in ("--report", "--tolerance-ae", "--tolerance-model", "--tolerance-mode", "--max-iter",
+                "--seam-mode", "--keep-boundary", "--no-keep-boundary", "--weight", "--anchor",
+                "--target-mode", "--stop-abd", "--stop-obd", "--patch-tolerance-ae", "--constraints-file",
+                "--output-quality", "--no-colorize", "--progress", "--quiet", "--version"):
         assert opt in r.stdout, opt
     assert "default" in r.stdout
     r = run("--version")
@@ -325,15 +336,16 @@ def test_bad_input_fails_cleanly(name, existing_output, tmp_path):
 
 BAD_ARGS = {
     "unknown_option": ["--frobnicate"],
-    "negative_tolerance": ["--tolerance", "-1"],
-    "zero_tolerance": ["--tolerance", "0"],
+    "negative_tolerance": ["--tolerance-ae", "-1"],
+    "zero_tolerance": ["--tolerance-ae", "0"],
+    "negative_model_tolerance": ["--tolerance-model", "-0.1"],
     "zero_iterations": ["--max-iter", "0"],
     "nan_weight": ["--weight", "nan"],
-    "bad_seams": ["--seams", "sometimes"],
+    "bad_seams": ["--seam-mode", "sometimes"],
     "bad_developability": ["--developability", "paper"],
     "zero_defect_weight": ["--defect-weight", "0"],
     "missing_value": ["--report"],
-    "unknown_patch": ["--patch-tolerance", "123456=0.1"],
+    "unknown_patch": ["--patch-tolerance-ae", "123456=0.1"],
 }
 
 
@@ -385,7 +397,7 @@ def test_bad_constraint_file(tmp_path):
     cfile = tmp_path / "c.txt"
     cfile.write_text("0\n99999999\n")
     out = tmp_path / "out.ply"
-    r = run(mesh, out, "--constraints", cfile)
+    r = run(mesh, out, "--constraints-file", cfile)
     assert_clean_failure(r, out, status=1)
     assert "line 2" in r.stderr
 

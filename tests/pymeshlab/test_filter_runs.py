@@ -99,11 +99,15 @@ def test_displacement_quality_without_colour(meshset):
 
 
 def test_total_tolerance_caps_every_move(meshset):
+    """In AE (tolerance_ae) and in model units (tolerance_model): the same bound."""
     ms = meshset(sample("bumpy_cylinder.ply"))
-    ae = ms.filter_parameter_values(FILTER)["tolerance"]
+    V0, _, fig, m = run(ms, tolerance_ae=0.25, tolerance_mode="total")
+    d = np.linalg.norm(m.vertex_matrix() - V0, axis=1)
+    assert 0 < d.max() <= 0.25 * fig["average_edge"] * (1 + 1e-6)
     # pymeshlab passes float keyword arguments as 32-bit floats: bound by what the filter got.
-    tol = float(np.float32(0.25 * ae))
-    V0, _, fig, m = run(ms, tolerance=tol, tolerance_mode="total")
+    tol = float(np.float32(0.25 * fig["average_edge"]))
+    ms = meshset(sample("bumpy_cylinder.ply"))
+    V0, _, fig, m = run(ms, tolerance_model=tol, tolerance_mode="total")
     d = np.linalg.norm(m.vertex_matrix() - V0, axis=1)
     assert 0 < d.max() <= tol * (1 + 1e-9)
 

@@ -23,8 +23,8 @@ CASES = [
     (sample("patches.ply"),
      {"seam_mode": "free", "target_mode": "refit", "tolerance_mode": "total", "max_iter": 5,
       "weight": 20.0, "anchor": 5.0, "keep_boundary": False},
-     ["--seams", "free", "--targets", "refit", "--tolerance-mode", "total", "--max-iter", "5",
-      "--weight", "20", "--anchor", "5", "--free-boundary"]),
+     ["--seam-mode", "free", "--target-mode", "refit", "--tolerance-mode", "total", "--max-iter", "5",
+      "--weight", "20", "--anchor", "5", "--no-keep-boundary"]),
     (data("developable_crumpled_crane.ply"), {}, []),
     (data("bowl_hemisphere_ipc.ply"), {}, []),
     (data("garment_shirt_initial_diffavatar.ply"), {}, []),  # 5 patches
@@ -61,9 +61,8 @@ def test_plugin_moves_vertices_as_the_cli_predicts(meshset, tmp_path, path, kwar
         path = with_unreferenced_vertices(tmp_path)
     ms = meshset(path)
     V0 = ms.current_mesh().vertex_matrix().copy()
-    # tolerance 0 = 1 AE in double, as the CLI's default; pymeshlab's own default is AE as float32.
     # pymeshlab passes float parameters as float32: the command gets the same defect weight.
-    fig = ms.apply_filter(FILTER, **{"tolerance": 0.0, **kwargs})
+    fig = ms.apply_filter(FILTER, **kwargs)
     options = [*options, "--defect-weight", repr(float(np.float32(0.03)))]
     V_plugin = ms.current_mesh().vertex_matrix()
     cli_output, report = run_cli(path, options, tmp_path)

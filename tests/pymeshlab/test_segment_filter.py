@@ -76,7 +76,7 @@ def test_refused_run_leaves_the_mesh_unchanged(pymeshlab_with_plugin, meshset):
     with pytest.raises(pymeshlab_with_plugin.PyMeshLabException) as info:
         ms.apply_filter(SEGMENT_FILTER, max_error_deg=0.0)
     assert str(info.value).startswith(f"Failed to apply filter: {SEGMENT_FILTER}")
-    assert "largest fit error" in str(info.value)
+    assert "Largest fit error (deg) (max_error_deg) must be greater than 0, got 0" in str(info.value)
     m = ms.current_mesh()
     np.testing.assert_array_equal(m.vertex_matrix(), before[0])
     np.testing.assert_array_equal(m.face_scalar_array(), before[1])
