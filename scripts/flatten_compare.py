@@ -91,7 +91,7 @@ def run(*args) -> None:
 def flatten(quasidev: Path, mesh: Path, work: Path, name: str) -> tuple[np.ndarray, dict, Path]:
     """(wedge UV, report, SVG path) of `quasidev flatten` on mesh."""
     out, report, svg = work / f"{name}.flat.ply", work / f"{name}.flat.json", work / f"{name}.svg"
-    run(quasidev, "flatten", mesh, out, "--report", report, "--svg", svg, "--quiet")
+    run(quasidev, "flatten", mesh, out, "--report", report, "--svg-file", svg, "--quiet")
     uv = np.asarray(read_ply(out).get("face", "texcoord"), float)
     return uv, json.loads(report.read_text()), svg
 

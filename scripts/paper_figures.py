@@ -74,14 +74,14 @@ def max_seam_move(before, after):
 
 def lampshade(build):
     """Paper Fig. 4 / Table 1: curved cone-like lampshade, δ_err = 10·AE, boundary fixed."""
-    report, _, _ = quasidev(build, os.path.join(SAMPLES, "lampshade.ply"), "--tolerance", 10,
+    report, _, _ = quasidev(build, os.path.join(SAMPLES, "lampshade.ply"), "--tolerance-ae", 10,
                             "--keep-boundary")
     return report
 
 
 def bumps(build, name):
     """A developable surface with smooth bumps: tolerance 1·AE, 10 iterations."""
-    report, _, _ = quasidev(build, os.path.join(SAMPLES, name), "--tolerance", 1, "--max-iter", 10)
+    report, _, _ = quasidev(build, os.path.join(SAMPLES, name), "--tolerance-ae", 1, "--max-iter", 10)
     return report
 
 
@@ -93,14 +93,14 @@ def garment(build, path):
 
 def tolerance_trend(build, mesh):
     """Paper Table 2: δ_err = AE, 0.1·AE, 0.02·AE."""
-    return [(tol, quasidev(build, mesh, "--tolerance", tol)[0]) for tol in (1, 0.1, 0.02)]
+    return [(tol, quasidev(build, mesh, "--tolerance-ae", tol)[0]) for tol in (1, 0.1, 0.02)]
 
 
 def seams(build):
     """Multi-patch mesh, fixed vs free seams."""
     mesh = os.path.join(SAMPLES, "patches.ply")
-    fixed, before, after_fixed = quasidev(build, mesh, "--seams", "fixed")
-    free, _, after_free = quasidev(build, mesh, "--seams", "free")
+    fixed, before, after_fixed = quasidev(build, mesh, "--seam-mode", "fixed")
+    free, _, after_free = quasidev(build, mesh, "--seam-mode", "free")
     return fixed, free, max_seam_move(before, after_fixed), max_seam_move(before, after_free), \
         before, after_free
 

@@ -5,9 +5,9 @@ For each mesh, sweeps
   * ours, through the `quasidev` command (one process per point). With `--developability` and
     `--defect-weight` in `quasidev --help`: `--defect-weight` (log-spaced) with `--developability
     auto`; `--weight` with `--developability curve` (the paper's method) as a separate series; and
-    `--tolerance` with `--tolerance-mode total` and `--developability auto`. Without them: the
-    curve method's `--weight`, `--tolerance` (step mode, the default: caps each iteration's move)
-    and `--tolerance` with `--tolerance-mode total`. The total mode caps the whole move, so only it
+    `--tolerance-ae` with `--tolerance-mode total` and `--developability auto`. Without them: the
+    curve method's `--weight`, `--tolerance-ae` (step mode, the default: caps each iteration's move)
+    and `--tolerance-ae` with `--tolerance-mode total`. The total mode caps the whole move, so only it
     reaches the small distances where MeshLab's points lie;
   * MeshLab's own apply_coord_developability_of_mesh (Stein, Grinspun, Crane 2018) in pymeshlab with
     edgeflips=False, edgecollapses=False (topology kept), over `maxfunevals`;
@@ -72,7 +72,7 @@ STYLE = {
     "ours, --defect-weight": ("ours", "o", "tab:blue"),
     "ours, curve --weight": ("ours", "s", "tab:green"),
     "ours, --weight": ("ours", "o", "tab:blue"),
-    "ours, --tolerance": ("ours", "s", "tab:green"),
+    "ours, --tolerance-ae": ("ours", "s", "tab:green"),
     "ours, --tolerance-mode total": ("ours", "D", "tab:purple"),
     "ours, default": ("ours", "*", "tab:blue"),
     "MeshLab, maxfunevals": ("meshlab", "^", "tab:red"),
@@ -100,13 +100,13 @@ def plan(options: set[str], quick: bool) -> list[tuple[str, str, list[str] | dic
         points += [("ours, curve --weight", f"curve, weight {w:g}",
                     ["--developability", "curve", "--weight", f"{w:g}"]) for w in pick["weight"]]
         points += [("ours, --tolerance-mode total", f"auto, total tolerance {t:g} AE",
-                    [*auto, *total, "--tolerance", f"{t:g}"]) for t in pick["tolerance"]]
+                    [*auto, *total, "--tolerance-ae", f"{t:g}"]) for t in pick["tolerance"]]
     else:
         points += [("ours, --weight", f"weight {w:g}", ["--weight", f"{w:g}"]) for w in pick["weight"]]
-        points += [("ours, --tolerance", f"tolerance {t:g} AE", ["--tolerance", f"{t:g}"])
+        points += [("ours, --tolerance-ae", f"tolerance {t:g} AE", ["--tolerance-ae", f"{t:g}"])
                    for t in pick["tolerance"]]
         points += [("ours, --tolerance-mode total", f"total tolerance {t:g} AE",
-                    [*total, "--tolerance", f"{t:g}"]) for t in pick["tolerance"]]
+                    [*total, "--tolerance-ae", f"{t:g}"]) for t in pick["tolerance"]]
     points.append(("MeshLab, default (no remeshing)", f"maxfunevals {THEIRS_DEFAULT_EVALS} (default)",
                    dict(THEIRS_KEEP_TOPOLOGY)))
     points += [("MeshLab, maxfunevals", f"maxfunevals {n}", {"maxfunevals": n, **THEIRS_KEEP_TOPOLOGY})
@@ -367,8 +367,8 @@ def main() -> int:
     if commit and subprocess.run(["git", "-C", ROOT, "diff", "--quiet", "HEAD", "--", "filter_quasidev"]).returncode:
         commit += " with uncommitted engine changes"
     mode = ("--developability auto with --defect-weight, --developability curve with --weight, and "
-            "--developability auto with --tolerance-mode total and --tolerance"
-            if "--defect-weight" in options else "the curve method's --weight, --tolerance, and --tolerance with --tolerance-mode total")
+            "--developability auto with --tolerance-mode total and --tolerance-ae"
+            if "--defect-weight" in options else "the curve method's --weight, --tolerance-ae, and --tolerance-ae with --tolerance-mode total")
     with open(os.path.join(args.out, "tradeoff.md"), "w") as f:
         f.write("# Trade-off: curvature removed against surface moved\n\n"
                 f"Made by `scripts/tradeoff.py{' --quick' if args.quick else ''}` "

@@ -38,7 +38,7 @@ def test_one_patch_figures_hang_together():
 
 
 def test_patches_come_from_face_quality_and_fixed_targets_factor_once():
-    r = run("--grid", "3000", "--patches", "4", "--runs", "1", "--", "--targets", "fixed")
+    r = run("--grid", "3000", "--patches", "4", "--runs", "1", "--", "--target-mode", "fixed")
     assert r["patches"] == 4
     assert r["factorizations"] <= 4  # one per patch
 

@@ -30,7 +30,7 @@ def dxf_groups(path):
 
 
 def test_crane_flattens_to_its_known_pattern(tmp_path):
-    r = run("--mesh", CRANE, "--svg", tmp_path / "crane.svg", "--dxf", tmp_path / "crane.dxf")
+    r = run("--mesh", CRANE, "--svg-file", tmp_path / "crane.svg", "--dxf-file", tmp_path / "crane.dxf")
     assert r["pieces"] == 1
     assert r["max_edge_error_vs_3d"] < 1e-3
     assert r["max_edge_error_vs_texcoord"] < 1e-3
@@ -44,7 +44,7 @@ def test_crane_flattens_to_its_known_pattern(tmp_path):
 
 
 def test_patches_of_a_sheet_become_pieces_that_parse(tmp_path):
-    r = run("--grid", "20000", "--patches", "4", "--svg", tmp_path / "p.svg", "--dxf", tmp_path / "p.dxf",
+    r = run("--grid", "20000", "--patches", "4", "--svg-file", tmp_path / "p.svg", "--dxf-file", tmp_path / "p.dxf",
             "--unit", "cm")
     assert r["pieces"] == 4
     assert r["max_edge_error_vs_3d"] < 0.05  # a bumpy sheet: near-developable, not exactly
