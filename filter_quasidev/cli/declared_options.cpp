@@ -61,6 +61,12 @@ params::Value declared_value(const params::ParamInfo& p, const std::string& opti
   return text;
 }
 
+std::string option_names(const std::string& spelling, const std::vector<std::string>& older) {
+  std::string names = spelling;
+  for (const std::string& o : older) names += "," + o;
+  return names;
+}
+
 std::string value_name(const params::ParamInfo& p) {
   switch (p.type) {
     case params::Type::Real:

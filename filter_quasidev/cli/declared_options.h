@@ -20,6 +20,9 @@ namespace qd::cli {
 params::Value declared_value(const params::ParamInfo& p, const std::string& option,
                              const std::string& text);
 
+// CLI11's name list of an option: its spelling, then its older ones ("--a,--b").
+std::string option_names(const std::string& spelling, const std::vector<std::string>& older);
+
 // How --help shows the value of parameter p ("X", "N", "NAME", "ID=X[,ID=X...]", "FILE.svg").
 std::string value_name(const params::ParamInfo& p);
 
@@ -34,22 +37,16 @@ void add_declared_options(CLI::App& job, const std::vector<params::Param<S>>& de
   for (const params::Param<S>& p : declared) {
     if (!(p.fronts & params::kCommand)) continue;
     const std::string option = params::option_name(p.name);
-    const auto names = [&option](const std::vector<std::string>& aliases,
-                                 const std::string& first) {
-      std::string joined = first;
-      for (const std::string& a : aliases) joined += "," + a;
-      return joined;
-    };
     if (p.type == params::Type::Boolean) {
       const bool on = std::get<double>(p.default_value) != 0;
-      flag(job, names(p.aliases, option), declared_help(p),
+      flag(job, option_names(option, p.aliases), declared_help(p),
            [&p, &settings] { p.set(settings, 1.0); });
-      flag(job, names(p.off_aliases, "--no-" + option.substr(2)),
+      flag(job, option_names("--no-" + option.substr(2), p.off_aliases),
            "the opposite of " + option + (on ? "" : " (default)"),
            [&p, &settings] { p.set(settings, 0.0); });
       continue;
     }
-    valued(job, names(p.aliases, option), value_name(p), declared_help(p),
+    valued(job, option_names(option, p.aliases), value_name(p), declared_help(p),
            [&p, &settings, option](const std::string& text) {
              const params::Value value = declared_value(p, option, text);
              try {
