@@ -141,7 +141,7 @@ void run(const Args& a) {
   // analysis) at the bare solver's speed.
   double bare_factor = 0, bare_refactor = 0, floor = 0, bare_solve_sum = 0;
   long unknowns = 0;
-  const bool fixed_targets = options.params.targets == qd::TargetMode::Fixed;
+  const bool fixed_targets = options.settings.engine.targets == qd::TargetMode::Fixed;
   for (const auto& g : bare) {
     bare_factor += g.factor_ms;
     bare_refactor += g.refactor_ms;

@@ -4,8 +4,9 @@
 // `texcoord`) when it has one (developable_crumpled_crane.ply: its exact flattening).
 //
 // Usage: qd_flatten_bench (--grid TRIANGLES [--patches P] | --mesh FILE) [--runs R]
-//                         [--threads T] [--max-iter N] [--tolerance X] [--svg FILE]
-//                         [--dxf FILE] [--unit U]
+//                         [--threads T] [--arap-max-iter N] [--arap-tolerance X]
+//                         [--svg-file FILE] [--dxf-file FILE] [--unit U]
+// (the flattening's parameters by their declared names: docs/reference/flatten.md)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,10 +43,10 @@ Args parse(int argc, char** argv) {
     else if (key == "--mesh") a.mesh = value;
     else if (key == "--runs") a.runs = std::stoi(value);
     else if (key == "--threads") a.params.threads = std::stoi(value);
-    else if (key == "--max-iter") a.params.max_iterations = std::stoi(value);
-    else if (key == "--tolerance") a.params.tolerance = std::stod(value);
-    else if (key == "--svg") a.svg = value;
-    else if (key == "--dxf") a.dxf = value;
+    else if (key == "--arap-max-iter") a.params.max_iterations = std::stoi(value);
+    else if (key == "--arap-tolerance") a.params.tolerance = std::stod(value);
+    else if (key == "--svg-file") a.svg = value;
+    else if (key == "--dxf-file") a.dxf = value;
     else if (key == "--unit") a.unit = value;
     else throw qd::Error("unknown option " + key);
   }

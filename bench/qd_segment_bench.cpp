@@ -6,8 +6,9 @@
 // G_ABD reduction and largest move.
 //
 // Usage: qd_segment_bench (--torus TRIANGLES | --mesh FILE)... [--runs R] [--threads T,...]
-//                         [--max-error DEG] [--min-faces N] [--crease DEG] [--target K]
-//                         [--approximate [-- QUASIDEV OPTIONS]]
+//                         [--max-error-deg X] [--min-faces N] [--crease-deg X]
+//                         [--target-patches K] [--approximate [-- QUASIDEV OPTIONS]]
+// (the segmentation's parameters by their declared names: docs/reference/segment.md)
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -55,10 +56,12 @@ const std::map<std::string, Setter> kValueOptions = {
     {"--mesh", [](Args& a, const std::string& v) { a.meshes.push_back(v); }},
     {"--runs", [](Args& a, const std::string& v) { a.runs = std::max(1, std::stoi(v)); }},
     {"--threads", [](Args& a, const std::string& v) { a.threads = int_list(v); }},
-    {"--max-error", [](Args& a, const std::string& v) { a.params.max_error_deg = std::stod(v); }},
+    {"--max-error-deg",
+     [](Args& a, const std::string& v) { a.params.max_error_deg = std::stod(v); }},
     {"--min-faces", [](Args& a, const std::string& v) { a.params.min_faces = std::stoi(v); }},
-    {"--crease", [](Args& a, const std::string& v) { a.params.crease_deg = std::stod(v); }},
-    {"--target", [](Args& a, const std::string& v) { a.params.target_patches = std::stoi(v); }},
+    {"--crease-deg", [](Args& a, const std::string& v) { a.params.crease_deg = std::stod(v); }},
+    {"--target-patches",
+     [](Args& a, const std::string& v) { a.params.target_patches = std::stoi(v); }},
 };
 
 Args parse(int argc, char** argv) {

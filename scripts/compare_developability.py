@@ -5,10 +5,11 @@ Runs both filters in the same pymeshlab process on the same inputs -- ours
 (apply_coord_quasi_developable_approximation, the 2025.07d plugin of this project) and MeshLab's
 apply_coord_developability_of_mesh (Stein, Grinspun, Crane 2018) -- each with its defaults and one
 tuned setting, and prints a Markdown table per run:
-  wall time of the filter call, G_ABD reduction (percent drop of G_ABD = sum |K| over interior
-  vertices, Eq. 19 between input and output), max |K| after, max and mean displacement in AE
-  (the input's average edge length), symmetric Hausdorff distance to the input relative to the
-  input's bbox diagonal, and whether the topology was preserved.
+  wall time of the filter call, the G_ABD reduction (percent drop of G_ABD = sum |K| over interior
+  vertices, from input to output: abd_reduction, as the filter's own figure; ratio_ABD, Eq. 19, is
+  the drop of one iteration), max |K| after, max and mean displacement in AE (the input's
+  average edge length), symmetric Hausdorff distance to the input relative to the input's bbox
+  diagonal, and whether the topology was preserved.
 K is computed here, identically for both outputs: angle defect over the mixed Voronoi area
 (Meyer et al. 2003) at interior vertices (all incident edges shared by exactly two faces).
 Displacement is |v' - v| per vertex when the output keeps the input's vertices; when a filter
@@ -16,7 +17,7 @@ remeshed (vertex count changed) it is the distance of each output vertex to the 
 marked with '*'.
 
 Usage: .venv/bin/python scripts/compare_developability.py [--plugin SO] [--json OUT] [MESH.ply ...]
-Inputs default to /work/shared/meshes/*.ply and sample_meshes/*.ply.
+Inputs default to the meshes of $QD_SHARED_MESHES (when set) and tests/data/, then sample_meshes/*.ply.
 """
 from __future__ import annotations
 
@@ -31,8 +32,11 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_PLUGIN = os.path.join(ROOT, "build", "bin", "pymeshlab", "libfilter_quasidev.so")
-DEFAULT_MESHES = sorted(glob.glob("/work/shared/meshes/*.ply")) + sorted(
-    glob.glob(os.path.join(ROOT, "sample_meshes", "*.ply")))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mesh_folders import SAMPLES, mesh_folders  # noqa: E402
+
+DEFAULT_MESHES = [p for folder in mesh_folders() for p in sorted(glob.glob(os.path.join(folder, "*.ply")))] + sorted(
+    glob.glob(os.path.join(SAMPLES, "*.ply")))
 
 OURS = "apply_coord_quasi_developable_approximation"
 THEIRS = "apply_coord_developability_of_mesh"
@@ -142,7 +146,7 @@ def run_one(path: str, label: str, filter_name: str, kwargs: dict) -> dict:
     ae = average_edge(V0, F0)
     K0, K1 = gaussian_curvature(V0, F0), gaussian_curvature(V1, F1)
     g0, g1 = np.abs(K0).sum(), np.abs(K1).sum()
-    row["ratio_abd"] = 100.0 * (g0 - g1) / g0 if g0 > 0 else 0.0
+    row["abd_reduction"] = 100.0 * (g0 - g1) / g0 if g0 > 0 else 0.0
     row["max_k_before"], row["max_k"] = float(np.abs(K0).max()), float(np.abs(K1).max())
     diag = float(np.linalg.norm(V0.max(axis=0) - V0.min(axis=0)))
     samples = 10 * max(len(F0), len(F1))
@@ -174,7 +178,7 @@ def table(rows: list[dict]) -> str:
             out.append(f"| {r['mesh']} | {r['run']} | failed: {r['error']} |||||||")
             continue
         star = "*" if r["disp_is_to_surface"] else ""
-        out.append(f"| {r['mesh']} | {r['run']} | {r['time_s']:.2f} | {r['ratio_abd']:.1f} | "
+        out.append(f"| {r['mesh']} | {r['run']} | {r['time_s']:.2f} | {r['abd_reduction']:.1f} | "
                    f"{r['max_k_before']:.3g} -> {r['max_k']:.3g} | {r['max_disp_ae']:.3f}{star} | "
                    f"{r['mean_disp_ae']:.3f}{star} | {r['hausdorff_rel']:.2e} | {r['topology']} |")
     return "\n".join(out)
@@ -196,10 +200,6 @@ def main() -> int:
         for label, name, kwargs in RUNS:
             rows.append(run_one(path, label, name, kwargs))
             print(f"{os.path.basename(path)}: {label} done", file=sys.stderr, flush=True)
-    print("# Side by side with MeshLab's Make mesh developable\n")
-    print("Made by `.venv/bin/python scripts/compare_developability.py > docs/comparison.md` "
-          "(one run, both filters in the same pymeshlab process; ours is the pymeshlab plugin, "
-          "which factorises with Eigen only). Columns: see the script's docstring.\n")
     print(table(rows))
     print("\nSettings: " + "; ".join(f"{label}: {kw or 'defaults'}" for label, _, kw in RUNS))
     print("* = remeshed: distance of each output vertex to the input surface instead of |v' - v|.")

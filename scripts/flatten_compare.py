@@ -91,7 +91,7 @@ def run(*args) -> None:
 def flatten(quasidev: Path, mesh: Path, work: Path, name: str) -> tuple[np.ndarray, dict, Path]:
     """(wedge UV, report, SVG path) of `quasidev flatten` on mesh."""
     out, report, svg = work / f"{name}.flat.ply", work / f"{name}.flat.json", work / f"{name}.svg"
-    run(quasidev, "flatten", mesh, out, "--report", report, "--svg", svg, "--quiet")
+    run(quasidev, "flatten", mesh, out, "--report", report, "--svg-file", svg, "--quiet")
     uv = np.asarray(read_ply(out).get("face", "texcoord"), float)
     return uv, json.loads(report.read_text()), svg
 
@@ -307,7 +307,8 @@ def picture(mesh: Path, svg: Path, out: Path, size: tuple[int, int] = (1200, 560
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quasidev", type=Path, default=ROOT / "build" / "bin" / "quasidev")
-    ap.add_argument("--meshes", type=Path, default=Path("/work/shared/meshes"))
+    ap.add_argument("--meshes", type=Path, default=Path(os.environ.get("QD_SHARED_MESHES", ROOT / "tests" / "data")),
+                    help="the folder of the meshes (default: $QD_SHARED_MESHES, else tests/data/)")
     ap.add_argument("--out", type=Path, default=ROOT / "docs")
     ap.add_argument("--picture", type=Path, help="write the garment picture here (PNG)")
     ap.add_argument("--only", nargs="*", help="mesh names (without .ply) to measure (default: all)")

@@ -2,7 +2,9 @@
 """Reproduces the result figures of issue 2 (bullet 5) with the quasidev command and prints
 them beside the paper's tables (Zeng et al. 2012, Tables 1 and 2).
 
-Usage: scripts/paper_figures.py [--build DIR] [--shared DIR]
+Usage: scripts/paper_figures.py [--build DIR]
+Garments: tests/data/ and, where $QD_SHARED_MESHES names a folder holding them, the others
+(skipped with a message when absent: scripts/mesh_folders.py).
 The functions are also used by tests/results/test_paper_figures.py, which asserts the figures.
 """
 import argparse
@@ -17,9 +19,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 import plyio  # noqa: E402
+from mesh_folders import SAMPLES, existing, find_mesh  # noqa: E402
 
-SAMPLES = os.path.join(ROOT, "sample_meshes")
-SHARED = os.path.join(os.path.dirname(ROOT), "shared", "meshes")
 PAPER_TABLE1 = {"ratio_abd": [90.9, 39.7, 6.3], "ratio_obd": [89.2, 54.3, 8.2]}
 PAPER_TABLE2 = [  # δ_err, ratio_ABD, ratio_OBD, max vertex position difference, max Gauss curvature
     ("AE", 48.78, 17.95, 0.231, 8.94),
@@ -73,34 +74,34 @@ def max_seam_move(before, after):
 
 def lampshade(build):
     """Paper Fig. 4 / Table 1: curved cone-like lampshade, δ_err = 10·AE, boundary fixed."""
-    report, _, _ = quasidev(build, os.path.join(SAMPLES, "lampshade.ply"), "--tolerance", 10,
+    report, _, _ = quasidev(build, os.path.join(SAMPLES, "lampshade.ply"), "--tolerance-ae", 10,
                             "--keep-boundary")
     return report
 
 
 def bumps(build, name):
     """A developable surface with smooth bumps: tolerance 1·AE, 10 iterations."""
-    report, _, _ = quasidev(build, os.path.join(SAMPLES, name), "--tolerance", 1, "--max-iter", 10)
+    report, _, _ = quasidev(build, os.path.join(SAMPLES, name), "--tolerance-ae", 1, "--max-iter", 10)
     return report
 
 
-def garment(build, name):
-    """A real garment, patches from face quality, fixed seams, defaults."""
-    report, before, after = quasidev(build, os.path.join(SHARED, name))
+def garment(build, path):
+    """A real garment (its PLY path), patches from face quality, fixed seams, defaults."""
+    report, before, after = quasidev(build, path)
     return report, flipped_faces(before, after), max_seam_move(before, after)
 
 
 def tolerance_trend(build, mesh):
     """Paper Table 2: δ_err = AE, 0.1·AE, 0.02·AE, with the paper's stop rule and 10 iterations."""
-    return [(tol, quasidev(build, mesh, "--tolerance", tol, "--stop-rule", "paper", "--max-iter", "10")[0])
+    return [(tol, quasidev(build, mesh, "--tolerance-ae", tol, "--stop-rule", "paper", "--max-iter", "10")[0])
             for tol in (1, 0.1, 0.02)]
 
 
 def seams(build):
     """Multi-patch mesh, fixed vs free seams."""
     mesh = os.path.join(SAMPLES, "patches.ply")
-    fixed, before, after_fixed = quasidev(build, mesh, "--seams", "fixed")
-    free, _, after_free = quasidev(build, mesh, "--seams", "free")
+    fixed, before, after_fixed = quasidev(build, mesh, "--seam-mode", "fixed")
+    free, _, after_free = quasidev(build, mesh, "--seam-mode", "free")
     return fixed, free, max_seam_move(before, after_fixed), max_seam_move(before, after_free), \
         before, after_free
 
@@ -142,24 +143,18 @@ def main():
     print()
 
     print("Garments — patches from face quality, fixed seams, defaults")
-    for name in ("garment_tee4panel_gpg.ply", "garment_shirt_initial_diffavatar.ply",
-                 "garment_tee_gcd_0AZKWACRSY.ply"):
-        path = os.path.join(SHARED, name)
-        if not os.path.exists(path):
-            continue
-        r, flips, seam = garment(b, name)
+    for path in existing(["garment_tee4panel_gpg.ply", "garment_shirt_initial_diffavatar.ply",
+                          "garment_tee_gcd_0AZKWACRSY.ply"], "paper_figures.py"):
+        r, flips, seam = garment(b, path)
         print("%s: G_ABD %.1f%% lower overall, %d flipped faces, seams moved %.3g" %
-              (name, r["abd_reduction"], flips, seam))
+              (os.path.basename(path), r["abd_reduction"], flips, seam))
         for p in r["patches"]:
             print("  patch %-3d %6d faces  fit residual %6.2f°  G_ABD %6.1f%% lower  iters %d  (%s)" %
                   (p["id"], p["faces"], p["fit_residual_deg"], p["abd_reduction"], p["iterations"],
                    p["stop_reason"]))
     print()
 
-    for mesh in (os.path.join(SAMPLES, "bumpy_cone.ply"),
-                 os.path.join(SHARED, "garment_shirt_initial_diffavatar.ply")):
-        if not os.path.exists(mesh):
-            continue
+    for mesh in (os.path.join(SAMPLES, "bumpy_cone.ply"), find_mesh("garment_shirt_initial_diffavatar.ply")):
         trend = tolerance_trend(b, mesh)
         print("Table 2 — tolerance trend on %s (AE = %.4g; paper: a pant patch)"
               % (os.path.basename(mesh), trend[0][1]["average_edge"]))

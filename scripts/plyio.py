@@ -3,7 +3,7 @@
 Input:  a PLY file in ascii, binary_little_endian or binary_big_endian format with any
         elements and properties (scalar or list), e.g. the files MeshLab 2020.09 writes
         (float x y z, uchar red green blue alpha, float quality, camera element) or the
-        double-precision files of sample_meshes/ and /work/shared/meshes/.
+        double-precision files of sample_meshes/ and tests/data/.
 Output: read_ply() -> PlyData, whose elements hold one Python list per property
         (a list of tuples for list properties); write_ply() writes such data back.
 """

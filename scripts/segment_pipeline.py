@@ -2,12 +2,12 @@
 """Segment then approximate, against MeshLab's "Make mesh developable", on closed meshes.
 
 For each mesh runs
-  * ours: `quasidev segment IN SEG --max-error E` then `quasidev approximate SEG OUT --seams S`
+  * ours: `quasidev segment IN SEG --max-error-deg E` then `quasidev approximate SEG OUT --seam-mode S`
     for E in {20, 30} degrees and S in {fixed, free} (every other option at its default; the
     pipeline's documented setting is E = 30, S = free), and `quasidev approximate IN OUT` alone
     (the whole mesh one patch) as the baseline;
-  * ours with MeshLab's distance as a budget: segment at 30 degrees, then `approximate --seams
-    free --tolerance-mode total --tolerance T`, T = the smaller Hausdorff distance of MeshLab's
+  * ours with MeshLab's distance as a budget: segment at 30 degrees, then `approximate --seam-mode
+    free --tolerance-mode total --tolerance-ae T`, T = the smaller Hausdorff distance of MeshLab's
     two runs in the approximation's average edge lengths (AE), rounded down to three digits. No
     vertex then moves more than T, so the surfaces are at most T apart: a distance no larger
     than MeshLab's (the three passes of free seams share the budget);
@@ -37,11 +37,12 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from tradeoff import (DEFAULT_QUASIDEV, SHARED, THEIRS_DEFAULT_EVALS, THEIRS_KEEP_TOPOLOGY,  # noqa: E402
+from mesh_folders import existing  # noqa: E402
+from tradeoff import (DEFAULT_QUASIDEV, THEIRS_DEFAULT_EVALS, THEIRS_KEEP_TOPOLOGY,  # noqa: E402
                       input_figures, load_pair, measure, run_meshlab)
 
-DEFAULT_MESHES = [os.path.join(SHARED, f"{name}.ply") for name in
-                  ("classic_spot_lowres_crane", "piecewise_wingnut_stein2018", "bowl_hemisphere_ipc")]
+DEFAULT_MESHES = existing(["classic_spot_lowres_crane.ply", "piecewise_wingnut_stein2018.ply",
+                           "bowl_hemisphere_ipc.ply"], "segment_pipeline.py")
 MAX_ERRORS = (20, 30)
 SEAMS = ("fixed", "free")
 # the pipeline's documented setting (docs/usage.md, sample_meshes/segment_then_approximate.mlx)
@@ -66,10 +67,10 @@ def run_pipeline(binary: str, path: str, max_error: int | None, seams: str, befo
     seg, out = os.path.join(tmp, f"seg{max_error}.ply"), os.path.join(tmp, f"out{max_error}{seams}.ply")
     s = {"time_ms": 0.0}
     if max_error is not None:
-        s = quasidev(binary, "segment", path, seg, "--max-error", str(max_error))
+        s = quasidev(binary, "segment", path, seg, "--max-error-deg", str(max_error))
         if "error" in s:
             return s
-    a = quasidev(binary, "approximate", path if max_error is None else seg, out, "--seams", seams, *extra)
+    a = quasidev(binary, "approximate", path if max_error is None else seg, out, "--seam-mode", seams, *extra)
     if "error" in a:
         return a
     fig = measure(load_pair(path, out), before)
@@ -96,7 +97,7 @@ def rows_for(binary: str, path: str, max_errors=MAX_ERRORS, seams_modes=SEAMS, m
         for e in max_errors:
             for seams in seams_modes:
                 fig = run_pipeline(binary, path, e, seams, before, tmp)
-                rows.append({"mesh": name, "run": f"ours: segment --max-error {e}, approximate --seams {seams}",
+                rows.append({"mesh": name, "run": f"ours: segment --max-error-deg {e}, approximate --seam-mode {seams}",
                              **fig})
                 print(f"{name}: {rows[-1]['run']} done", file=sys.stderr, flush=True)
         if not meshlab:
@@ -111,9 +112,9 @@ def rows_for(binary: str, path: str, max_errors=MAX_ERRORS, seams_modes=SEAMS, m
         if distances and ae:
             budget = round_down(min(distances) * before["diag"] / ae)
             fig = run_pipeline(binary, path, PIPELINE_MAX_ERROR, "free", before, tmp,
-                               ("--tolerance-mode", "total", "--tolerance", budget))
-            rows.append({"mesh": name, "run": f"ours: segment --max-error {PIPELINE_MAX_ERROR}, approximate "
-                         f"--seams free --tolerance-mode total --tolerance {budget} (MeshLab's distance)",
+                               ("--tolerance-mode", "total", "--tolerance-ae", budget))
+            rows.append({"mesh": name, "run": f"ours: segment --max-error-deg {PIPELINE_MAX_ERROR}, approximate "
+                         f"--seam-mode free --tolerance-mode total --tolerance-ae {budget} (MeshLab's distance)",
                          **fig})
             print(f"{name}: {rows[-1]['run']} done", file=sys.stderr, flush=True)
     return rows + theirs

@@ -5,9 +5,9 @@ For each mesh, sweeps
   * ours, through the `quasidev` command (one process per point). With `--developability` and
     `--defect-weight` in `quasidev --help`: `--defect-weight` (log-spaced) with `--developability
     auto`; `--weight` with `--developability curve` (the paper's method) as a separate series; and
-    `--tolerance` with `--tolerance-mode total` and `--developability auto`. Without them: the
-    curve method's `--weight`, `--tolerance` (step mode, the default: caps each iteration's move)
-    and `--tolerance` with `--tolerance-mode total`. The total mode caps the whole move, so only it
+    `--tolerance-ae` with `--tolerance-mode total` and `--developability auto`. Without them: the
+    curve method's `--weight`, `--tolerance-ae` (step mode, the default: caps each iteration's move)
+    and `--tolerance-ae` with `--tolerance-mode total`. The total mode caps the whole move, so only it
     reaches the small distances where MeshLab's points lie;
   * MeshLab's own apply_coord_developability_of_mesh (Stein, Grinspun, Crane 2018) in pymeshlab with
     edgeflips=False, edgecollapses=False (topology kept), over `maxfunevals`;
@@ -44,16 +44,15 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from compare_developability import (_FAILED_MESHSETS, average_edge, gaussian_curvature,  # noqa: E402
                                     hausdorff_one_way)
+from mesh_folders import SAMPLES, existing  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-SHARED = "/work/shared/meshes"
-DEFAULT_MESHES = [
-    os.path.join(SHARED, "garment_shirt_initial_diffavatar.ply"),
-    os.path.join(SHARED, "garment_tee_gcd_0AZKWACRSY.ply"),
-    os.path.join(SHARED, "garment_tee4panel_gpg.ply"),
-    os.path.join(SHARED, "lampshade_frustum_ipc.ply"),
-    os.path.join(ROOT, "sample_meshes", "bumpy_cone.ply"),
-    os.path.join(ROOT, "sample_meshes", "bumpy_cylinder.ply"),
+# The 3 garments and the lampshade: tests/data/ or $QD_SHARED_MESHES (scripts/mesh_folders.py);
+# those found in neither are skipped with a message.
+DEFAULT_MESHES = existing(["garment_shirt_initial_diffavatar.ply", "garment_tee_gcd_0AZKWACRSY.ply",
+                           "garment_tee4panel_gpg.ply", "lampshade_frustum_ipc.ply"], "tradeoff.py") + [
+    os.path.join(SAMPLES, "bumpy_cone.ply"),
+    os.path.join(SAMPLES, "bumpy_cylinder.ply"),
 ]
 DEFAULT_QUASIDEV = os.path.join(ROOT, "build", "bin", "quasidev")
 THEIRS = "apply_coord_developability_of_mesh"
@@ -73,7 +72,7 @@ STYLE = {
     "ours, --defect-weight": ("ours", "o", "tab:blue"),
     "ours, curve --weight": ("ours", "s", "tab:green"),
     "ours, --weight": ("ours", "o", "tab:blue"),
-    "ours, --tolerance": ("ours", "s", "tab:green"),
+    "ours, --tolerance-ae": ("ours", "s", "tab:green"),
     "ours, --tolerance-mode total": ("ours", "D", "tab:purple"),
     "ours, default": ("ours", "*", "tab:blue"),
     "MeshLab, maxfunevals": ("meshlab", "^", "tab:red"),
@@ -101,13 +100,13 @@ def plan(options: set[str], quick: bool) -> list[tuple[str, str, list[str] | dic
         points += [("ours, curve --weight", f"curve, weight {w:g}",
                     ["--developability", "curve", "--weight", f"{w:g}"]) for w in pick["weight"]]
         points += [("ours, --tolerance-mode total", f"auto, total tolerance {t:g} AE",
-                    [*auto, *total, "--tolerance", f"{t:g}"]) for t in pick["tolerance"]]
+                    [*auto, *total, "--tolerance-ae", f"{t:g}"]) for t in pick["tolerance"]]
     else:
         points += [("ours, --weight", f"weight {w:g}", ["--weight", f"{w:g}"]) for w in pick["weight"]]
-        points += [("ours, --tolerance", f"tolerance {t:g} AE", ["--tolerance", f"{t:g}"])
+        points += [("ours, --tolerance-ae", f"tolerance {t:g} AE", ["--tolerance-ae", f"{t:g}"])
                    for t in pick["tolerance"]]
         points += [("ours, --tolerance-mode total", f"total tolerance {t:g} AE",
-                    [*total, "--tolerance", f"{t:g}"]) for t in pick["tolerance"]]
+                    [*total, "--tolerance-ae", f"{t:g}"]) for t in pick["tolerance"]]
     points.append(("MeshLab, default (no remeshing)", f"maxfunevals {THEIRS_DEFAULT_EVALS} (default)",
                    dict(THEIRS_KEEP_TOPOLOGY)))
     points += [("MeshLab, maxfunevals", f"maxfunevals {n}", {"maxfunevals": n, **THEIRS_KEEP_TOPOLOGY})
@@ -346,7 +345,7 @@ def resolve_mesh(name: str) -> str:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--meshes", nargs="+", default=DEFAULT_MESHES,
-                    help="PLY paths or names from the default list (default: the 3 shared garments, "
+                    help="PLY paths or names from the default list (default: the 3 garments, "
                          "the lampshade, bumpy_cone and bumpy_cylinder)")
     ap.add_argument("--quick", action="store_true", help="2 points per series")
     ap.add_argument("--quasidev", default=DEFAULT_QUASIDEV, help="the quasidev command")
@@ -368,8 +367,8 @@ def main() -> int:
     if commit and subprocess.run(["git", "-C", ROOT, "diff", "--quiet", "HEAD", "--", "filter_quasidev"]).returncode:
         commit += " with uncommitted engine changes"
     mode = ("--developability auto with --defect-weight, --developability curve with --weight, and "
-            "--developability auto with --tolerance-mode total and --tolerance"
-            if "--defect-weight" in options else "the curve method's --weight, --tolerance, and --tolerance with --tolerance-mode total")
+            "--developability auto with --tolerance-mode total and --tolerance-ae"
+            if "--defect-weight" in options else "the curve method's --weight, --tolerance-ae, and --tolerance-ae with --tolerance-mode total")
     with open(os.path.join(args.out, "tradeoff.md"), "w") as f:
         f.write("# Trade-off: curvature removed against surface moved\n\n"
                 f"Made by `scripts/tradeoff.py{' --quick' if args.quick else ''}` "
@@ -383,8 +382,9 @@ def main() -> int:
                 "(AE); time = the filter alone (quasidev's engine time, the pymeshlab call).\n\n")
         f.write(tab + "\n\n## Verdicts\n\n" + "\n".join(f"- {v}" for v in verdicts) + "\n")
     with open(os.path.join(args.out, "tradeoff.json"), "w") as f:
-        json.dump({"quick": args.quick, "quasidev": args.quasidev, "quasidev_version": version, "commit": commit, "quasidev_options": options,
-                   "meshes": paths, "rows": rows, "verdicts": verdicts}, f, indent=1)
+        json.dump({"quick": args.quick, "quasidev": os.path.relpath(args.quasidev, ROOT), "quasidev_version": version,
+                   "commit": commit, "quasidev_options": options,
+                   "meshes": [os.path.basename(p) for p in paths], "rows": rows, "verdicts": verdicts}, f, indent=1)
     print(tab)
     print()
     print("\n".join(verdicts))

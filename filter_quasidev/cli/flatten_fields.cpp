@@ -10,7 +10,7 @@ namespace qd::cli {
 FlattenProblem make_flatten_problem(const meshio::MeshFile& mesh, const FlattenOptions& o) {
   FlattenProblem problem;
   set_geometry(mesh, problem);
-  problem.params = o.params;
+  problem.params = o.settings.engine;
   return problem;
 }
 

@@ -1,5 +1,7 @@
 #include "flatten_report_json.h"
 
+#include "flatten_params.h"
+#include "params_json.h"
 #include "report_text.h"
 
 namespace qd::cli {
@@ -32,30 +34,18 @@ Json piece(const PieceReport& p) {
           {"time_ms", p.time_ms}};
 }
 
-Json parameters(const FlattenOptions& o) {
-  const FlattenParams& p = o.params;
-  return {{"max_iter", p.max_iterations},
-          {"tolerance", p.tolerance},
-          {"gap", p.gap},
-          {"notch_spacing", p.notch_spacing},
-          {"solver", name_of(kSolverKinds, p.solver)},
-          {"threads", p.threads},
-          {"unit", name_of(kPatternUnits, o.unit)}};
-}
-
 }  // namespace
 
 std::string flatten_report_json(const FlattenResult& result, const FlattenReportContext& c) {
   Json pieces = Json::array();
   for (const PieceReport& p : result.pieces) pieces.push_back(piece(p));
+  const Json parameters = params::values_json(params::flatten_params(), c.options.settings);
   const Json report = {{"input", c.options.input},
                        {"output", c.options.output},
-                       {"svg", c.options.svg},
-                       {"dxf", c.options.dxf},
                        {"vertices", c.vertices},
                        {"faces", c.faces},
                        {"has_patch_ids", c.has_patch_ids},
-                       {"parameters", parameters(c.options)},
+                       {"parameters", parameters},
                        {"pieces", pieces},
                        {"max_distortion", result.max_distortion},
                        {"flattenable_pieces", result.flattenable_pieces},

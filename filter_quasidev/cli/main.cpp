@@ -9,6 +9,7 @@
 // line "quasidev: error: REASON" goes to stderr and no file is written.
 #include <unistd.h>
 
+#include <algorithm>
 #include <csignal>
 #include <filesystem>
 #include <iostream>
@@ -111,16 +112,23 @@ std::string ply_bytes(const qd::meshio::MeshFile& mesh, const qd::meshio::Output
                                    qd::meshio::PlyFormat::BinaryLittleEndian);
 }
 
-// Warnings say part of the mesh was handled specially: shown even with --quiet, like errors.
-void print_warnings(const std::vector<std::string>& warnings) {
-  for (const std::string& warning : warnings) std::cerr << "quasidev: warning: " << warning << '\n';
+// True when a log line is one of the warnings (the engines log each one, bare or after
+// "warning: ", for the MeshLab log, which is their only channel there).
+bool is_warning(const std::string& line, const std::vector<std::string>& warnings) {
+  return std::any_of(warnings.begin(), warnings.end(), [&line](const std::string& w) {
+    return line == w || line == "warning: " + w;
+  });
 }
 
-// The job's log on stdout and the reader's notes on stderr, unless --quiet.
-void print_log(const qd::cli::JobOptions& o, const std::vector<std::string>& log,
-               const std::vector<std::string>& notes) {
+// Each warning once, on stderr, even with --quiet (it says part of the mesh was handled
+// specially, like an error would); then, unless --quiet, the job's other log lines on stdout
+// and the reader's notes on stderr.
+void print_outcome(const qd::cli::JobOptions& o, const std::vector<std::string>& warnings,
+                   const std::vector<std::string>& log, const std::vector<std::string>& notes) {
+  for (const std::string& warning : warnings) std::cerr << "quasidev: warning: " << warning << '\n';
   if (o.quiet) return;
-  for (const std::string& line : log) std::cout << line << '\n';
+  for (const std::string& line : log)
+    if (!is_warning(line, warnings)) std::cout << line << '\n';
   for (const std::string& note : notes) std::cerr << "quasidev: note: " << note << '\n';
 }
 
@@ -151,7 +159,6 @@ void approximate(const qd::cli::ApproximateOptions& o) {
       {o.output, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size()))}};
   if (!o.report.empty()) {
     const qd::cli::ReportContext context{o,
-                                         problem.params,
                                          static_cast<int>(mesh.positions.size()),
                                          static_cast<int>(mesh.triangles.size()),
                                          !mesh.patch.empty(),
@@ -160,8 +167,7 @@ void approximate(const qd::cli::ApproximateOptions& o) {
     files.emplace_back(o.report, report_json(result, context));
   }
   write_files(files);
-  print_warnings(result.warnings);
-  print_log(o, result.log, mesh.notes);
+  print_outcome(o, result.warnings, result.log, mesh.notes);
 }
 
 void segment(const qd::cli::SegmentOptions& o) {
@@ -180,9 +186,7 @@ void segment(const qd::cli::SegmentOptions& o) {
     files.emplace_back(o.report, segment_report_json(result, context));
   }
   write_files(files);
-  print_warnings(result.warnings);
-  // The segmentation's log opens with its warnings (segment_log.h), printed above.
-  print_log(o, {result.log.begin() + static_cast<long>(result.warnings.size()), result.log.end()}, mesh.notes);
+  print_outcome(o, result.warnings, result.log, mesh.notes);
 }
 
 void flatten(const qd::cli::FlattenOptions& o) {
@@ -197,19 +201,18 @@ void flatten(const qd::cli::FlattenOptions& o) {
                                                 !mesh.patch.empty(), mesh.notes};
     files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
   }
-  const std::string unit = o.unit == qd::cli::PatternUnit::Model ? "" : name_of(qd::cli::kPatternUnits, o.unit);
-  if (!o.svg.empty()) {
+  if (!o.settings.svg_file.empty()) {
     std::ostringstream svg;
-    qd::write_svg(svg, result.pattern, unit);
-    files.emplace_back(o.svg, svg.str());
+    qd::write_svg(svg, result.pattern, qd::params::svg_unit(o.settings));
+    files.emplace_back(o.settings.svg_file, svg.str());
   }
-  if (!o.dxf.empty()) {
+  if (!o.settings.dxf_file.empty()) {
     std::ostringstream dxf;
     qd::write_dxf(dxf, result.pattern);
-    files.emplace_back(o.dxf, dxf.str());
+    files.emplace_back(o.settings.dxf_file, dxf.str());
   }
   write_files(files);
-  print_log(o, result.log, mesh.notes);
+  print_outcome(o, {}, result.log, mesh.notes);
 }
 
 int fail(const std::string& reason, int status) {

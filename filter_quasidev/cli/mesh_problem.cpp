@@ -1,6 +1,5 @@
 #include "mesh_problem.h"
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -13,32 +12,31 @@ namespace qd::cli {
 Problem make_problem(const meshio::MeshFile& mesh, const ApproximateOptions& o) {
   Problem problem;
   set_geometry(mesh, problem);
+  if (!o.settings.use_patches) problem.patch.clear();
   problem.constrained = mesh.constrained;
-  if (!o.constraints.empty()) {
+  if (!o.settings.constraints_file.empty()) {
     problem.constrained.resize(mesh.positions.size(), 0);
-    for (std::size_t v : meshio::read_constraint_file(o.constraints, mesh.positions.size()))
+    for (std::size_t v :
+         meshio::read_constraint_file(o.settings.constraints_file, mesh.positions.size()))
       problem.constrained[v] = 1;
   }
   const double ae = average_edge_length(problem.V, problem.F);
   if (!(ae > 0) || !std::isfinite(ae))
     throw Error("the mesh's average edge length is " + std::to_string(ae) +
                     " (all vertices coincide?); nothing to approximate");
-  problem.params = o.params;
-  problem.params.tolerance = o.tolerance_ae * ae;
-  for (const auto& [id, x] : o.patch_tolerance_ae) {
-    if (std::find(mesh.patch.begin(), mesh.patch.end(), id) == mesh.patch.end() &&
-        !(mesh.patch.empty() && id == 0))
-      throw UsageError("--patch-tolerance names patch " + std::to_string(id) +
-                                ", which the mesh does not have");
-    problem.params.patch_tolerance[id] = x * ae;
+  try {
+    problem.params = params::engine_params(o.settings, ae, problem.patch);
+  } catch (const params::ParamError& e) {
+    throw UsageError("--patch-tolerance-ae " + std::string(e.what()));
   }
   return problem;
 }
 
 meshio::OutputFields output_fields(const Result& result, const ApproximateOptions& o,
                                    std::size_t vertex_count) {
-  const std::vector<double>& q =
-      o.quality == QualityKind::Curvature ? result.k_after : result.displacement;
+  const std::vector<double>& q = o.settings.output_quality == params::QualityKind::Curvature
+                                     ? result.k_after
+                                     : result.displacement;
   if (static_cast<std::size_t>(result.V.rows()) != vertex_count || q.size() != vertex_count)
     throw Error("internal error: the engine returned " + std::to_string(result.V.rows()) +
                     " positions and " + std::to_string(q.size()) + " quality values for " +
@@ -49,7 +47,7 @@ meshio::OutputFields output_fields(const Result& result, const ApproximateOption
     for (int k = 0; k < 3; ++k)
       fields.positions[i][static_cast<std::size_t>(k)] = result.V(static_cast<Eigen::Index>(i), k);
   fields.quality = q;
-  if (o.color) {
+  if (o.settings.colorize) {
     const QualityRange range = robust_quality_range(q);
     fields.colors.reserve(vertex_count);
     for (double value : q) fields.colors.push_back(ramp_color(value, range));

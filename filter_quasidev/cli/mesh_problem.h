@@ -1,12 +1,12 @@
 // The bridge between the command's mesh tables and the approximation engine.
-// make_problem: MeshFile + ApproximateOptions -> qd::Problem (positions, triangles, patch ids,
-//   constrained vertices from the file's selection and the --constraints file, parameters with
-//   the AE-unit tolerances converted to model units using the input's average edge length AE).
+// make_problem: MeshFile + ApproximateOptions -> qd::Problem (positions, triangles, patch ids
+//   unless --no-use-patches, constrained vertices from the file's selection and the
+//   --constraints-file, parameters with the tolerances in model units: params::engine_params).
 // output_fields: qd::Result + ApproximateOptions -> the new positions, the chosen per-vertex
 //   quality (K after or displacement) and its colour ramp over the robust (2nd–98th percentile)
 //   range.
 // Throws qd::Error (degenerate mesh, bad constraint file, wrong result sizes) or UsageError
-// (--patch-tolerance for a patch the mesh does not have).
+// (--patch-tolerance-ae for a patch the mesh does not have).
 #pragma once
 
 #include "approximate/problem.h"

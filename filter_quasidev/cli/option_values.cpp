@@ -16,24 +16,11 @@ double number(const std::string& option, const std::string& text) {
   return v;
 }
 
-double positive(const std::string& option, const std::string& text) {
-  const double v = number(option, text);
-  if (v <= 0) usage(option + " must be greater than 0, got " + text);
-  return v;
-}
-
-double non_negative(const std::string& option, const std::string& text) {
-  const double v = number(option, text);
-  if (v < 0) usage(option + " must not be negative, got " + text);
-  return v;
-}
-
-int whole_number(const std::string& option, const std::string& text, long long lo, long long hi,
-                 const std::string& lo_label) {
+int whole_number(const std::string& option, const std::string& text, long long lo, long long hi) {
   long long v = 0;
   if (!meshio::parse_integer(text, v) || v < lo || v > hi)
-    usage(option + " expects a whole number from " + lo_label + " to " + std::to_string(hi) +
-          ", got '" + text + "'");
+    usage(option + " expects a whole number from " + std::to_string(lo) + " to " +
+          std::to_string(hi) + ", got '" + text + "'");
   return static_cast<int>(v);
 }
 

@@ -5,10 +5,8 @@
 #pragma once
 
 #include <functional>
-#include <sstream>
 #include <string>
 
-#include "option_choices.h"
 #include "options.h"
 
 namespace CLI {
@@ -20,19 +18,8 @@ namespace qd::cli {
 [[noreturn]] void usage(const std::string& message);
 
 double number(const std::string& option, const std::string& text);        // finite
-double positive(const std::string& option, const std::string& text);      // > 0
-double non_negative(const std::string& option, const std::string& text);  // >= 0
-// A whole number in [lo, hi]; `lo_label` names lo in the message (e.g. "0 (all cores)").
-int whole_number(const std::string& option, const std::string& text, long long lo, long long hi,
-                 const std::string& lo_label);
-
-// " (default X)" as a stream writes X.
-template <typename T>
-std::string by_default(const T& value) {
-  std::ostringstream out;
-  out << " (default " << value << ")";
-  return out.str();
-}
+// A whole number in [lo, hi].
+int whole_number(const std::string& option, const std::string& text, long long lo, long long hi);
 
 // An option with a value, shown as `name value_name`; `set` converts each occurrence.
 void valued(CLI::App& job, const std::string& name, const std::string& value_name,
@@ -40,25 +27,6 @@ void valued(CLI::App& job, const std::string& name, const std::string& value_nam
 
 void flag(CLI::App& job, const std::string& name, const std::string& description,
           std::function<void()> set);
-
-// The value called `text` among `choices`, else UsageError listing them.
-template <typename T>
-T choice(const std::string& option, const std::string& text, const Choices<T>& choices) {
-  std::string names;
-  for (const auto& [name, value] : choices) {
-    if (text == name) return value;
-    names += (names.empty() ? "" : "|") + std::string(name);
-  }
-  usage(option + " expects " + names + ", got '" + text + "'");
-}
-
-// An option of fixed choices; the help shows them and the default (target's value now).
-template <typename T>
-void choices(CLI::App& job, const std::string& name, const std::string& value_name,
-             const std::string& description, const Choices<T>& names, T& target) {
-  valued(job, name, value_name, description + by_default(name_of(names, target)),
-         [name, &names, &target](const std::string& v) { target = choice(name, v, names); });
-}
 
 // The help text of INPUT that every job shares: formats and where patches come from.
 extern const char* const kInputHelp;

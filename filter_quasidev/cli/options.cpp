@@ -1,6 +1,6 @@
 // CLI11 parses the command line's shape (subcommands, options anywhere, --opt=value, --,
 // repeated options, help); each value is converted by the subcommand's options
-// (approximate_options.cpp, segment_options.cpp, flatten_options.cpp), so every message keeps the command's wording:
+// (subcommand_options.cpp, declared_options.h), so every message keeps the command's wording:
 // the option, the bad value and what to do.
 #include "options.h"
 
@@ -65,8 +65,8 @@ std::vector<std::pair<std::string, std::string>> output_files(const JobOptions& 
 
 std::vector<std::pair<std::string, std::string>> output_files(const FlattenOptions& o) {
   std::vector<std::pair<std::string, std::string>> files = output_files(static_cast<const JobOptions&>(o));
-  if (!o.svg.empty()) files.emplace_back("--svg", o.svg);
-  if (!o.dxf.empty()) files.emplace_back("--dxf", o.dxf);
+  if (!o.settings.svg_file.empty()) files.emplace_back("--svg-file", o.settings.svg_file);
+  if (!o.settings.dxf_file.empty()) files.emplace_back("--dxf-file", o.settings.dxf_file);
   return files;
 }
 
@@ -78,10 +78,11 @@ CommandLine parse_command_line(std::vector<std::string> args) {
                "Without a subcommand, `quasidev INPUT OUTPUT [options]` runs `approximate`.\n",
                "quasidev");
   app.get_formatter()->column_width(25);
-  app.footer("approximate: lengths X are in units of AE, the input's average edge length.\n"
-             "segment: angles are in degrees. flatten: lengths are in model units.\n"
-             "Exit status: 0 success; 1 bad input or engine error; 2 bad command line. On error\n"
-             "one line 'quasidev: error: REASON' goes to stderr and no file is written.");
+  app.footer(
+      "Lengths are in model units, or in AE (the input's average edge length) where the\n"
+      "name ends in -ae; angles in degrees. docs/reference/ lists every option.\n"
+      "Exit status: 0 success; 1 bad input or engine error; 2 bad command line. On error\n"
+      "one line 'quasidev: error: REASON' goes to stderr and no file is written.");
   add_help_and_version(app);
   CLI::App* approximate = add_job(
       app, "approximate",

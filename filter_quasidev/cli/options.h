@@ -1,30 +1,24 @@
 // The command line of `quasidev`, parsed with CLI11: the subcommands `approximate` (also the job
 // when no subcommand is named, so `quasidev INPUT OUTPUT [options]` works as it always has) and
-// `segment` and `flatten`, their options with their defaults from qd::Params, qd::SegmentParams
-// and qd::FlattenParams, --help and --version. Bad command lines throw UsageError (exit status 2) naming the option, the bad value
-// and what to do.
+// `segment` and `flatten`, each with the files every job has and the options of its declared
+// parameters (params/, with their defaults), --help and --version. Bad command lines throw
+// UsageError (exit status 2) naming the option, the bad value and what to do.
 #pragma once
 
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "approximate/params.h"
+#include "approximate_settings.h"
 #include "common/error.h"
-#include "flatten/flatten_problem.h"
-#include "option_choices.h"
-#include "segment/segment_params.h"
+#include "flatten_settings.h"
+#include "segment_settings.h"
 
 namespace qd::cli {
 
 struct UsageError : Error {
   using Error::Error;
 };
-
-// Default δ_err in units of the input's average edge length AE (Params::tolerance is in model
-// units and is set from this once AE is known).
-constexpr double kDefaultToleranceAE = 1.0;
 
 enum class ProgressMode { Auto, On, Off };
 
@@ -38,28 +32,17 @@ struct JobOptions {
   bool overwrite_input = false;
 };
 
-// The options of `quasidev approximate`.
+// The options of each subcommand: the files and the settings of its job.
 struct ApproximateOptions : JobOptions {
-  std::string constraints;                   // empty = no constraint file
-  double tolerance_ae = kDefaultToleranceAE;
-  std::map<int, double> patch_tolerance_ae;  // per patch id, AE units
-  Params params;                             // tolerance fields are set later from AE
-  QualityKind quality = QualityKind::Curvature;
-  bool color = true;
+  params::ApproximateSettings settings;
 };
 
-// The options of `quasidev segment`.
 struct SegmentOptions : JobOptions {
-  SegmentParams params;
-  bool keep_patches = false;  // existing patch ids are regions of their own, kept where they fit
+  params::SegmentSettings settings;
 };
 
-// The options of `quasidev flatten`.
 struct FlattenOptions : JobOptions {
-  std::string svg;                           // empty = no SVG pattern
-  std::string dxf;                           // empty = no DXF pattern
-  PatternUnit unit = PatternUnit::Model;
-  FlattenParams params;
+  params::FlattenSettings settings;
 };
 
 // The files a job writes, named as on its command line ("OUTPUT", "--report", ...), the given

@@ -1,5 +1,7 @@
 #include "report_json.h"
 
+#include "approximate_params.h"
+#include "params_json.h"
 #include "report_text.h"
 
 namespace qd::cli {
@@ -46,7 +48,7 @@ Json patch(const PatchReport& p, double average_edge) {
           {"faces", p.faces},
           {"vertices", p.vertices},
           {"free_vertices", p.free_vertices},
-          {"tolerance", p.tolerance},
+          {"tolerance_model", p.tolerance},
           {"tolerance_ae", average_edge > 0 ? p.tolerance / average_edge : 0.0},
           {"target_kind", p.target_kind},
           {"developability", p.developability},
@@ -64,35 +66,12 @@ Json patch(const PatchReport& p, double average_edge) {
           {"history", history}};
 }
 
-Json parameters(const ReportContext& c) {
-  const Params& p = c.params;
-  Json patch_tolerance = Json::array();
-  for (const auto& [id, tolerance] : p.patch_tolerance)
-    patch_tolerance.push_back({{"id", id},
-                               {"tolerance", tolerance},
-                               {"tolerance_ae", c.options.patch_tolerance_ae.at(id)}});
-  return {{"tolerance", p.tolerance},
-          {"tolerance_ae", c.options.tolerance_ae},
-          {"patch_tolerance", patch_tolerance},
-          {"tolerance_mode", name_of(kToleranceModes, p.tolerance_mode)},
-          {"max_iter", p.max_iter},
-          {"weight", p.weight},
-          {"anchor", p.anchor},
-          {"seams", name_of(kSeamModes, p.seams)},
-          {"segment_first", name_of(kSegmentFirst, p.segment_first)},
-          {"keep_boundary", p.keep_boundary},
-          {"targets", name_of(kTargetModes, p.targets)},
-          {"stop_rule", name_of(kStopRules, p.stop_rule)},
-          {"stop_abd", p.stop_abd},
-          {"stop_obd", p.stop_obd},
-          {"quality", name_of(kQualityKinds, c.options.quality)}};
-}
-
 }  // namespace
 
 std::string report_json(const Result& result, const ReportContext& c) {
   Json patches = Json::array();
   for (const PatchReport& p : result.patches) patches.push_back(patch(p, result.average_edge));
+  const Json parameters = params::values_json(params::approximate_params(), c.options.settings);
   const Json report = {{"input", c.options.input},
                        {"output", c.options.output},
                        {"vertices", c.vertices},
@@ -101,7 +80,7 @@ std::string report_json(const Result& result, const ReportContext& c) {
                        {"segmented_first", !result.segmented_patch.empty()},
                        {"constrained_vertices", c.constrained_vertices},
                        {"average_edge", result.average_edge},
-                       {"parameters", parameters(c)},
+                       {"parameters", parameters},
                        {"total_before", figures(result.total_before)},
                        {"total_after", figures(result.total_after)},
                        {"abd_reduction", result.abd_reduction},

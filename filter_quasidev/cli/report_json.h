@@ -1,6 +1,7 @@
 // The --report JSON: every figure of a qd::Result (input AE, totals before/after, per patch with
-// its per-iteration history, factorisations, time) plus what was run (files, mesh size,
-// parameters in model units and in AE units). Input: the Result and its context. Output: text.
+// its per-iteration history and its tolerance in model units and AE, factorisations, time) plus
+// what was run (files, mesh size, every declared parameter). Input: the Result and its context.
+// Output: text.
 #pragma once
 
 #include <string>
@@ -13,7 +14,6 @@ namespace qd::cli {
 
 struct ReportContext {
   const ApproximateOptions& options;
-  const Params& params;  // as passed to the engine (tolerances in model units)
   int vertices;
   int faces;
   bool has_patch_ids;

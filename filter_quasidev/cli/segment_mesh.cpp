@@ -28,9 +28,9 @@ std::vector<char> selected_faces(const meshio::MeshFile& mesh) {
 SegmentProblem make_segment_problem(const meshio::MeshFile& mesh, const SegmentOptions& o) {
   SegmentProblem problem;
   set_geometry(mesh, problem);
-  if (!o.keep_patches) problem.patch.clear();
-  problem.selected = selected_faces(mesh);
-  problem.params = o.params;
+  if (!o.settings.keep_patches) problem.patch.clear();
+  if (o.settings.selection_border) problem.selected = selected_faces(mesh);
+  problem.params = o.settings.engine;
   return problem;
 }
 

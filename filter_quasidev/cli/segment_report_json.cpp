@@ -3,7 +3,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "params_json.h"
 #include "segment/segment_log.h"
+#include "segment_params.h"
 
 namespace qd::cli {
 
@@ -42,27 +44,20 @@ Json patch(int id, const SegmentPatch& p, const SegmentParams& q) {
           {"over_limit_text", over_limit_text(p.over_limit, q)}};
 }
 
-Json parameters(const SegmentOptions& o) {
-  const SegmentParams& p = o.params;
-  return {{"max_error_deg", p.max_error_deg}, {"min_faces", p.min_faces},
-          {"min_area", p.min_area},           {"target_patches", p.target_patches},
-          {"keep_patches", o.keep_patches},   {"crease_deg", p.crease_deg},
-          {"max_rounds", p.max_rounds},       {"threads", p.threads}};
-}
-
 }  // namespace
 
 std::string segment_report_json(const SegmentResult& r, const SegmentReportContext& c) {
   Json patches = Json::array();
   for (std::size_t id = 0; id < r.patches.size(); ++id)
-    patches.push_back(patch(static_cast<int>(id), r.patches[id], c.options.params));
+    patches.push_back(patch(static_cast<int>(id), r.patches[id], c.options.settings.engine));
+  const Json parameters = params::values_json(params::segment_params(), c.options.settings);
   const Json report = {{"input", c.options.input},
                        {"output", c.options.output},
                        {"vertices", c.vertices},
                        {"faces", c.faces},
                        {"has_patch_ids", c.has_patch_ids},
                        {"selected_faces", c.selected_faces},
-                       {"parameters", parameters(c.options)},
+                       {"parameters", parameters},
                        {"patch_count", static_cast<int>(r.patches.size())},
                        {"rounds", r.rounds},
                        {"time_ms", r.time_ms},

@@ -2,7 +2,7 @@
 // for pymeshlab 2025.7.post1 and float / "2025.07" for the MeshLab 2025.07 application. One
 // filter per entry of qdml::filter_table() (its index is the filter id); all filter logic lives
 // in the shared adapter. This class only
-//   in:  maps the entry's ParamSpec table to a RichParameterList and reads it back by name;
+//   in:  maps the entry's declared parameters to a RichParameterList and reads them back by name;
 //   out: logs the run's lines, throws MLException with its message on failure, and returns its
 //        figures as std::map<std::string, QVariant> (pymeshlab: a dict).
 #pragma once

@@ -15,38 +15,18 @@
 #include <cstring>          // wrap/callback.h uses strcpy without including <cstring>
 #include <wrap/callback.h>  // vcg::CallBackPos
 
+#include "param.h"
+
 class CMeshO;
 
 namespace qdml {
 
-// One user parameter. Every generation declares exactly these, in this order, with these names
-// and types, so one .mlx serves meshlabserver 2020.09 and pymeshlab 2025.07.
-// SaveFile: the path of a file the filter writes (MeshLab's file-save parameter, with a Browse
-// button in the dialog; .mlx type RichSaveFile in both generations); empty = none.
-enum class ParamKind { Float, Int, Bool, Enum, SaveFile };
-struct ParamSpec {
-  std::string name;                // snake_case, = pymeshlab keyword
-  std::string label;               // dialog label
-  std::string tooltip;             // dialog tooltip
-  ParamKind kind = ParamKind::Float;
-  double value = 0;                // default: the float, the int, 0/1, or the enum index
-  std::vector<std::string> items;  // Enum only: item texts (pymeshlab accepts them by text)
-  std::string extension;           // SaveFile only: the file type, e.g. ".svg" (default path "")
-};
-
-// The user's value of one parameter: a number as ParamSpec::value (float, int, 0/1, enum
-// index), or the text of a SaveFile path.
+// The user's value of one parameter, as MeshLab hands it back: a number (Real, Integer, Boolean
+// 0/1, the index of a Choice in its enum) or a text (Text, SaveFile), by parameter name.
+// Every generation lists exactly the filter's declared parameters (params/), in their order,
+// with their names and types, so one .mlx serves meshlabserver 2020.09 and pymeshlab 2025.07.
 using ParamValue = std::variant<double, std::string>;
 using ParamValues = std::map<std::string, ParamValue>;
-
-// The number given for `name`, or `fallback` when values do not hold it.
-double number_value(const ParamValues& values, const std::string& name, double fallback);
-// The same rounded to a whole number (Int and Enum parameters).
-int whole_value(const ParamValues& values, const std::string& name, int fallback);
-// The same as a switch (Bool parameters): any value but 0 is on.
-bool flag_value(const ParamValues& values, const std::string& name, bool fallback);
-// The text given for `name` (a SaveFile path), or "" when values do not hold it.
-std::string text_value(const ParamValues& values, const std::string& name);
 
 // MeshLab filter classes (menus, search) and parts of a mesh a filter changes or writes.
 enum class FilterCategory { Smoothing, Quality, VertexColoring, FaceColoring, Texture };
@@ -88,8 +68,9 @@ struct FilterSpec {
   std::string info;         // filterInfo text (HTML allowed)
   std::vector<FilterCategory> categories;
   std::vector<MeshPart> changes;  // the post-condition: everything a run may change
-  // The parameter table for mesh m (defaults may depend on it, e.g. its average edge length).
-  std::function<std::vector<ParamSpec>(const CMeshO& m)> parameters;
+  // The parameters for mesh m, as declared (params/); a tooltip may say more about m, e.g. its
+  // average edge length.
+  std::function<std::vector<qd::params::ParamInfo>(const CMeshO& m)> parameters;
   // Runs the filter on m; has_face_quality: m's per-face quality is meaningful. cb may be null.
   std::function<FilterRun(CMeshO& m, bool has_face_quality, const ParamValues& values,
                           vcg::CallBackPos* cb)>

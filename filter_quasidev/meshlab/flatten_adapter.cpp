@@ -6,19 +6,19 @@
 #include <utility>
 
 #include "atomic_file.h"
+#include "declared_parameters.h"
 #include "engine_mesh.h"
 #include "flatten/dxf_writer.h"
 #include "flatten/flatten.h"
 #include "flatten/stretch_ramp.h"
 #include "flatten/svg_writer.h"
 #include "flatten_figures.h"
+#include "flatten_params.h"
+#include "jobs.h"
 
 namespace qdml {
 
 namespace {
-
-// The values of the parameter "unit", in order; "model" writes no physical unit.
-const std::vector<std::string> kUnits = {"model", "mm", "cm", "in"};
 
 // Writes the engine's texture coordinates, stretch and its colour on every live face of m,
 // enabling m's per-wedge texture coordinates, face quality and face colour first. Touches
@@ -47,12 +47,12 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::FlattenResult& r) {
 }
 
 // The pattern files asked for, staged (written beside their targets, not yet in place).
-std::vector<std::unique_ptr<qd::meshio::PendingFile>> stage_pattern(const qd::FlattenResult& r,
-                                                                    const FlattenSettings& s) {
+std::vector<std::unique_ptr<qd::meshio::PendingFile>> stage_pattern(
+    const qd::FlattenResult& r, const qd::params::FlattenSettings& s) {
   std::vector<std::unique_ptr<qd::meshio::PendingFile>> files;
   if (!s.svg_file.empty()) {
     std::ostringstream svg;
-    qd::write_svg(svg, r.pattern, s.unit);
+    qd::write_svg(svg, r.pattern, qd::params::svg_unit(s));
     files.push_back(std::make_unique<qd::meshio::PendingFile>(s.svg_file, svg.str()));
   }
   if (!s.dxf_file.empty()) {
@@ -88,68 +88,22 @@ std::string flatten_info() {
 }
 
 FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
-  return filter_run(apply_flatten(m, has_face_quality, flatten_settings_from_values(values), cb), flatten_figures,
-                    {MeshPart::WedgeTexCoord, MeshPart::FaceQuality, MeshPart::FaceColor});
+  return run_declared(
+      qd::params::flatten_params(), values, [&](const qd::params::FlattenSettings& settings) {
+        return filter_run(apply_flatten(m, has_face_quality, settings, cb), flatten_figures,
+                          {MeshPart::WedgeTexCoord, MeshPart::FaceQuality, MeshPart::FaceColor});
+      });
 }
 
 }  // namespace
 
-std::vector<ParamSpec> flatten_parameter_specs() {
-  const qd::FlattenParams d;
-  return {
-      {"max_iter", "Max ARAP iterations",
-       "Stop flattening a piece after this many ARAP iterations (each one rotation fit per face "
-       "and one linear solve); 0 = the initial flattening only.",
-       ParamKind::Int, static_cast<double>(d.max_iterations), {}, ""},
-      {"tolerance", "ARAP tolerance",
-       "Stop a piece's iterations when its ARAP energy changes by less than this fraction in one "
-       "iteration (0 to below 1). Smaller is more exact and slower.",
-       ParamKind::Float, d.tolerance, {}, ""},
-      {"gap", "Gap between pieces",
-       "Space between pieces on the sheet, in model units; 0 = 5 % of the largest piece's longer "
-       "side.",
-       ParamKind::Float, d.gap, {}, ""},
-      {"notch_spacing", "Notch spacing",
-       "Notches mark where pieces meet along a seam (at its ends and every this many model units "
-       "along it), so they can be matched when sewn; 0 = an eighth of the largest piece's longer "
-       "side.",
-       ParamKind::Float, d.notch_spacing, {}, ""},
-      {"svg_file", "SVG pattern file",
-       "Write the cutting pattern as SVG to this file (outlines, labels, notches, scale bar); "
-       "empty = no SVG. A relative path is relative to MeshLab's working folder.",
-       ParamKind::SaveFile, 0, {}, ".svg"},
-      {"dxf_file", "DXF pattern file",
-       "Write the cutting pattern as DXF (AutoCAD R12 polylines, one layer per patch, notches on "
-       "layers of their own) to this file; empty = no DXF.",
-       ParamKind::SaveFile, 0, {}, ".dxf"},
-      {"unit", "Model unit",
-       "The model's length unit, written on the SVG's scale bar; mm, cm or in also give the SVG "
-       "that physical size, so it prints at 1:1.",
-       ParamKind::Enum, 0, kUnits, ""},
-  };
-}
-
-FlattenSettings flatten_settings_from_values(const ParamValues& values) {
-  FlattenSettings s;
-  qd::FlattenParams& p = s.params;
-  p.max_iterations = whole_value(values, "max_iter", p.max_iterations);
-  p.tolerance = number_value(values, "tolerance", p.tolerance);
-  p.gap = number_value(values, "gap", p.gap);
-  p.notch_spacing = number_value(values, "notch_spacing", p.notch_spacing);
-  s.svg_file = text_value(values, "svg_file");
-  s.dxf_file = text_value(values, "dxf_file");
-  const long unit = whole_value(values, "unit", 0);
-  s.unit = unit > 0 && unit < static_cast<long>(kUnits.size()) ? kUnits[static_cast<std::size_t>(unit)] : "";
-  return s;
-}
-
-FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const FlattenSettings& s,
+FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const qd::params::FlattenSettings& s,
                              vcg::CallBackPos* cb) {
   return guarded_run<qd::FlattenResult>([&](FlattenOutcome& out) {
     qd::FlattenProblem problem;
     const EngineMesh e = read_geometry(m, problem.V, problem.F);
     problem.patch = read_patch_ids(m, e, has_face_quality, true, out.log);
-    problem.params = s.params;
+    problem.params = s.engine;
     out.result = qd::flatten(problem, progress_of(cb));
     const auto files = stage_pattern(out.result, s);
     for (const auto& file : files) file->commit();
@@ -161,12 +115,12 @@ FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const FlattenSett
 }
 
 FilterSpec flatten_filter() {
-  return {"Quasi-Developable Flattening",
-          "compute_texcoord_quasi_developable_flattening",
+  return {qd::params::kFlattenJob.filter,
+          qd::params::kFlattenJob.python,
           flatten_info(),
           {FilterCategory::Texture},
           {MeshPart::WedgeTexCoord, MeshPart::FaceQuality, MeshPart::FaceColor},
-          [](const CMeshO&) { return flatten_parameter_specs(); },
+          [](const CMeshO&) { return filter_parameters(qd::params::flatten_params()); },
           run};
 }
 

@@ -1,36 +1,22 @@
 // The shared MeshLab adapter of the flattening (core/flatten): one source for every MeshLab
 // generation, compiled once per plugin variant against its CMeshO. It holds the filter's entry
-// in filter_table() (texts, parameter table, figures), the conversion CMeshO -> qd::FlattenProblem
-// and the write-back of qd::FlattenResult. No numerics (the engine does them) and no plugin-API
-// types (the per-generation plugin files map them).
+// in filter_table() (texts, parameters from params/flatten_params.h, figures), the conversion
+// CMeshO -> qd::FlattenProblem and the write-back of qd::FlattenResult. No numerics (the engine
+// does them) and no plugin-API types (the per-generation plugin files map them).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "filter_table.h"
-#include "flatten/flatten_problem.h"
 #include "flatten/flatten_result.h"
+#include "flatten_settings.h"
 #include "run_outcome.h"
 
 namespace qdml {
 
 // The filter's entry in filter_table().
 FilterSpec flatten_filter();
-
-// The parameter table (the same for every mesh; defaults from qd::FlattenParams).
-std::vector<ParamSpec> flatten_parameter_specs();
-
-// What the user chose.
-struct FlattenSettings {
-  qd::FlattenParams params;
-  std::string svg_file;  // empty = no SVG pattern
-  std::string dxf_file;  // empty = no DXF pattern
-  std::string unit;      // the model's length unit on the SVG ("", "mm", "cm" or "in")
-};
-
-// Settings from the values read back by name; a name missing from `values` keeps its default.
-FlattenSettings flatten_settings_from_values(const ParamValues& values);
 
 using FlattenOutcome = RunOutcome<qd::FlattenResult>;
 
@@ -40,7 +26,7 @@ using FlattenOutcome = RunOutcome<qd::FlattenResult>;
 // on m, per live face: wedge texture coordinates in model units, quality = signed stretch and
 // colour on a ramp symmetric about 0 (flatten/stretch_ramp.h). Nothing else of m changes. On
 // failure m and the files are untouched and FlattenOutcome::error says why. cb may be null.
-FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const FlattenSettings& s,
+FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const qd::params::FlattenSettings& s,
                              vcg::CallBackPos* cb);
 
 }  // namespace qdml

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "declared_parameters.h"
 #include "filter_table.h"
 
 #if __has_include(<common/parameters/rich_parameter/rich_file_save.h>)
@@ -64,42 +65,75 @@ inline int mesh_mask(const std::vector<MeshPart>& parts) {
   return mask;
 }
 
-// Adds the filter's parameters for mesh m to `list`, in table order (addParam stores a copy).
+// The tooltip: the parameter's help, then its unit and range.
+inline QString tooltip(const qd::params::ParamInfo& p) {
+  const std::string unit = qd::params::unit_name(p.unit), range = qd::params::range_text(p.range);
+  std::string tail = unit;
+  if (!range.empty()) tail += (tail.empty() ? "" : "; ") + range;
+  return qs(p.help + (tail.empty() ? "" : " (" + tail + ")"));
+}
+
+// Adds the filter's parameters for mesh m to `list`, in declaration order (addParam stores a
+// copy). Real: RichFloat, Integer: RichInt, Boolean: RichBool, Choice: RichEnum, Text:
+// RichString, SaveFile: the file-save parameter.
 inline void add_parameters(const FilterSpec& f, const CMeshO& m, RichParameterList& list) {
-  for (const ParamSpec& p : f.parameters(m)) {
-    const QString name = qs(p.name), label = qs(p.label), tip = qs(p.tooltip);
-    switch (p.kind) {
-      case ParamKind::Float:
-        list.addParam(RichFloat(name, static_cast<Scalarm>(p.value), label, tip));
+  using qd::params::Type;
+  for (const qd::params::ParamInfo& p : f.parameters(m)) {
+    const QString name = qs(p.name), label = qs(p.label), tip = tooltip(p);
+    const qd::params::Value& v = p.default_value;
+    switch (p.type) {
+      case Type::Real:
+        list.addParam(RichFloat(name, static_cast<Scalarm>(std::get<double>(v)), label, tip));
         break;
-      case ParamKind::Int: list.addParam(RichInt(name, static_cast<int>(p.value), label, tip)); break;
-      case ParamKind::Bool: list.addParam(RichBool(name, p.value != 0, label, tip)); break;
-      case ParamKind::Enum: {
+      case Type::Integer:
+        list.addParam(RichInt(name, static_cast<int>(std::get<double>(v)), label, tip));
+        break;
+      case Type::Boolean:
+        list.addParam(RichBool(name, std::get<double>(v) != 0, label, tip));
+        break;
+      case Type::Choice: {
         QStringList items;
-        for (const std::string& item : p.items) items << qs(item);
-        list.addParam(RichEnum(name, static_cast<int>(p.value), items, label, tip));
+        for (const std::string& item : p.choices) items << qs(item);
+        list.addParam(RichEnum(name, choice_index(p, std::get<std::string>(v)), items, label, tip));
         break;
       }
-      case ParamKind::SaveFile:
+      case Type::Text:
+        list.addParam(RichString(name, qs(std::get<std::string>(v)), label, tip));
+        break;
+      case Type::SaveFile:
         list.addParam(RichSaveFileParameter(name, QString(), qs(p.extension), label, tip));
         break;
     }
   }
 }
 
-// The user's values by name, for the parameters present in `params`.
+// The user's values by name, for the filter's parameters present in `params`.
 inline ParamValues read_values(const FilterSpec& f, const CMeshO& m,
                                const RichParameterList& params) {
+  using qd::params::Type;
   ParamValues values;
-  for (const ParamSpec& p : f.parameters(m)) {
+  for (const qd::params::ParamInfo& p : f.parameters(m)) {
     const QString name = qs(p.name);
     if (!params.hasParameter(name)) continue;
-    switch (p.kind) {
-      case ParamKind::Float: values[p.name] = static_cast<double>(params.getFloat(name)); break;
-      case ParamKind::Int: values[p.name] = static_cast<double>(params.getInt(name)); break;
-      case ParamKind::Bool: values[p.name] = params.getBool(name) ? 1.0 : 0.0; break;
-      case ParamKind::Enum: values[p.name] = static_cast<double>(params.getEnum(name)); break;
-      case ParamKind::SaveFile: values[p.name] = params.getSaveFileName(name).toStdString(); break;
+    switch (p.type) {
+      case Type::Real:
+        values[p.name] = static_cast<double>(params.getFloat(name));
+        break;
+      case Type::Integer:
+        values[p.name] = static_cast<double>(params.getInt(name));
+        break;
+      case Type::Boolean:
+        values[p.name] = params.getBool(name) ? 1.0 : 0.0;
+        break;
+      case Type::Choice:
+        values[p.name] = static_cast<double>(params.getEnum(name));
+        break;
+      case Type::Text:
+        values[p.name] = params.getString(name).toStdString();
+        break;
+      case Type::SaveFile:
+        values[p.name] = params.getSaveFileName(name).toStdString();
+        break;
     }
   }
   return values;

@@ -5,10 +5,13 @@
 
 #include "engine_mesh.h"  // first: MeshLab's mesh type
 
+#include "declared_parameters.h"
+#include "jobs.h"
 #include "printf_string.h"
 #include "segment/patch_color.h"
 #include "segment/segment.h"
 #include "segment_figures.h"
+#include "segment_params.h"
 
 namespace qdml {
 
@@ -47,65 +50,18 @@ std::string filter_info() {
          "Segmentation</i>, Computer Graphics Forum 24(3), Eurographics 2005.";
 }
 
-// The table's run: the values as SegmentSettings, apply_segment(), and on success the figures.
+// The table's run: the values as settings, apply_segment(), and on success the figures.
 FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::CallBackPos* cb) {
-  const SegmentSettings settings = segment_settings_from_values(values);
-  return filter_run(apply_segment(m, has_face_quality, settings, cb), segment_figures,
-                    {MeshPart::FaceQuality, MeshPart::FaceColor});
+  return run_declared(
+      qd::params::segment_params(), values, [&](const qd::params::SegmentSettings& settings) {
+        return filter_run(apply_segment(m, has_face_quality, settings, cb), segment_figures,
+                          {MeshPart::FaceQuality, MeshPart::FaceColor});
+      });
 }
 
 }  // namespace
 
-std::vector<ParamSpec> segment_parameter_specs() {
-  const qd::SegmentParams d;
-  const SegmentSettings ds;
-  const auto flag = [](bool b) { return b ? 1.0 : 0.0; };
-  return {
-      {"max_error_deg", "Largest fit error (deg)",
-       "The largest angle between a face normal and its patch's fitted cone, cylinder or plane: "
-       "patches are split until every face is within it. Smaller gives more, flatter patches "
-       "(20: pieces meeting at 40 degrees or more are told apart).",
-       ParamKind::Float, d.max_error_deg, {}, ""},
-      {"min_faces", "Smallest patch (faces)",
-       "No patch has fewer faces (unless the part between kept borders is smaller). A part too "
-       "curved to fit at this size becomes one patch over the limit, and the log says so.",
-       ParamKind::Int, static_cast<double>(d.min_faces), {}, ""},
-      {"min_area", "Smallest patch (area fraction)",
-       "When above 0, no patch has less than this fraction of the mesh area.", ParamKind::Float,
-       d.min_area, {}, ""},
-      {"target_patches", "Target patch count",
-       "The number of patches wanted; 0 = as many as the fit needs. More are merged (best "
-       "fitting first, even over the limit), fewer are split.",
-       ParamKind::Int, static_cast<double>(d.target_patches), {}, ""},
-      {"keep_patches", "Keep existing patches",
-       "On: the per-face quality holds existing patch ids; each existing patch whose faces fit "
-       "within the largest fit error is kept whole, only the others are split.",
-       ParamKind::Bool, flag(ds.keep_patches), {}, ""},
-      {"selection_border", "Keep selection border",
-       "On: no patch crosses the border between selected and unselected faces.", ParamKind::Bool,
-       flag(ds.selection_border), {}, ""},
-      {"crease_deg", "Crease angle (deg)",
-       "Where the mesh is split, edges whose two faces' normals differ by more than this stay "
-       "patch borders, so no patch folds over a sharp edge; 180 = none. (A part that fits one "
-       "cone as a whole, such as two planes meeting at a fold, is kept whole.)",
-       ParamKind::Float, d.crease_deg, {}, ""},
-  };
-}
-
-SegmentSettings segment_settings_from_values(const ParamValues& values) {
-  SegmentSettings s;
-  qd::SegmentParams& p = s.params;
-  p.max_error_deg = number_value(values, "max_error_deg", p.max_error_deg);
-  p.min_faces = whole_value(values, "min_faces", p.min_faces);
-  p.min_area = number_value(values, "min_area", p.min_area);
-  p.target_patches = whole_value(values, "target_patches", p.target_patches);
-  s.keep_patches = flag_value(values, "keep_patches", s.keep_patches);
-  s.selection_border = flag_value(values, "selection_border", s.selection_border);
-  p.crease_deg = number_value(values, "crease_deg", p.crease_deg);
-  return s;
-}
-
-SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const SegmentSettings& s,
+SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const qd::params::SegmentSettings& s,
                              vcg::CallBackPos* cb) {
   return guarded_run<qd::SegmentResult>([&](SegmentOutcome& out) {
     qd::SegmentProblem problem;
@@ -116,7 +72,7 @@ SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const SegmentSett
       out.log.push_back(format("the border of %zu selected faces kept",
                                static_cast<std::size_t>(std::count(problem.selected.begin(),
                                                                    problem.selected.end(), 1))));
-    problem.params = s.params;
+    problem.params = s.engine;
     out.result = qd::segment(problem, progress_of(cb));
     write_back(m, e, out.result);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
@@ -126,12 +82,12 @@ SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const SegmentSett
 FilterSpec segment_filter() {
   using C = FilterCategory;
   using P = MeshPart;
-  return {"Quasi-Developable Segmentation",
-          "compute_segmentation_quasi_developable",
+  return {qd::params::kSegmentJob.filter,
+          qd::params::kSegmentJob.python,
           filter_info(),
           {C::Quality, C::FaceColoring},
           {P::FaceQuality, P::FaceColor},
-          [](const CMeshO&) { return segment_parameter_specs(); },
+          [](const CMeshO&) { return filter_parameters(qd::params::segment_params()); },
           run};
 }
 

@@ -38,7 +38,7 @@ def test_one_patch_figures_hang_together():
 
 
 def test_patches_come_from_face_quality_and_fixed_targets_factor_once():
-    r = run("--grid", "3000", "--patches", "4", "--runs", "1", "--", "--targets", "fixed",
+    r = run("--grid", "3000", "--patches", "4", "--runs", "1", "--", "--target-mode", "fixed",
             "--developability", "curve", "--max-iter", "10", "--stop-abd", "0")
     assert r["patches"] == 4
     # one per patch, and one more per back-off of the developability weights (two at most),

@@ -1,4 +1,4 @@
-"""The flattening benchmark (bench/qd_flatten_bench) against ground truth: the shared
+"""The flattening benchmark (bench/qd_flatten_bench) against ground truth: tests/data/
 developable_crumpled_crane.ply is exactly developable and its per-corner texcoord is its exact
 flattening, so our pattern's edge lengths must match both the 3D edges and that pattern to 0.1 %.
 The SVG it writes must parse as XML and the DXF as group-code pairs. Timings are not asserted."""
@@ -13,10 +13,7 @@ import pytest
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD = pathlib.Path(os.environ.get("QD_BUILD_DIR", REPO / "build"))
 BENCH = BUILD / "bin" / "qd_flatten_bench"
-SHARED = pathlib.Path(os.environ.get("QD_SHARED_MESHES", REPO.parent / "shared" / "meshes"))
-if not SHARED.is_dir():
-    SHARED = pathlib.Path("/work/shared/meshes")
-CRANE = SHARED / "developable_crumpled_crane.ply"
+CRANE = REPO / "tests" / "data" / "developable_crumpled_crane.ply"
 
 
 def run(*args):
@@ -32,9 +29,8 @@ def dxf_groups(path):
     return [(int(lines[i]), lines[i + 1].strip()) for i in range(0, len(lines), 2)]
 
 
-@pytest.mark.skipif(not CRANE.exists(), reason=f"{CRANE} not present")
 def test_crane_flattens_to_its_known_pattern(tmp_path):
-    r = run("--mesh", CRANE, "--svg", tmp_path / "crane.svg", "--dxf", tmp_path / "crane.dxf")
+    r = run("--mesh", CRANE, "--svg-file", tmp_path / "crane.svg", "--dxf-file", tmp_path / "crane.dxf")
     assert r["pieces"] == 1
     assert r["max_edge_error_vs_3d"] < 1e-3
     assert r["max_edge_error_vs_texcoord"] < 1e-3
@@ -48,7 +44,7 @@ def test_crane_flattens_to_its_known_pattern(tmp_path):
 
 
 def test_patches_of_a_sheet_become_pieces_that_parse(tmp_path):
-    r = run("--grid", "20000", "--patches", "4", "--svg", tmp_path / "p.svg", "--dxf", tmp_path / "p.dxf",
+    r = run("--grid", "20000", "--patches", "4", "--svg-file", tmp_path / "p.svg", "--dxf-file", tmp_path / "p.dxf",
             "--unit", "cm")
     assert r["pieces"] == 4
     assert r["max_edge_error_vs_3d"] < 0.05  # a bumpy sheet: near-developable, not exactly

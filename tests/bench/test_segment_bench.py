@@ -32,7 +32,7 @@ def test_torus_patches_are_the_same_for_every_thread_count():
 
 def test_a_mesh_file_is_segmented_and_then_approximated():
     (r,) = run("--mesh", os.path.join(SAMPLES, "patches.ply"), "--runs", "1", "--threads", "1",
-               "--max-error", "15", "--approximate")
+               "--max-error-deg", "15", "--approximate")
     assert r["max_error_limit"] == 15 and r["patches"] >= 1
     assert "abd_reduction" in r and r["max_move_ae"] >= 0
 

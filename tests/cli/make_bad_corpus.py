@@ -160,7 +160,7 @@ def cases():
         ("index_out_of_range", ply_ascii(V, F[:-1] + [(0, 1, len(V))]), [], "fail"),
         ("nan_coordinates", ply_ascii([(math.nan, 0, 0)] + V[1:], F), [], "fail"),
         ("inf_coordinates", ply_ascii(V[:-1] + [(0, math.inf, 0)], F), [], "fail"),
-        ("negative_tolerance", good, ["--tolerance", "-1"], "fail"),
+        ("negative_tolerance", good, ["--tolerance-ae", "-1"], "fail"),
         ("zero_iterations", good, ["--max-iter", "0"], "fail"),
         ("nan_weight", good, ["--weight", "nan"], "fail"),
         ("zero_area_faces", ply_ascii(V + [V[0], V[1]], F + [(0, 1, len(V) + 1)]), [], "odd"),
@@ -222,9 +222,9 @@ PLUGIN_OUTCOMES = {
     "wrong_vertex_count": LOADER, "index_out_of_range": LOADER,
     "nan_coordinates": r"1 vertex with NaN or infinite coordinates \(first: vertex 0\)",
     "inf_coordinates": r"1 vertex with NaN or infinite coordinates \(first: vertex 168\)",
-    "negative_tolerance": r"deformation tolerance is -1: use a positive distance",
-    "zero_iterations": r"maximum number of iterations is 0: use a value from 1",
-    "nan_weight": r"developability weight w is nan: use a positive value",
+    "negative_tolerance": r"Tolerance \(AE\) \(tolerance_ae\) must be greater than 0, got -1",
+    "zero_iterations": r"Max iterations \(max_iter\) must be at least 1, got 0",
+    "nan_weight": r"Developability weight \(weight\) must be a finite number, got nan",
     "zero_area_faces": r"1 zero-area face .*Remove Zero Area Faces",
     "duplicate_faces": r"5 duplicate faces \(first: faces 0 and 288 .*Remove Duplicate Faces",
     "inconsistent_orientation": r"Patch 0 is not consistently oriented .*Re-Orient",
@@ -240,10 +240,10 @@ PLUGIN_OUTCOMES = {
     "non_manifold_edge": None, "polo_placket": None, "panels_with_scraps": None,
 }
 
-# The command's options of the corpus -> the filter's parameters (same meaning; the filter's
-# tolerance is in model units, the command's in AE, which only matters for positive values).
+# The command's options of the corpus -> the filter's parameters (the same parameters: one name
+# and one meaning in every front end).
 DEVELOPABILITY = ["curve", "defect", "both", "auto"]  # the filter's enum values, in order
-_PLUGIN_PARAMETER = {"--tolerance": ("tolerance", float), "--max-iter": ("max_iter", int),
+_PLUGIN_PARAMETER = {"--tolerance-ae": ("tolerance_ae", float), "--max-iter": ("max_iter", int),
                      "--weight": ("weight", float),
                      "--developability": ("developability", DEVELOPABILITY.index)}
 
@@ -266,9 +266,9 @@ def flatten_cases():
     flattened, with their distortion reported."""
     good = ply_ascii(*grid(12))
     out = [(name, data, [], expect) for name, data, args, expect in cases() if not args]
-    out += [("negative_tolerance", good, ["--tolerance", "-1"], "fail"),
-            ("tolerance_one", good, ["--tolerance", "1"], "fail"),
-            ("negative_iterations", good, ["--max-iter", "-1"], "fail"),
+    out += [("negative_tolerance", good, ["--arap-tolerance", "-1"], "fail"),
+            ("tolerance_one", good, ["--arap-tolerance", "1"], "fail"),
+            ("negative_iterations", good, ["--arap-max-iter", "-1"], "fail"),
             ("nan_gap", good, ["--gap", "nan"], "fail"),
             ("negative_notch_spacing", good, ["--notch-spacing", "-1"], "fail")]
     return out
@@ -277,10 +277,10 @@ def flatten_cases():
 # The flattening filter's parameters for the options of flatten_cases().
 # The segmentation's own bad value of the same kind for each approximation option of cases()
 # (None: the option only steers the approximation and is dropped), and its filter parameters.
-_SEGMENT_OPTION = {("--tolerance", "-1"): ["--max-error", "-1"], ("--max-iter", "0"): ["--min-faces", "0"],
-                   ("--weight", "nan"): ["--crease", "nan"], ("--developability", "curve"): []}
-SEGMENT_PARAMETERS = {"--max-error": ("max_error_deg", float), "--min-faces": ("min_faces", int),
-                      "--crease": ("crease_deg", float)}
+_SEGMENT_OPTION = {("--tolerance-ae", "-1"): ["--max-error-deg", "-1"], ("--max-iter", "0"): ["--min-faces", "0"],
+                   ("--weight", "nan"): ["--crease-deg", "nan"], ("--developability", "curve"): []}
+SEGMENT_PARAMETERS = {"--max-error-deg": ("max_error_deg", float), "--min-faces": ("min_faces", int),
+                      "--crease-deg": ("crease_deg", float)}
 
 
 def segment_cases():
@@ -290,7 +290,7 @@ def segment_cases():
              expect) for name, data, args, expect in cases()]
 
 
-FLATTEN_PARAMETERS = {"--tolerance": ("tolerance", float), "--max-iter": ("max_iter", int),
+FLATTEN_PARAMETERS = {"--arap-tolerance": ("arap_tolerance", float), "--arap-max-iter": ("arap_max_iter", int),
                       "--gap": ("gap", float), "--notch-spacing": ("notch_spacing", float)}
 
 # What the flattening filter does with each of flatten_cases(), as PLUGIN_OUTCOMES.
@@ -304,11 +304,11 @@ FLATTEN_PLUGIN_OUTCOMES = {
         "patch_all_selected", "closed_sphere_defect_rows", "flat_patch", "huge_coordinates",
         "tiny_coordinates", "bumpy_cylinder", "non_manifold_edge", "polo_placket",
         "panels_with_scraps", "hundred_thousand_patches")},
-    "negative_tolerance": r"ARAP tolerance is -1: it is a relative change of the energy",
-    "tolerance_one": r"ARAP tolerance is 1: it is a relative change of the energy",
-    "negative_iterations": r"maximum number of ARAP iterations is -1: use a value from 0",
-    "nan_gap": r"gap between pieces is nan: use a distance >= 0",
-    "negative_notch_spacing": r"notch spacing is -1: use a distance >= 0",
+    "negative_tolerance": r"ARAP tolerance \(arap_tolerance\) must not be negative, got -1",
+    "tolerance_one": r"ARAP tolerance \(arap_tolerance\) must be below 1, got 1",
+    "negative_iterations": r"Max ARAP iterations \(arap_max_iter\) must not be negative, got -1",
+    "nan_gap": r"Gap between pieces \(gap\) must be a finite number, got nan",
+    "negative_notch_spacing": r"Notch spacing \(notch_spacing\) must not be negative, got -1",
 }
 
 

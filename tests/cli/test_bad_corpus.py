@@ -24,7 +24,7 @@ WARNED = make_bad_corpus.warned_cases()
 # (subcommand, case, the files it writes besides OUTPUT)
 RUNS = [("approximate", c, ["--report"]) for c in CASES] + \
        [("segment", c, ["--report"]) for c in make_bad_corpus.segment_cases()] + \
-       [("flatten", c, ["--report", "--svg", "--dxf"]) for c in make_bad_corpus.flatten_cases()]
+       [("flatten", c, ["--report", "--svg-file", "--dxf-file"]) for c in make_bad_corpus.flatten_cases()]
 
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 
@@ -74,8 +74,8 @@ def positions(path):
 
 @pytest.mark.parametrize("name", sorted(WARNED))
 def test_warned_case_keeps_its_part_and_does_the_rest(name, tmp_path):
-    """A run that must leave part of the mesh as it is succeeds, says so once on stderr and in
-    the report (count and first example), keeps those vertices bit-identical and moves others."""
+    """A run that must leave part of the mesh as it is succeeds, says so once on stderr (with or
+    without --quiet: not again in the log on stdout) and in the report (count and first example), keeps those vertices bit-identical and moves others."""
     data, warning, fixed, others = WARNED[name]
     src, out, report = tmp_path / f"{name}.ply", tmp_path / "out.ply", tmp_path / "r.json"
     src.write_bytes(data)
@@ -84,7 +84,11 @@ def test_warned_case_keeps_its_part_and_does_the_rest(name, tmp_path):
     said = r.stderr.splitlines()
     assert len(said) == 1 and said[0].startswith("quasidev: warning: "), r.stderr
     assert re.search(warning, said[0]), said[0]
-    assert json.loads(report.read_text())["warnings"] == [said[0].removeprefix("quasidev: warning: ")]
+    text = said[0].removeprefix("quasidev: warning: ")
+    assert json.loads(report.read_text())["warnings"] == [text]
+    loud = run(src, out, "--report", report)  # without --quiet: the log, but the warning only once
+    assert loud.returncode == 0 and loud.stdout.strip(), loud.stderr
+    assert (loud.stdout + loud.stderr).count(text) == 1, loud.stdout + loud.stderr
     before, after = positions(src), positions(out)
     assert [after[v] for v in fixed] == [before[v] for v in fixed]
     assert any(after[v] != before[v] for v in others)

@@ -3,7 +3,7 @@ in model units, every other attribute kept bit for bit, the SVG and DXF patterns
 report's per-piece figures, and bad command lines or files that leave nothing written.
 
 Measures: scripts/flat_measures.py (numpy, independent of the engine). Meshes: sample_meshes/
-(cone_panels.ply is exactly developable) and, where present, the shared developer meshes.
+(cone_panels.ply is exactly developable) and tests/data/ (public meshes).
 """
 import json
 import pathlib
@@ -16,7 +16,7 @@ import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from plyfile import column, element, prop_type, read_ply, write_ply  # noqa: E402
-from test_quasidev_cli import BINARY, REPO, SHARED, assert_clean_failure, run  # noqa: E402
+from test_quasidev_cli import BINARY, DATA, REPO, assert_clean_failure, run  # noqa: E402
 
 sys.path.insert(0, str(REPO / "scripts"))
 import flat_measures  # noqa: E402
@@ -24,8 +24,8 @@ import flat_measures  # noqa: E402
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 
 CONE = REPO / "sample_meshes" / "cone_panels.ply"
-CRANE = SHARED / "developable_crumpled_crane.ply"
-SHIRT = SHARED / "garment_shirt_initial_diffavatar.ply"
+CRANE = DATA / "developable_crumpled_crane.ply"
+SHIRT = DATA / "garment_shirt_initial_diffavatar.ply"
 
 
 def flattened(path):
@@ -87,9 +87,8 @@ def test_a_tube_gets_one_cut_and_still_its_true_lengths(tmp_path):
     assert flat_measures.edge_length_errors(V, F, UV).max() < 1e-3
 
 
-@pytest.mark.skipif(not CRANE.exists(), reason="shared mesh missing")
 def test_crumpled_crane_flattens_to_its_known_pattern_lengths(tmp_path):
-    """The shared exactly developable crane: edge lengths and area to 0.1 %, and its flat
+    """The exactly developable crumpled crane: edge lengths and area to 0.1 %, and its flat
     pattern (its texture coordinates) has the same edge lengths as ours."""
     out, report, _ = flatten(tmp_path, CRANE)
     V, F, UV = flattened(out)
@@ -143,7 +142,7 @@ def test_everything_but_texcoord_quality_and_face_colour_is_kept_bit_for_bit(tmp
 
 
 def test_face_quality_is_the_signed_stretch_with_a_ramp_centred_on_green(tmp_path):
-    mesh = SHIRT if SHIRT.exists() else REPO / "sample_meshes" / "patches.ply"
+    mesh = SHIRT
     out, report, _ = flatten(tmp_path, mesh)
     V, F, UV = flattened(out)
     res, _ = read_ply(out)
@@ -163,7 +162,7 @@ def test_face_quality_is_the_signed_stretch_with_a_ramp_centred_on_green(tmp_pat
 
 
 def test_pieces_lie_side_by_side_without_overlap(tmp_path):
-    mesh = SHIRT if SHIRT.exists() else REPO / "sample_meshes" / "patches.ply"
+    mesh = SHIRT
     _, report, _ = flatten(tmp_path, mesh)
     boxes = [p["box"] for p in report["pieces"]]
     for i, a in enumerate(boxes):
@@ -173,17 +172,18 @@ def test_pieces_lie_side_by_side_without_overlap(tmp_path):
 
 
 def test_output_does_not_depend_on_the_number_of_threads(tmp_path):
-    mesh = SHIRT if SHIRT.exists() else REPO / "sample_meshes" / "patches.ply"
+    mesh = SHIRT
     one, _, _ = flatten(tmp_path, mesh, "--threads", "1", "--quiet", name="one")
     two, _, _ = flatten(tmp_path, mesh, "--threads", "2", "--quiet", name="two")
     assert one.read_bytes() == two.read_bytes()
 
 
 def test_report_names_every_piece_figure(tmp_path):
-    _, report, r = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--max-iter", "7",
-                           "--tolerance", "0", "--gap", "0.5", "--notch-spacing", "0.3")
-    assert report["parameters"] == {"max_iter": 7, "tolerance": 0.0, "gap": 0.5, "notch_spacing": 0.3,
-                                    "solver": "auto", "threads": 0, "unit": "model"}
+    _, report, r = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--arap-max-iter", "7",
+                           "--arap-tolerance", "0", "--gap", "0.5", "--notch-spacing", "0.3")
+    assert report["parameters"] == {"arap_max_iter": 7, "arap_tolerance": 0.0, "gap": 0.5,
+                                    "notch_spacing": 0.3, "svg_file": "", "dxf_file": "", "unit": "model",
+                                    "solver": "auto", "threads": 0}
     assert report["faces"] == sum(p["faces"] for p in report["pieces"])
     for p, line in zip(report["pieces"], r.stdout.splitlines()):
         for key in ("patch", "component", "label", "faces", "vertices", "cut", "iterations",
@@ -202,7 +202,7 @@ def test_report_names_every_piece_figure(tmp_path):
 
 def test_svg_pattern_is_xml_with_every_piece_notches_and_a_scale_bar(tmp_path):
     svg = tmp_path / "p.svg"
-    _, report, _ = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--svg", svg, "--unit", "cm")
+    _, report, _ = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--svg-file", svg, "--unit", "cm")
     root = ET.parse(svg).getroot()
     ns = "{http://www.w3.org/2000/svg}"
     assert root.tag == f"{ns}svg" and root.get("width").endswith("cm")
@@ -221,7 +221,7 @@ def test_svg_pattern_is_xml_with_every_piece_notches_and_a_scale_bar(tmp_path):
 
 def test_dxf_pattern_reads_back_as_r12_polylines_per_patch(tmp_path):
     dxf = tmp_path / "p.dxf"
-    _, report, _ = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--dxf", dxf)
+    _, report, _ = flatten(tmp_path, REPO / "sample_meshes" / "patches.ply", "--dxf-file", dxf)
     pairs = dxf_pairs(dxf)
     assert pairs[-1] == (0, "EOF")
     assert (9, "$ACADVER") in pairs and pairs[pairs.index((9, "$ACADVER")) + 1] == (1, "AC1009")
@@ -242,25 +242,25 @@ def test_dxf_pattern_reads_back_as_r12_polylines_per_patch(tmp_path):
 
 
 @pytest.mark.parametrize("option,value,hint", [
-    ("--max-iter", "-1", "whole number from 0 to 100000"),
-    ("--max-iter", "2.5", "whole number"),
-    ("--tolerance", "1", "must be below 1"),
-    ("--tolerance", "-0.1", "must not be negative"),
+    ("--arap-max-iter", "-1", "whole number from 0 to 100000"),
+    ("--arap-max-iter", "2.5", "whole number"),
+    ("--arap-tolerance", "1", "must be below 1"),
+    ("--arap-tolerance", "-0.1", "must not be negative"),
     ("--gap", "nan", "expects a finite number"),
     ("--notch-spacing", "-2", "must not be negative"),
     ("--unit", "km", "model|mm|cm|in"),
-    ("--threads", "-1", "whole number from 0 (all cores)"),
+    ("--threads", "-1", "whole number from 0 to 1024"),
     ("--solver", "magic", "auto|cholmod|eigen-llt|eigen-ldlt"),
 ])
 def test_bad_option_names_option_value_and_writes_nothing(option, value, hint, tmp_path):
     out, svg = tmp_path / "out.ply", tmp_path / "p.svg"
-    r = run("flatten", CONE, out, "--svg", svg, option, value)
+    r = run("flatten", CONE, out, "--svg-file", svg, option, value)
     assert_clean_failure(r, out, status=2)
     assert option in r.stderr and value in r.stderr and hint in r.stderr, r.stderr
     assert not svg.exists()
 
 
-@pytest.mark.parametrize("clash", [["--svg", "OUT"], ["--dxf", "IN"], ["--svg", "X", "--dxf", "X"],
+@pytest.mark.parametrize("clash", [["--svg-file", "OUT"], ["--dxf-file", "IN"], ["--svg-file", "X", "--dxf-file", "X"],
                                    ["--report", "X", "--svg", "X"]])
 def test_two_outputs_in_one_file_are_refused(clash, tmp_path):
     out = tmp_path / "out.ply"
@@ -273,7 +273,7 @@ def test_two_outputs_in_one_file_are_refused(clash, tmp_path):
 def test_an_unwritable_pattern_leaves_every_file_as_it_was(tmp_path):
     out, report = tmp_path / "out.ply", tmp_path / "r.json"
     out.write_bytes(b"precious")
-    r = run("flatten", CONE, out, "--report", report, "--svg", tmp_path / "no" / "such" / "p.svg")
+    r = run("flatten", CONE, out, "--report", report, "--svg-file", tmp_path / "no" / "such" / "p.svg")
     assert r.returncode == 1 and r.stderr.count("\n") == 1, r.stderr
     assert "p.svg" in r.stderr
     assert out.read_bytes() == b"precious" and not report.exists()
@@ -285,11 +285,12 @@ def test_help_lists_flatten_and_its_defaults():
     assert re.search(r"^Subcommands:\napproximate\n.*\nflatten\n", top.stdout, re.M | re.S), top.stdout
     sub = run("flatten", "--help")
     assert sub.returncode == 0 and "Usage: quasidev flatten [OPTIONS] INPUT OUTPUT" in sub.stdout
-    for option, default in (("--max-iter N", "100"), ("--tolerance T", "0.0001"), ("--gap G", "0"),
-                            ("--notch-spacing S", "0"), ("--unit U", "model"), ("--threads N", "0")):
-        entry = re.search(rf"  {option} .*?(?=\n  -|\n\n)", sub.stdout, re.S).group(0)
-        assert f"(default {default})" in entry, entry
-    for option in ("--svg", "--dxf", "--report", "--progress", "--quiet", "--overwrite-input"):
+    for option, default in (("--arap-max-iter,--max-iter N", "100"), ("--arap-tolerance,--tolerance X", "0.0001"),
+                            ("--gap X", "0"), ("--notch-spacing X", "0"), ("--unit NAME", "model"),
+                            ("--threads N", "0")):
+        entry = re.search(rf"  {option}\s.*?(?=\n  -|\n\n)", sub.stdout, re.S).group(0)
+        assert f"default {default})" in " ".join(entry.split()), entry
+    for option in ("--svg-file", "--dxf-file", "--report", "--progress", "--quiet", "--overwrite-input"):
         assert option in sub.stdout
 
 
@@ -299,9 +300,7 @@ def test_progress_quiet_and_obj_groups(tmp_path):
     assert r.returncode == 0 and r.stdout == "", r.stderr
     progress = [l for l in r.stderr.splitlines() if l.startswith("quasidev: ")]
     assert progress and progress[-1].startswith("quasidev: 100%"), r.stderr
-    obj = SHARED / "obj" / "garment_shirt_initial_diffavatar.obj"
-    if not obj.exists():
-        pytest.skip("shared OBJ missing")
+    obj = DATA / "garment_shirt_initial_diffavatar.obj"
     _, from_obj, _ = flatten(tmp_path, obj, "--quiet", name="obj")
     _, from_ply, _ = flatten(tmp_path, SHIRT, "--quiet", name="ply")
     assert from_obj["has_patch_ids"]

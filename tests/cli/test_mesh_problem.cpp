@@ -29,8 +29,8 @@ cli::ApproximateOptions options(std::vector<std::string> args) {
 }
 
 TEST(MeshProblem, TolerancesAreInUnitsOfTheAverageEdge) {
-  cli::ApproximateOptions o = options({"a.ply", "b.ply", "--tolerance", "0.5", "--patch-tolerance",
-                                       "9=2", "--max-iter", "4"});
+  cli::ApproximateOptions o = options({"a.ply", "b.ply", "--tolerance-ae", "0.5",
+                                       "--patch-tolerance-ae", "9=2", "--max-iter", "4"});
   const Problem p = cli::make_problem(square(), o);
   const double ae = (4 + std::sqrt(2.0)) / 5;
   EXPECT_NEAR(p.params.tolerance, 0.5 * ae, 1e-15);
@@ -41,7 +41,11 @@ TEST(MeshProblem, TolerancesAreInUnitsOfTheAverageEdge) {
   EXPECT_EQ(p.F(1, 2), 3);
   EXPECT_EQ(p.patch, (std::vector<int>{4, 9}));
   EXPECT_EQ(p.constrained, (std::vector<char>{0, 1, 0, 0}));
-  o.patch_tolerance_ae = {{5, 1.0}};
+  o.settings.tolerance_model = 0.25;  // model units replace AE
+  EXPECT_EQ(cli::make_problem(square(), o).params.tolerance, 0.25);
+  EXPECT_TRUE(
+      cli::make_problem(square(), options({"a.ply", "b.ply", "--no-use-patches"})).patch.empty());
+  o.settings.patch_tolerance_ae = {{5, 1.0}};
   EXPECT_NE(error_of([&] { cli::make_problem(square(), o); }).find("names patch 5"),
             std::string::npos);
 }
@@ -49,7 +53,8 @@ TEST(MeshProblem, TolerancesAreInUnitsOfTheAverageEdge) {
 TEST(MeshProblem, ConstraintFileAddsToTheSelection) {
   const auto path = std::filesystem::temp_directory_path() / "qd_cli_test_constraints.txt";
   std::ofstream(path) << "3\n";
-  const cli::ApproximateOptions o = options({"a.ply", "b.ply", "--constraints", path.string()});
+  const cli::ApproximateOptions o =
+      options({"a.ply", "b.ply", "--constraints-file", path.string()});
   EXPECT_EQ(cli::make_problem(square(), o).constrained, (std::vector<char>{0, 1, 0, 1}));
   std::filesystem::remove(path);
 }
@@ -75,7 +80,7 @@ TEST(MeshProblem, OutputFieldsFollowTheQualityChoice) {
   ASSERT_EQ(f.colors.size(), 3u);
   EXPECT_EQ(f.colors[0], (std::array<unsigned char, 3>{255, 0, 0}));   // lowest K: red
   EXPECT_EQ(f.colors[2], (std::array<unsigned char, 3>{0, 0, 255}));   // highest K: blue
-  o = options({"a.ply", "b.ply", "--quality", "displacement", "--no-color"});
+  o = options({"a.ply", "b.ply", "--output-quality", "displacement", "--no-colorize"});
   f = cli::output_fields(r, o, 3);
   EXPECT_EQ(f.quality, r.displacement);
   EXPECT_TRUE(f.colors.empty());

@@ -1,8 +1,8 @@
 """End-to-end tests of the built `quasidev` command.
 
 The binary is $QUASIDEV if set, else $QD_BUILD_DIR/bin/quasidev (QD_BUILD_DIR defaults to the
-repository's build/). Meshes: sample_meshes/*.ply of the repository and, where present, the shared
-developer meshes (../shared/meshes beside the repository, or $QD_SHARED_MESHES).
+repository's build/). Meshes: sample_meshes/*.ply (generated) and tests/data/ (public meshes, see
+tests/data/SOURCES.md), both in the repository.
 """
 import json
 import math
@@ -19,15 +19,11 @@ from plyfile import column, element, has, prop_type, read_ply, write_ply  # noqa
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD = pathlib.Path(os.environ.get("QD_BUILD_DIR", REPO / "build"))
 BINARY = pathlib.Path(os.environ.get("QUASIDEV", BUILD / "bin" / "quasidev"))
-SHARED = pathlib.Path(os.environ.get("QD_SHARED_MESHES", REPO.parent / "shared" / "meshes"))
-if not SHARED.is_dir():
-    SHARED = pathlib.Path("/work/shared/meshes")
+DATA = REPO / "tests" / "data"
 
 SAMPLES = sorted((REPO / "sample_meshes").glob("*.ply"))
-# Shared meshes the command must handle: texture coordinates, face quality, int patch, patches.
-SHARED_GOOD = [SHARED / n for n in ("developable_crumpled_crane.ply",
-                                    "garment_shirt_initial_diffavatar.ply")]
-SHARED_GOOD = [p for p in SHARED_GOOD if p.exists()]
+# Real meshes the command must handle: texture coordinates, face quality, int patch, patches.
+REAL = [DATA / "developable_crumpled_crane.ply", DATA / "garment_shirt_initial_diffavatar.ply"]
 
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 
@@ -59,7 +55,7 @@ def read_input_faces(path):
 # Success
 
 
-@pytest.mark.parametrize("mesh", SAMPLES + SHARED_GOOD, ids=lambda p: p.name)
+@pytest.mark.parametrize("mesh", SAMPLES + REAL, ids=lambda p: p.name)
 def test_success_keeps_order_adds_quality_and_colour(mesh, tmp_path):
     out, report = tmp_path / "out.ply", tmp_path / "report.json"
     r = run(mesh, out, "--report", report)
@@ -88,7 +84,7 @@ def test_success_keeps_order_adds_quality_and_colour(mesh, tmp_path):
     assert rep["average_edge"] > 0
     assert rep["patches"], "one entry per patch"
     for p in rep["patches"]:
-        for key in ("id", "faces", "vertices", "free_vertices", "tolerance", "target_kind",
+        for key in ("id", "faces", "vertices", "free_vertices", "tolerance_model", "tolerance_ae", "target_kind",
                     "fit_residual_deg", "iterations", "stop_reason", "before", "after",
                     "abd_reduction", "obd_reduction", "time_ms", "history"):
             assert key in p, key
@@ -98,9 +94,7 @@ def test_success_keeps_order_adds_quality_and_colour(mesh, tmp_path):
 
 
 def test_texcoords_and_face_quality_pass_through(tmp_path):
-    mesh = SHARED / "garment_shirt_initial_diffavatar.ply"
-    if not mesh.exists():
-        pytest.skip("shared garment mesh missing")
+    mesh = DATA / "garment_shirt_initial_diffavatar.ply"
     out = tmp_path / "out.ply"
     assert run(mesh, out, "--quiet").returncode == 0
     inp, in_comments = read_ply(mesh)
@@ -111,16 +105,13 @@ def test_texcoords_and_face_quality_pass_through(tmp_path):
     assert out_comments == in_comments
 
 
-@pytest.mark.parametrize("name", ["garment_shirt_initial_diffavatar.ply", "garment_tee4panel_gpg.ply"])
-def test_free_seams_remove_at_least_what_fixed_seams_remove_on_a_garment(tmp_path, name):
+def test_free_seams_remove_at_least_what_fixed_seams_remove_on_a_garment(tmp_path):
     """Issue 11: free seams, in three passes, remove at least what fixed seams remove."""
-    mesh = SHARED / name
-    if not mesh.exists():
-        pytest.skip("shared garment mesh missing")
+    mesh = DATA / "garment_shirt_initial_diffavatar.ply"
     figures = {}
     for seams in ("fixed", "free"):
         out, report = tmp_path / f"{seams}.ply", tmp_path / f"{seams}.json"
-        assert run(mesh, out, "--seams", seams, "--report", report, "--quiet").returncode == 0
+        assert run(mesh, out, "--seam-mode", seams, "--report", report, "--quiet").returncode == 0
         figures[seams] = json.loads(report.read_text())
         assert column(read_ply(out)[0], "face", "vertex_indices") == column(read_ply(mesh)[0], "face", "vertex_indices")
     assert figures["free"]["abd_reduction"] >= figures["fixed"]["abd_reduction"] > 60
@@ -139,9 +130,9 @@ def test_patches_whose_round_raises_a_patch_run_again_in_turn(tmp_path):
 
 
 def test_displacement_quality_equals_the_vertex_moves(tmp_path):
-    mesh = SAMPLES[0] if SAMPLES else SHARED_GOOD[0]
+    mesh = SAMPLES[0]
     out = tmp_path / "out.ply"
-    assert run(mesh, out, "--quality", "displacement", "--no-color", "--quiet").returncode == 0
+    assert run(mesh, out, "--output-quality", "displacement", "--no-colorize", "--quiet").returncode == 0
     inp, _ = read_ply(mesh)
     res, _ = read_ply(out)
     assert not has(res, "vertex", "red")
@@ -154,14 +145,14 @@ def test_displacement_quality_equals_the_vertex_moves(tmp_path):
 
 
 def test_constrained_vertices_do_not_move(tmp_path):
-    mesh = SAMPLES[0] if SAMPLES else SHARED_GOOD[0]
+    mesh = SAMPLES[0]
     inp, _ = read_ply(mesh)
     n = element(inp, "vertex")[1]
     chosen = list(range(0, n, 7))
     cfile = tmp_path / "fixed.txt"
     cfile.write_text("# every 7th vertex\n" + "\n".join(map(str, chosen)) + "\n")
     out, report = tmp_path / "out.ply", tmp_path / "r.json"
-    r = run(mesh, out, "--constraints", cfile, "--report", report, "--quiet")
+    r = run(mesh, out, "--constraints-file", cfile, "--report", report, "--quiet")
     assert r.returncode == 0, r.stderr
     res, _ = read_ply(out)
     for c in "xyz":
@@ -171,10 +162,8 @@ def test_constrained_vertices_do_not_move(tmp_path):
 
 
 def test_obj_groups_become_patches(tmp_path):
-    ply = SHARED / "garment_shirt_initial_diffavatar.ply"
-    obj = SHARED / "obj" / "garment_shirt_initial_diffavatar.obj"
-    if not obj.exists():
-        pytest.skip("shared OBJ missing")
+    ply = DATA / "garment_shirt_initial_diffavatar.ply"
+    obj = DATA / "garment_shirt_initial_diffavatar.obj"
     reports = []
     for i, mesh in enumerate((ply, obj)):
         rep = tmp_path / f"r{i}.json"
@@ -208,7 +197,7 @@ def test_every_ply_encoding_and_off_give_the_same_result(tmp_path):
     """The same mesh as binary little/big endian or ascii PLY, or OFF, gives the same output."""
     mesh = REPO / "sample_meshes" / "bumpy_cylinder.ply"
     if not mesh.exists():
-        mesh = (SAMPLES or SHARED_GOOD)[0]
+        mesh = SAMPLES[0]
     elements, comments = read_ply(mesh)
     outputs = {}
     for fmt in ("binary_little_endian", "binary_big_endian", "ascii"):
@@ -240,22 +229,33 @@ def test_every_ply_encoding_and_off_give_the_same_result(tmp_path):
 
 def test_tolerances_are_in_average_edge_units(tmp_path):
     mesh = REPO / "sample_meshes" / "patches.ply"
-    if not mesh.exists():
-        pytest.skip("sample with patches missing")
     report = tmp_path / "r.json"
-    r = run(mesh, tmp_path / "o.ply", "--tolerance", "0.5", "--patch-tolerance", "1=0.02",
+    r = run(mesh, tmp_path / "o.ply", "--tolerance-ae", "0.5", "--patch-tolerance-ae", "1=0.02",
             "--report", report, "--quiet")
     assert r.returncode == 0, r.stderr
     rep = json.loads(report.read_text())
     ae = rep["average_edge"]
+    assert rep["parameters"]["tolerance_ae"] == 0.5 and rep["parameters"]["patch_tolerance_ae"] == "1=0.02"
     for p in rep["patches"]:
         expected = 0.02 if p["id"] == 1 else 0.5
-        assert p["tolerance"] == pytest.approx(expected * ae, rel=1e-12), p["id"]
+        assert p["tolerance_model"] == pytest.approx(expected * ae, rel=1e-12), p["id"]
+        assert p["tolerance_ae"] == pytest.approx(expected, rel=1e-12), p["id"]
         assert p["after"]["max_disp"] <= 10 * 0.5 * ae  # at most max_iter steps of δ_err
 
 
+def test_tolerance_in_model_units_replaces_the_one_in_ae(tmp_path):
+    mesh = REPO / "sample_meshes" / "patches.ply"
+    report = tmp_path / "r.json"
+    r = run(mesh, tmp_path / "o.ply", "--tolerance-model", "0.01", "--report", report, "--quiet")
+    assert r.returncode == 0, r.stderr
+    rep = json.loads(report.read_text())
+    assert rep["parameters"]["tolerance_model"] == 0.01
+    assert all(p["tolerance_model"] == 0.01 for p in rep["patches"])
+    assert rep["total_after"]["max_disp"] <= rep["parameters"]["max_iter"] * 0.01 * (1 + 1e-9)
+
+
 def test_progress_lines_on_request(tmp_path):
-    mesh = (SAMPLES or SHARED_GOOD)[0]
+    mesh = SAMPLES[0]
     r = run(mesh, tmp_path / "o.ply", "--progress")
     assert r.returncode == 0, r.stderr
     progress = [l for l in r.stderr.splitlines() if l.startswith("quasidev: ")]
@@ -268,10 +268,10 @@ def test_progress_lines_on_request(tmp_path):
 def test_help_and_version():
     r = run("--help")
     assert r.returncode == 0
-    for opt in ("--report", "--tolerance", "--tolerance-mode", "--max-iter", "--seams",
-                "--keep-boundary", "--free-boundary", "--weight", "--anchor", "--targets",
-                "--stop-abd", "--stop-obd", "--patch-tolerance", "--constraints", "--quality",
-                "--no-color", "--progress", "--quiet", "--version"):
+    for opt in ("--report", "--tolerance-ae", "--tolerance-model", "--tolerance-mode", "--max-iter",
+                "--seam-mode", "--keep-boundary", "--no-keep-boundary", "--weight", "--anchor",
+                "--target-mode", "--stop-abd", "--stop-obd", "--patch-tolerance-ae", "--constraints-file",
+                "--output-quality", "--no-colorize", "--progress", "--quiet", "--version"):
         assert opt in r.stdout, opt
     assert "default" in r.stdout
     r = run("--version")
@@ -279,7 +279,7 @@ def test_help_and_version():
 
 
 def test_refuses_to_overwrite_input_unless_asked(tmp_path):
-    mesh = SAMPLES[0] if SAMPLES else SHARED_GOOD[0]
+    mesh = SAMPLES[0]
     copy = tmp_path / "in.ply"
     copy.write_bytes(mesh.read_bytes())
     alias = tmp_path / "." / "in.ply"
@@ -301,7 +301,7 @@ GOOD_BODY = "0 0 0\n1 0 0\n1 1 0.2\n0 1 0\n3 0 1 2\n3 0 2 3\n"
 
 
 def bad_inputs():
-    sample = (SAMPLES or SHARED_GOOD)[0].read_bytes()
+    sample = SAMPLES[0].read_bytes()
     return {
         "empty": b"",
         "header_only": ASCII_HEAD.encode(),
@@ -335,22 +335,23 @@ def test_bad_input_fails_cleanly(name, existing_output, tmp_path):
 
 BAD_ARGS = {
     "unknown_option": ["--frobnicate"],
-    "negative_tolerance": ["--tolerance", "-1"],
-    "zero_tolerance": ["--tolerance", "0"],
+    "negative_tolerance": ["--tolerance-ae", "-1"],
+    "zero_tolerance": ["--tolerance-ae", "0"],
+    "negative_model_tolerance": ["--tolerance-model", "-0.1"],
     "zero_iterations": ["--max-iter", "0"],
     "nan_weight": ["--weight", "nan"],
-    "bad_seams": ["--seams", "sometimes"],
+    "bad_seams": ["--seam-mode", "sometimes"],
     "bad_developability": ["--developability", "paper"],
     "zero_defect_weight": ["--defect-weight", "0"],
     "missing_value": ["--report"],
-    "unknown_patch": ["--patch-tolerance", "123456=0.1"],
+    "unknown_patch": ["--patch-tolerance-ae", "123456=0.1"],
 }
 
 
 @pytest.mark.parametrize("name", list(BAD_ARGS))
 @pytest.mark.parametrize("existing_output", [False, True])
 def test_bad_arguments_exit_2(name, existing_output, tmp_path):
-    mesh = (SAMPLES or SHARED_GOOD)[0]
+    mesh = SAMPLES[0]
     out = tmp_path / "out.ply"
     if existing_output:
         out.write_bytes(b"precious")
@@ -387,7 +388,7 @@ def test_report_says_which_developability_term_each_patch_used(tmp_path):
 def test_missing_input_and_unwritable_output(tmp_path):
     out = tmp_path / "out.ply"
     assert_clean_failure(run(tmp_path / "nope.ply", out), out, status=1)
-    mesh = (SAMPLES or SHARED_GOOD)[0]
+    mesh = SAMPLES[0]
     deep = tmp_path / "no" / "dir" / "out.ply"
     r = run(mesh, deep, "--quiet")
     assert r.returncode == 1 and r.stderr.startswith("quasidev: error: ")
@@ -395,11 +396,11 @@ def test_missing_input_and_unwritable_output(tmp_path):
 
 
 def test_bad_constraint_file(tmp_path):
-    mesh = (SAMPLES or SHARED_GOOD)[0]
+    mesh = SAMPLES[0]
     cfile = tmp_path / "c.txt"
     cfile.write_text("0\n99999999\n")
     out = tmp_path / "out.ply"
-    r = run(mesh, out, "--constraints", cfile)
+    r = run(mesh, out, "--constraints-file", cfile)
     assert_clean_failure(r, out, status=1)
     assert "line 2" in r.stderr
 
@@ -408,9 +409,7 @@ def test_engine_refusal_is_one_line(tmp_path):
     """A closed sphere-like mesh is far from developable: the paper's curve cannot be fitted, the
     engine says so and nothing is written. The angle-defect rows (auto) need no fit: they run,
     and never hand back a worse mesh."""
-    mesh = SHARED / "classic_spot_lowres_crane.ply"
-    if not mesh.exists():
-        pytest.skip("shared mesh missing")
+    mesh = DATA / "classic_spot_lowres_crane.ply"
     out = tmp_path / "out.ply"
     assert_clean_failure(run(mesh, out, "--developability", "curve", "--segment-first", "never"),
                          out, status=1)

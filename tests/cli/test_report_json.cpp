@@ -6,6 +6,7 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 
+#include "approximate_params.h"
 #include "flatten_report_json.h"
 #include "report_json.h"
 
@@ -37,10 +38,8 @@ Json report(const qd::Result& r, const std::vector<std::string>& notes) {
   qd::cli::ApproximateOptions o;
   o.input = "in\xff.ply";  // not UTF-8
   o.output = "out.ply";
-  o.patch_tolerance_ae[7] = 3.0;
-  qd::Params params = o.params;
-  params.patch_tolerance[7] = 0.3;
-  const qd::cli::ReportContext context{o, params, 3, 1, true, 0, notes};
+  o.settings.patch_tolerance_ae[7] = 3.0;
+  const qd::cli::ReportContext context{o, 3, 1, true, 0, notes};
   return Json::parse(qd::cli::report_json(r, context));
 }
 
@@ -53,13 +52,21 @@ TEST(ReportJson, ReadsBackBitIdentical) {
   EXPECT_TRUE(j["total_after"]["max_abs_k"].is_null());
   const Json& patch = j["patches"][0];
   EXPECT_EQ(patch["id"].get<int>(), 7);
+  EXPECT_EQ(patch["tolerance_model"].get<double>(), 0.3);
   EXPECT_EQ(patch["tolerance_ae"].get<double>(), 0.3 / 0.1);
   EXPECT_EQ(patch["developability"], "defect");
   EXPECT_EQ(patch["history"][0]["ratio_abd"].get<double>(), 2.0 / 3.0);
   EXPECT_EQ(patch["history"][0]["note"], r.patches[0].history[0].note);
-  EXPECT_EQ(j["parameters"]["patch_tolerance"][0]["tolerance_ae"].get<double>(), 3.0);
-  EXPECT_EQ(j["parameters"]["seams"], "fixed");
-  EXPECT_EQ(j["parameters"]["quality"], "curvature");
+  EXPECT_EQ(j["parameters"]["patch_tolerance_ae"], "7=3");
+  EXPECT_EQ(j["parameters"]["seam_mode"], "fixed");
+  EXPECT_EQ(j["parameters"]["output_quality"], "curvature");
+  EXPECT_EQ(j["parameters"]["max_iter"], qd::Params().max_iter);  // a whole number
+  EXPECT_EQ(j["parameters"]["keep_boundary"], true);
+  std::vector<std::string> names;  // every declared parameter, in order
+  for (const auto& item : j["parameters"].items()) names.push_back(item.key());
+  std::vector<std::string> declared;
+  for (const auto& p : qd::params::approximate_params()) declared.push_back(p.name);
+  EXPECT_EQ(names, declared);
   EXPECT_EQ(j["warnings"][0], r.warnings[0]);
   EXPECT_EQ(j["notes"][0], "polygons fan-triangulated");
 }
@@ -94,16 +101,17 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   r.log = {"patch 3.1: ...", "flattened 1 pieces"};
   qd::cli::FlattenOptions o;
   o.input = "in.ply";
-  o.svg = "p.svg";
-  o.unit = qd::cli::PatternUnit::Centimetre;
-  o.params.gap = 0.5;
+  o.settings.svg_file = "p.svg";
+  o.settings.unit = qd::params::PatternUnit::Centimetre;
+  o.settings.engine.gap = 0.5;
   const std::vector<std::string> notes = {"polygons fan-triangulated"};
   const Json j = Json::parse(qd::cli::flatten_report_json(r, {o, 10, 4, true, notes}));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{"input", "output", "svg", "dxf", "vertices", "faces",
-                                            "has_patch_ids", "parameters", "pieces", "max_distortion",
-                                            "flattenable_pieces", "sheet", "time_ms", "notes", "log"}));
+  EXPECT_EQ(keys,
+            (std::vector<std::string>{"input", "output", "vertices", "faces", "has_patch_ids",
+                                      "parameters", "pieces", "max_distortion",
+                                      "flattenable_pieces", "sheet", "time_ms", "notes", "log"}));
   const Json& piece = j["pieces"][0];
   EXPECT_EQ(piece["label"], "3.1");
   EXPECT_EQ(piece["component"].get<int>(), 1);
@@ -115,7 +123,8 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   EXPECT_EQ(j["parameters"]["unit"], "cm");
   EXPECT_EQ(j["parameters"]["gap"].get<double>(), 0.5);
   EXPECT_EQ(j["sheet"]["min"][1].get<double>(), 1.0);
-  EXPECT_EQ(j["svg"], "p.svg");
+  EXPECT_EQ(j["parameters"]["svg_file"], "p.svg");
+  EXPECT_EQ(j["parameters"]["arap_max_iter"], qd::FlattenParams().max_iterations);
   EXPECT_EQ(j["log"][1], "flattened 1 pieces");
   EXPECT_EQ(j["notes"][0], notes[0]);
 }

@@ -34,7 +34,7 @@ import numpy as np
 from PIL import Image
 
 from ml2020_support import (FILTER_NAME, FLATTEN_FILTER_NAME, REPO, SEGMENT_FILTER_NAME, Mesh, boundary_vertices,
-                            integrated_curvature, load_mesh, mlx_parameters, seam_vertices)
+                            declared_parameters, integrated_curvature, load_mesh, mlx_parameters, seam_vertices)
 
 SCREEN = (1280, 1024)
 WINDOW = (1200, 900)           # the main window is moved to the top-left corner and resized to this
@@ -43,17 +43,6 @@ MENU = "Smoothing, Fairing and Deformation"   # the Filters submenu that lists o
 FLATTEN_MENU = "Texture"                      # the one that lists the flattening, in both versions
 SEGMENT_MENU = "Quality Measure and Computations"  # the segmentation's (FilterClass Quality), in both
 PROBE_SOURCE = Path(__file__).with_name("gui_probe.cpp")
-# The filter's parameters (the names of .mlx files and pymeshlab) and the labels its dialog shows
-# for them, in the dialog's order.
-PARAMETER_LABELS = {
-    "tolerance": "Tolerance (model units)", "tolerance_mode": "Tolerance mode",
-    "max_iter": "Max iterations", "weight": "Developability weight",
-    "developability": "Developability term", "defect_weight": "Angle-defect weight",
-    "anchor": "Anchor stiffness", "use_patches": "Patches from face quality", "seam_mode": "Seams",
-    "keep_boundary": "Keep boundary", "target_mode": "Target normals",
-    "stop_abd": "Stop at ratio_ABD (%)", "stop_obd": "Stop at ratio_OBD (%)",
-    "output_quality": "Output quality", "colorize": "Colorize",
-}
 
 
 def wait_for(predicate: Callable[[], object], timeout: float, what: str, poll: float = 0.25):
@@ -387,11 +376,12 @@ def exercise_filter(gui: MeshLabGui, mesh: Path, shots: Path) -> GuiRun:
 
 
 def check_dialog(dialog: Window) -> None:
-    """The dialog shows every parameter's label, in order: the labels of PARAMETER_LABELS, whose
-    names are those of sample_meshes/default.mlx."""
+    """The dialog shows every parameter's label, in order: the declared labels of the filter's
+    parameters (qd_reference --json), whose names are those of sample_meshes/default.mlx."""
+    declared = [p for p in declared_parameters("approximate") if p["fronts"] != "command"]
     names = list(mlx_parameters(REPO / "sample_meshes" / "default.mlx"))
-    assert names == list(PARAMETER_LABELS), f"default.mlx has {names}, the test expects {list(PARAMETER_LABELS)}"
-    expected = list(PARAMETER_LABELS.values())
+    assert names == [p["name"] for p in declared], f"default.mlx has {names}, declared: {declared}"
+    expected = [p["label"] for p in declared]
     shown = [t for t in dialog.texts() if t in expected]
     assert shown == expected, f"the dialog shows {shown}, expected {expected}: {dialog.describe()}"
 

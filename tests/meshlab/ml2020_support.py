@@ -7,6 +7,7 @@ meshlabserver (under xvfb-run) and the quasidev command.
 """
 from __future__ import annotations
 
+import json
 import math
 import os
 import subprocess
@@ -31,6 +32,14 @@ XVFB_CLEANUP_ERROR = "xvfb-run: error: problem while cleaning up temporary direc
 
 def build_dir() -> Path:
     return Path(os.environ.get("QD_BUILD_DIR", REPO / "build"))
+
+
+def declared_parameters(job: str) -> list[dict]:
+    """The declared parameters of a job ("approximate", "segment" or "flatten"), in order, as
+    `qd_reference --json` gives them (filter_quasidev/params/)."""
+    out = subprocess.run([str(build_dir() / "bin" / "qd_reference"), "--json"], capture_output=True,
+                         text=True, check=True).stdout
+    return json.loads(out)[job]["parameters"]
 
 
 @dataclass
@@ -185,27 +194,19 @@ def write_mlx(path: Path, values: dict[str, object], base: Path = REPO / "sample
 
 
 def cli_arguments(params: dict[str, tuple[str, str, list[str]]]) -> tuple[list[str], bool]:
-    """The quasidev options equivalent to an .mlx's parameters, and whether patches are used.
-    The plugin's tolerance is absolute with 0 = 1 AE; the command's is in AE, so only 0 maps."""
-    def item(name):
-        _, value, items = params[name]
-        return items[int(value)]
-
-    def true(name):
-        return params[name][1] == "true"
-    assert float(params["tolerance"][1]) == 0, "tests use tolerance 0 (= 1 AE) so the command matches"
-    args = ["--tolerance", "1", "--tolerance-mode", item("tolerance_mode"),
-            "--max-iter", params["max_iter"][1], "--weight", params["weight"][1],
-            "--anchor", params["anchor"][1], "--seams", item("seam_mode"),
-            "--keep-boundary" if true("keep_boundary") else "--free-boundary",
-            "--targets", item("target_mode"), "--stop-abd", params["stop_abd"][1],
-            "--stop-obd", params["stop_obd"][1], "--quality", item("output_quality")]
-    if not true("colorize"):
-        args.append("--no-color")
-    if "developability" in params:  # scripts without it run with the default, as the command
-        args += ["--developability", item("developability"),
-                 "--defect-weight", params["defect_weight"][1]]
-    return args, true("use_patches")
+    """The quasidev options equal to an .mlx's parameters, and whether patches are used. Every
+    parameter has one name in both (docs/reference/): `name` in the .mlx is `--name` with '-'
+    for '_' in the command, with the same unit and meaning."""
+    args = []
+    for name, (kind, value, items) in params.items():
+        option = "--" + name.replace("_", "-")
+        if kind == "RichBool":
+            args.append(option if value == "true" else "--no-" + option[2:])
+        elif kind == "RichEnum":
+            args += [option, items[int(value)]]
+        elif kind not in ("RichString", "RichSaveFile") or value:
+            args += [option, value]
+    return args, params["use_patches"][1] == "true"
 
 
 # ---- running the binaries -------------------------------------------------------------------------

@@ -1,7 +1,7 @@
 // Unit tests of the shared MeshLab adapter of the flattening (flatten_adapter) compiled against
-// MeshLab 2020.09's CMeshO: the parameter table against sample_meshes/flatten.mlx, the settings
-// mapping, and that apply_flatten() writes only wedge texture coordinates (in model units), face
-// quality and face colour on success, the pattern files asked for, and nothing on failure.
+// MeshLab 2020.09's CMeshO: apply_flatten() writes only wedge texture coordinates (in model
+// units), face quality and face colour on success, the pattern files asked for, and nothing on
+// failure.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +12,6 @@
 #include <string>
 
 #include "adapter_test_mesh.h"
-#include "mlx_check.h"
 #include "flatten_adapter.h"
 
 namespace {
@@ -20,14 +19,6 @@ namespace {
 using qdml::test::make_bumpy_cylinder;
 using qdml::test::Snapshot;
 using qdml::test::snapshot;
-
-qdml::ParamValues defaults() {
-  qdml::ParamValues values;
-  for (const qdml::ParamSpec& spec : qdml::flatten_parameter_specs())
-    values[spec.name] = spec.kind == qdml::ParamKind::SaveFile ? qdml::ParamValue(std::string())
-                                                               : qdml::ParamValue(spec.value);
-  return values;
-}
 
 // One directory per test: ctest runs the tests in processes of their own, two of which may start
 // in the same millisecond and so share gtest's time-based random seed.
@@ -41,30 +32,6 @@ std::filesystem::path temp_dir() {
 
 }  // namespace
 
-TEST(FlattenAdapter2020, MlxListsEveryParameterAtItsDefault) {
-  qdml::test::expect_mlx_lists(QD_FLATTEN_MLX, qdml::flatten_parameter_specs(), qdml::test::expect_float_default);
-}
-
-TEST(FlattenAdapter2020, SettingsFollowTheValues) {
-  const qdml::FlattenSettings d = qdml::flatten_settings_from_values(defaults());
-  const qd::FlattenParams engine;
-  EXPECT_EQ(d.params.max_iterations, engine.max_iterations);
-  EXPECT_EQ(d.params.tolerance, engine.tolerance);
-  EXPECT_TRUE(d.svg_file.empty() && d.dxf_file.empty() && d.unit.empty());
-  qdml::ParamValues values = defaults();
-  values["max_iter"] = 7.0;
-  values["gap"] = 0.5;
-  values["notch_spacing"] = 2.0;
-  values["svg_file"] = std::string("a.svg");
-  values["unit"] = 2.0;
-  const qdml::FlattenSettings s = qdml::flatten_settings_from_values(values);
-  EXPECT_EQ(s.params.max_iterations, 7);
-  EXPECT_EQ(s.params.gap, 0.5);
-  EXPECT_EQ(s.params.notch_spacing, 2.0);
-  EXPECT_EQ(s.svg_file, "a.svg");
-  EXPECT_EQ(s.unit, "cm");
-}
-
 TEST(FlattenAdapter2020, WritesTexcoordsInModelUnitsStretchAndColourOnly) {
   CMeshO m;
   make_bumpy_cylinder(m, 24, 12, 0.0);  // exactly developable
@@ -75,7 +42,7 @@ TEST(FlattenAdapter2020, WritesTexcoordsInModelUnitsStretchAndColourOnly) {
   m.vert[3].SetS();
   const Snapshot before = snapshot(m);
   const std::filesystem::path dir = temp_dir();
-  qdml::FlattenSettings settings = qdml::flatten_settings_from_values(defaults());
+  qd::params::FlattenSettings settings;
   settings.svg_file = (dir / "p.svg").string();
   settings.dxf_file = (dir / "p.dxf").string();
   const qdml::FlattenOutcome out = qdml::apply_flatten(m, true, settings, nullptr);
@@ -116,7 +83,7 @@ TEST(FlattenAdapter2020, FailureLeavesTheMeshAndTheFilesUntouched) {
   m.face.DisableColor();
   const std::filesystem::path dir = temp_dir();
   std::ofstream(dir / "p.svg") << "previous";
-  qdml::FlattenSettings settings = qdml::flatten_settings_from_values(defaults());
+  qd::params::FlattenSettings settings;
   settings.svg_file = (dir / "p.svg").string();
   const std::vector<float> quality_before = snapshot(m).face_quality;
   const qdml::FlattenOutcome out = qdml::apply_flatten(m, true, settings, nullptr);
@@ -136,7 +103,7 @@ TEST(FlattenAdapter2020, AnUnwritablePatternFailsBeforeTheMeshIsWritten) {
   CMeshO m;
   make_bumpy_cylinder(m);
   const Snapshot before = snapshot(m);
-  qdml::FlattenSettings settings = qdml::flatten_settings_from_values(defaults());
+  qd::params::FlattenSettings settings;
   settings.dxf_file = "/nonexistent-folder/p.dxf";
   const qdml::FlattenOutcome out = qdml::apply_flatten(m, false, settings, nullptr);
   EXPECT_FALSE(out.ok);

@@ -105,9 +105,10 @@ def test_failure_names_the_reason_and_leaves_the_output(meshlab_prefix, tmp_path
     save_float_mesh(given, tmp_path / "in.ply")
     out, svg = tmp_path / "out.ply", tmp_path / "p.svg"
     out.write_bytes(b"previous")
-    script = flatten_script(tmp_path / "job.mlx", tolerance=-1, svg_file=svg)
+    script = flatten_script(tmp_path / "job.mlx", arap_tolerance=-1, svg_file=svg)
     run = run_meshlabserver(meshlab_prefix, tmp_path / "in.ply", out, script, saved=SAVED)
     assert run.returncode == 255, run.stdout[-3000:]
     reasons = re.findall(rf"LOG: \d+ {FLATTEN_FILTER_NAME} failed: (.*)", run.stdout)
-    assert len(reasons) == 1 and "The ARAP tolerance is -1" in reasons[0], run.stdout[-3000:]
+    assert len(reasons) == 1 and "ARAP tolerance (arap_tolerance) must not be negative, got -1" in reasons[0], \
+        run.stdout[-3000:]
     assert out.read_bytes() == b"previous" and not svg.exists()

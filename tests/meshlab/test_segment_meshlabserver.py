@@ -25,9 +25,7 @@ from compare_developability import gaussian_curvature  # noqa: E402
 
 SAMPLES = REPO / "sample_meshes"
 SEGMENT = "Quasi-Developable Segmentation"
-CLOSED = REPO.parent / "shared" / "meshes" / "classic_spot_lowres_crane.ply"
-if not CLOSED.exists():
-    CLOSED = REPO / "sample_meshes" / "capped_cylinder.ply"
+CLOSED = REPO / "tests" / "data" / "classic_spot_lowres_crane.ply"
 PREVIOUS = b"previous result\n"
 
 
@@ -79,7 +77,8 @@ def test_segment_then_approximate_lowers_g_abd_on_a_closed_mesh(meshlab_prefix, 
     assert_one_patch_per_face(out)
     assert re.search(r"Segmented \d+ faces into \d+ patches", run.stdout)
     assert np.array_equal(out.f, given.f)
-    assert g_abd(out.v, out.f) < g_abd(given.v, given.f)
+    # Spot loses about 7 % of its G_ABD (the command measures 7.35 %); 3 % is far above rounding.
+    assert g_abd(out.v, out.f) < 0.97 * g_abd(given.v, given.f)
 
 
 @pytest.mark.parametrize("case", make_bad_corpus.segment_cases(), ids=[c[0] for c in make_bad_corpus.segment_cases()])

@@ -20,7 +20,7 @@ def pymeshlab_with_plugin():
 @pytest.fixture
 def meshset(pymeshlab_with_plugin):
     def make(path: str):
-        require_file(path, "sample meshes: scripts/make_samples.py; shared meshes: QD_SHARED_MESHES")
+        require_file(path, "sample meshes: scripts/make_samples.py; tests/data/: in the repository")
         ms = pymeshlab_with_plugin.MeshSet()
         ms.load_new_mesh(path)
         return ms

@@ -3,8 +3,8 @@ whatever other conftest.py files pytest loads).
 
 Inputs: the build directory (env QD_BUILD_DIR, default <repo>/build) holding
 bin/pymeshlab/libfilter_quasidev.so (the 2025.07d plugin), bin/meshlab2025/ (the float variant)
-and bin/quasidev (the CLI); the meshes in sample_meshes/ and /work/shared/meshes/ (env
-QD_SHARED_MESHES).
+and bin/quasidev (the CLI); the meshes in sample_meshes/ (generated) and tests/data/ (public
+meshes, tests/data/SOURCES.md), both in the repository.
 """
 from __future__ import annotations
 
@@ -19,7 +19,7 @@ PLUGIN = os.path.join(BUILD, "bin", "pymeshlab", "libfilter_quasidev.so")
 FLOAT_PLUGIN = os.path.join(BUILD, "bin", "meshlab2025", "libfilter_quasidev.so")
 CLI = os.path.join(BUILD, "bin", "quasidev")
 SAMPLES = os.path.join(ROOT, "sample_meshes")
-SHARED = os.environ.get("QD_SHARED_MESHES", "/work/shared/meshes")
+DATA = os.path.join(ROOT, "tests", "data")
 FILTER = "apply_coord_quasi_developable_approximation"
 SEGMENT_FILTER = "compute_segmentation_quasi_developable"
 FLATTEN_FILTER = "compute_texcoord_quasi_developable_flattening"
@@ -36,8 +36,8 @@ def sample(name: str) -> str:
     return os.path.join(SAMPLES, name)
 
 
-def shared(name: str) -> str:
-    return os.path.join(SHARED, name)
+def data(name: str) -> str:
+    return os.path.join(DATA, name)
 
 
 def require_file(path: str, how: str) -> None:

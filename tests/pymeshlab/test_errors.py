@@ -43,10 +43,11 @@ def test_nan_coordinates(pymeshlab_with_plugin):
 
 
 @pytest.mark.parametrize("kwargs, words", [
-    ({"weight": -1.0}, "developability weight"),
-    ({"max_iter": 0}, "maximum number of iterations"),
-    ({"tolerance": -0.5}, "tolerance"),
-    ({"stop_abd": 150.0}, "stop threshold ABD"),
+    ({"weight": -1.0}, "Developability weight (weight) must be greater than 0, got -1"),
+    ({"max_iter": 0}, "Max iterations (max_iter) must be at least 1, got 0"),
+    ({"tolerance_model": -0.5}, "Tolerance (model units) (tolerance_model) must not be negative, got -0.5"),
+    ({"stop_abd": 150.0}, "Stop at ratio_ABD (%) (stop_abd) must be below 100, got 150"),
+    ({"patch_tolerance_ae": "3=x"}, "Per-patch tolerance (AE) (patch_tolerance_ae) expects ID=X items"),
 ])
 def test_absurd_parameters(meshset, pymeshlab_with_plugin, kwargs, words):
     assert words in expect_failure(pymeshlab_with_plugin, meshset(sample("bumpy_cylinder.ply")), **kwargs)

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import compare_developability as measures
-from pymeshlab_paths import FILTER, sample, shared
+from pymeshlab_paths import FILTER, data, sample
 
 FIGURE_KEYS = {"abd_reduction", "obd_reduction", "max_displacement", "max_displacement_ae",
                "mean_displacement", "mean_displacement_ae", "iterations", "factorizations",
@@ -99,11 +99,15 @@ def test_displacement_quality_without_colour(meshset):
 
 
 def test_total_tolerance_caps_every_move(meshset):
+    """In AE (tolerance_ae) and in model units (tolerance_model): the same bound."""
     ms = meshset(sample("bumpy_cylinder.ply"))
-    ae = ms.filter_parameter_values(FILTER)["tolerance"]
+    V0, _, fig, m = run(ms, tolerance_ae=0.25, tolerance_mode="total")
+    d = np.linalg.norm(m.vertex_matrix() - V0, axis=1)
+    assert 0 < d.max() <= 0.25 * fig["average_edge"] * (1 + 1e-6)
     # pymeshlab passes float keyword arguments as 32-bit floats: bound by what the filter got.
-    tol = float(np.float32(0.25 * ae))
-    V0, _, fig, m = run(ms, tolerance=tol, tolerance_mode="total")
+    tol = float(np.float32(0.25 * fig["average_edge"]))
+    ms = meshset(sample("bumpy_cylinder.ply"))
+    V0, _, fig, m = run(ms, tolerance_model=tol, tolerance_mode="total")
     d = np.linalg.norm(m.vertex_matrix() - V0, axis=1)
     assert 0 < d.max() <= tol * (1 + 1e-9)
 
@@ -135,7 +139,7 @@ def test_free_seams_move_seam_vertices(meshset):
 @pytest.mark.parametrize("name", ["developable_crumpled_crane.ply", "bowl_hemisphere_ipc.ply",
                                   "garment_shirt_initial_diffavatar.ply"])
 def test_shared_meshes_run_and_keep_connectivity(meshset, name):
-    ms = meshset(shared(name))
+    ms = meshset(data(name))
     V0, F0, fig, m = run(ms)
     assert np.array_equal(m.face_matrix(), F0)
     assert np.isfinite(m.vertex_matrix()).all()

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import flat_measures
-from pymeshlab_paths import CLI, FAILED_MESHSETS, FLATTEN_FILTER, FILTER, require_file, sample, shared
+from pymeshlab_paths import CLI, FAILED_MESHSETS, FLATTEN_FILTER, FILTER, data, require_file, sample
 
 PIECE_LISTS = {"piece_patch", "piece_component", "piece_faces", "piece_vertices", "piece_cut",
                "piece_iterations", "piece_energy", "piece_max_distortion", "piece_mean_distortion",
@@ -53,8 +53,8 @@ def test_developable_cone_gets_texcoords_in_model_units(meshset):
     assert np.abs(m.face_scalar_array()).max() < 1e-3
 
 
-@pytest.mark.parametrize("path", [sample("patches.ply"), shared("garment_shirt_initial_diffavatar.ply"),
-                                  shared("lampshade_frustum_ipc.ply")])
+@pytest.mark.parametrize("path", [sample("patches.ply"), data("garment_shirt_initial_diffavatar.ply"),
+                                  data("lampshade_frustum_ipc.ply")])
 def test_dict_has_every_piece_figure_and_matches_the_command(meshset, tmp_path, path):
     ms = meshset(path)
     fig = ms.apply_filter(FLATTEN_FILTER)
@@ -83,7 +83,7 @@ def test_pattern_files_and_parameters(meshset, tmp_path):
     svg, dxf = tmp_path / "p.svg", tmp_path / "p.dxf"
     ms = meshset(sample("patches.ply"))
     fig = ms.apply_filter(FLATTEN_FILTER, svg_file=str(svg), dxf_file=str(dxf), unit="mm",
-                          max_iter=3, gap=0.5, notch_spacing=0.25, tolerance=0.0)
+                          arap_max_iter=3, gap=0.5, notch_spacing=0.25, arap_tolerance=0.0)
     assert max(fig["piece_iterations"]) <= 3
     root = ET.parse(svg).getroot()
     assert root.get("width").endswith("mm")
@@ -101,7 +101,7 @@ def test_failure_changes_nothing_and_writes_no_file(pymeshlab_with_plugin, meshs
     FAILED_MESHSETS.append(ms)
     with pytest.raises(pymeshlab_with_plugin.PyMeshLabException) as info:
         ms.apply_filter(FLATTEN_FILTER, gap=-1.0, svg_file=str(svg))
-    assert "The gap between pieces is -1: use a distance >= 0" in str(info.value)
+    assert "Gap between pieces (gap) must not be negative, got -1" in str(info.value)
     m = ms.current_mesh()
     np.testing.assert_array_equal(m.vertex_matrix(), before[0])
     np.testing.assert_array_equal(m.face_scalar_array(), before[1])
@@ -117,7 +117,7 @@ def test_sample_scripts_run_through_pymeshlab(meshset, script):
     ms.apply_filter_script()
     ref = meshset(sample("patches.ply"))
     if script.startswith("approximate"):
-        ref.apply_filter(FILTER, tolerance=0.0)
+        ref.apply_filter(FILTER)
     ref.apply_filter(FLATTEN_FILTER)
     np.testing.assert_allclose(ms.current_mesh().vertex_matrix(), ref.current_mesh().vertex_matrix(),
                                rtol=0, atol=1e-12)

@@ -7,10 +7,13 @@ import os
 import subprocess
 
 import numpy as np
+import plyio
 import pytest
 
-from pymeshlab_paths import CLI, FILTER, require_file, sample, shared
+from pymeshlab_paths import CLI, FILTER, data, require_file, sample
 
+# The shirt with 100 vertices that no face uses (with_unreferenced_vertices() makes it).
+UNREFERENCED = "shirt_with_unreferenced_vertices.ply"
 # (mesh, plugin keywords, the same as quasidev options)
 CASES = [
     (sample("bumpy_cylinder.ply"), {}, []),
@@ -20,13 +23,25 @@ CASES = [
     (sample("patches.ply"),
      {"seam_mode": "free", "target_mode": "refit", "tolerance_mode": "total", "max_iter": 5,
       "weight": 20.0, "anchor": 5.0, "keep_boundary": False},
-     ["--seams", "free", "--targets", "refit", "--tolerance-mode", "total", "--max-iter", "5",
-      "--weight", "20", "--anchor", "5", "--free-boundary"]),
-    (shared("developable_crumpled_crane.ply"), {}, []),
-    (shared("bowl_hemisphere_ipc.ply"), {}, []),
-    (shared("garment_shirt_initial_diffavatar.ply"), {}, []),  # 5 patches
-    (shared("garment_tee4panel_gpg.ply"), {}, []),  # 138 unreferenced vertices
+     ["--seam-mode", "free", "--target-mode", "refit", "--tolerance-mode", "total", "--max-iter", "5",
+      "--weight", "20", "--anchor", "5", "--no-keep-boundary"]),
+    (data("developable_crumpled_crane.ply"), {}, []),
+    (data("bowl_hemisphere_ipc.ply"), {}, []),
+    (data("garment_shirt_initial_diffavatar.ply"), {}, []),  # 5 patches
+    (UNREFERENCED, {}, []),
 ]
+
+
+def with_unreferenced_vertices(tmp_path) -> str:
+    """The shirt of tests/data with copies of its first 100 vertices appended, unused by faces."""
+    ply = plyio.read_ply(data("garment_shirt_initial_diffavatar.ply"))
+    vertex = ply.elements["vertex"]
+    for name in vertex.property_names():
+        vertex.data[name] += vertex.data[name][:100]
+    vertex.count += 100
+    path = tmp_path / UNREFERENCED
+    plyio.write_ply(path, ply)
+    return str(path)
 
 
 def run_cli(path: str, options: list[str], tmp_path) -> tuple[str, dict]:
@@ -42,11 +57,12 @@ def run_cli(path: str, options: list[str], tmp_path) -> tuple[str, dict]:
 @pytest.mark.parametrize("path, kwargs, options", CASES,
                          ids=[f"{os.path.basename(c[0])}-{'tuned' if c[1] else 'defaults'}" for c in CASES])
 def test_plugin_moves_vertices_as_the_cli_predicts(meshset, tmp_path, path, kwargs, options):
+    if path == UNREFERENCED:
+        path = with_unreferenced_vertices(tmp_path)
     ms = meshset(path)
     V0 = ms.current_mesh().vertex_matrix().copy()
-    # tolerance 0 = 1 AE in double, as the CLI's default; pymeshlab's own default is AE as float32.
     # pymeshlab passes float parameters as float32: the command gets the same defect weight.
-    fig = ms.apply_filter(FILTER, **{"tolerance": 0.0, **kwargs})
+    fig = ms.apply_filter(FILTER, **kwargs)
     options = [*options, "--defect-weight", repr(float(np.float32(0.03)))]
     V_plugin = ms.current_mesh().vertex_matrix()
     cli_output, report = run_cli(path, options, tmp_path)

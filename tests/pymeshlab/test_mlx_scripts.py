@@ -17,15 +17,14 @@ SCRIPTS = {"default.mlx": "bumpy_cylinder.ply", "patches_fixed_seams.mlx": "patc
 
 def keyword_arguments(script: str, declared: dict) -> dict:
     """The script's parameter values as apply_filter keywords (enums by index, as pymeshlab
-    accepts). Tolerance 0 (= 1 AE) is passed as 0 too: pymeshlab would hand the default AE over
-    as a 32-bit float, the script's 0 gives the adapter's double AE."""
+    accepts)."""
     params = ET.parse(sample(script)).getroot().find("filter").findall("Param")
     kwargs = {}
     for p in params:
         name, kind, value = p.get("name"), p.get("type"), p.get("value")
         assert name in declared, f"{script}: parameter {name} is not declared by the plugin"
         kwargs[name] = {"RichBool": lambda v: v == "true", "RichInt": int, "RichEnum": int,
-                        "RichFloat": float}[kind](value)
+                        "RichFloat": float, "RichString": str}[kind](value)
     return kwargs
 
 

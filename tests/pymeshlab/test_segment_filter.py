@@ -5,20 +5,17 @@ not move, a refused run leaves the mesh as it was, and segment_then_approximate.
 on a closed mesh."""
 from __future__ import annotations
 
-import os
 import subprocess
 
 import numpy as np
 import pytest
 
 import compare_developability as measures
-from pymeshlab_paths import CLI, FAILED_MESHSETS, SEGMENT_FILTER, sample, shared
+from pymeshlab_paths import CLI, FAILED_MESHSETS, SEGMENT_FILTER, data, sample
 
 PATCH_LISTS = {"patch_faces", "patch_area", "patch_max_error_deg", "patch_rms_error_deg",
                "patch_boundary_loops", "patch_disk", "patch_over_limit"}
-CLOSED = shared("classic_spot_lowres_crane.ply")
-if not os.path.isfile(CLOSED):
-    CLOSED = sample("capped_cylinder.ply")
+CLOSED = data("classic_spot_lowres_crane.ply")
 
 
 def patch_ids(mesh) -> np.ndarray:
@@ -79,7 +76,7 @@ def test_refused_run_leaves_the_mesh_unchanged(pymeshlab_with_plugin, meshset):
     with pytest.raises(pymeshlab_with_plugin.PyMeshLabException) as info:
         ms.apply_filter(SEGMENT_FILTER, max_error_deg=0.0)
     assert str(info.value).startswith(f"Failed to apply filter: {SEGMENT_FILTER}")
-    assert "largest fit error" in str(info.value)
+    assert "Largest fit error (deg) (max_error_deg) must be greater than 0, got 0" in str(info.value)
     m = ms.current_mesh()
     np.testing.assert_array_equal(m.vertex_matrix(), before[0])
     np.testing.assert_array_equal(m.face_scalar_array(), before[1])
@@ -98,4 +95,5 @@ def test_segment_then_approximate_script_lowers_g_abd_on_a_closed_mesh(meshset):
     m = ms.current_mesh()
     assert np.array_equal(m.face_matrix(), F0)
     assert len(set(patch_ids(m))) > 1
-    assert g_abd(m.vertex_matrix(), F0) < g_abd(V0, F0)
+    # Spot loses about 7 % of its G_ABD (the command measures 7.35 %); 3 % is far above rounding.
+    assert g_abd(m.vertex_matrix(), F0) < 0.97 * g_abd(V0, F0)

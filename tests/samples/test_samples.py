@@ -2,7 +2,7 @@
 and the renderer (scripts/render.py).
 
 Input:  sample_meshes/*.ply + SOURCES.md as committed; the scripts.
-Output: pytest results. Run: /work/main/.venv/bin/python -m pytest tests/samples
+Output: pytest results. Run: .venv/bin/python -m pytest tests/samples
 """
 from __future__ import annotations
 

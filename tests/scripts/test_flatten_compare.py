@@ -13,7 +13,7 @@ import pytest
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 BUILD = os.environ.get("QD_BUILD_DIR", os.path.join(ROOT, "build"))
 QUASIDEV = os.path.join(BUILD, "bin", "quasidev")
-SHARED = os.environ.get("QD_SHARED_MESHES", "/work/shared/meshes")
+DATA = os.path.join(ROOT, "tests", "data")
 MESHES = ["developable_crumpled_crane", "lampshade_frustum_ipc", "garment_shirt_initial_diffavatar"]
 
 
@@ -22,13 +22,10 @@ def result(tmp_path_factory):
     pytest.importorskip("pymeshlab")
     if not os.access(QUASIDEV, os.X_OK):
         pytest.skip(f"no quasidev at {QUASIDEV}")
-    missing = [m for m in MESHES if not os.path.exists(os.path.join(SHARED, m + ".ply"))]
-    if missing:
-        pytest.skip(f"shared meshes missing: {missing}")
     assert shutil.which("rsvg-convert"), "rsvg-convert missing: run scripts/setup.sh"
     out = tmp_path_factory.mktemp("flatten_compare")
     proc = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "flatten_compare.py"),
-                           "--quasidev", QUASIDEV, "--meshes", SHARED, "--out", str(out),
+                           "--quasidev", QUASIDEV, "--meshes", DATA, "--out", str(out),
                            "--picture", str(out / "garment.png"), "--only", *MESHES],
                           capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr

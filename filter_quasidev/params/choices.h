@@ -1,5 +1,5 @@
-// The names of the command's fixed-choice option values, one table per option: they parse the
-// option, show its default in --help and name the value in the JSON report.
+// The names of the fixed-choice parameters' values, one table per parameter: the command parses
+// them, the MeshLab enums list them in this order, the JSON report writes them.
 #pragma once
 
 #include <utility>
@@ -7,9 +7,9 @@
 
 #include "approximate/params.h"
 
-namespace qd::cli {
+namespace qd::params {
 
-enum class QualityKind { Curvature, Displacement };
+enum class QualityKind { Curvature, Displacement };  // what the output's vertex quality holds
 enum class PatternUnit { Model, Millimetre, Centimetre, Inch };  // the model's length unit
 
 template <typename T>
@@ -54,4 +54,4 @@ const char* name_of(const Choices<T>& choices, T value) {
   return "";
 }
 
-}  // namespace qd::cli
+}  // namespace qd::params
