@@ -49,6 +49,8 @@ std::string term_reason_text(const PatchFit& p, const std::vector<CandidateRepor
     case TermReason::Measured: break;
   }
   if (!p.fitted()) return "auto: no Gauss-image curve fits";
+  if (candidates.empty() && p.term == Term::Curve)
+    return "auto: too large to race the angle-defect rows, whose factorisation would not fit";
   if (candidates.empty()) return "auto";
   std::string s = "auto, measured:";
   for (const CandidateReport& c : candidates)

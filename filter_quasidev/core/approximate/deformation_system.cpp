@@ -112,6 +112,7 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
 void DeformationSystem::scale_developability(double factor) {
   w_ *= factor;
   for (double& s : defects_.weight) s *= factor;
+  preconditioner_stale_ = true;  // its scalar factors were of the stronger rows
 }
 
 // Each block column is summed by the thread that owns it, from the corners of its vertex: its
@@ -318,7 +319,8 @@ Eigen::VectorXd DeformationSystem::solve_iteratively(const Eigen::VectorXd& b, c
     return M_.selfadjointView<Eigen::Lower>() * p;
   };
   const auto precondition = [this](const Eigen::VectorXd& r) { return preconditioner_->apply(r); };
-  if (!preconditioner_) build_preconditioner();
+  if (!preconditioner_ || preconditioner_stale_) build_preconditioner();
+  preconditioner_stale_ = false;
   CgOutcome cg;
   {
     StageTimer timer(times_.solve);

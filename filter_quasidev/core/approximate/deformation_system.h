@@ -129,6 +129,7 @@ class DeformationSystem {
   SparseCholesky augmented_;       // K's LDLᵀ
   bool factor_current_ = false;  // the factor belongs to the current M
   std::unique_ptr<FramePreconditioner> preconditioner_;  // built at the first iterative solve
+  bool preconditioner_stale_ = false;                    // the weights changed since
   int scalar_factorizations_ = 0;                        // the preconditioner's
   Eigen::VectorXd last_solution_;  // of the last iterative solve: the next one's warm start
   StageTimes times_;

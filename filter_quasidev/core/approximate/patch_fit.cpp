@@ -94,8 +94,9 @@ void choose_term(PatchFit& p, Developability mode) {
   }
 }
 
-std::vector<Term> candidate_terms(const PatchFit& p) {
+std::vector<Term> candidate_terms(const PatchFit& p, Eigen::Index vertices) {
   if (!p.fitted()) return {Term::Defect};
+  if (vertices > kMaxDefectRaceVertices) return {Term::Curve};
   return {Term::Curve, Term::Defect, Term::Both};
 }
 

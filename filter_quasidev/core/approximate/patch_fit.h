@@ -44,8 +44,15 @@ std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X, size_t
 // they also take patches whose normals fill the sphere.
 void choose_term(PatchFit& p, Developability mode);
 
-// The candidate terms of Developability::Auto for a patch: Curve and Both where a curve fits.
-std::vector<Term> candidate_terms(const PatchFit& p);
+// Above this many vertices in its solve group, a patch whose curve fits races no candidate
+// with angle-defect rows: those are always factorised (deformation_system.h), and the 1M-vertex
+// tube's factorisation took over 16 GB and 15 minutes, where the curve term's conjugate
+// gradients take seconds. The 40k-face tee's largest panel has 8.8k vertices.
+constexpr Eigen::Index kMaxDefectRaceVertices = 100000;
+
+// The candidate terms of Developability::Auto for a patch of a group with `vertices` vertices:
+// Curve and Both where a curve fits, Defect where the group is not too large for it.
+std::vector<Term> candidate_terms(const PatchFit& p, Eigen::Index vertices);
 
 // Target per group face for the patches' terms; zero (no Eq. 13 rows) on defect-only faces.
 std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>& fits);

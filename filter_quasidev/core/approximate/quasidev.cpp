@@ -109,7 +109,7 @@ GroupRun run_group(const Positions& input, const Positions& V, const Triangles& 
         p.term = given->second;
         p.reason = TermReason::Given;
       } else if (candidates.size() < 2) {
-        candidates = candidate_terms(p);
+        candidates = candidate_terms(p, g.solve_vertices);
       }
     }
     if (candidates.size() == 1) run.fits = with_term(run.fits, candidates.front());
