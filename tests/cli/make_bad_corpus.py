@@ -232,7 +232,7 @@ PLUGIN_OUTCOMES = {
     "single_triangle": r"Patch 0 has only 1 face \(1 patch has fewer than 4\)",
     "every_face_own_patch": r"Patch 0 has only 1 face \(288 patches have fewer than 4\)",
     "patch_all_selected": r"All 312 vertices are constrained",
-    "closed_sphere": r"normals fill the sphere",
+    "closed_sphere": None,  # closed and one patch: segmented first (segment_first auto)
     "closed_sphere_defect_rows": None,
     "flat_patch": None, "huge_coordinates": None, "tiny_coordinates": None,
     "bumpy_cylinder": None,

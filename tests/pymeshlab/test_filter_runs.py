@@ -147,18 +147,20 @@ def test_shared_meshes_run_and_keep_connectivity(meshset, name):
 
 
 def test_developability_term_per_patch(meshset):
-    """auto picks the angle-defect rows (code 1) on draped panels and removes far more curvature
-    there than the paper's curve targets (code 0), which it keeps on near-developable ones."""
+    """auto measures each patch's candidate terms and keeps the one that removes most, so on the
+    whole it removes about as much as the better single term (within 2 points, the race's
+    allowance, docs/robustness.md), and reports each patch's choice (0 curve, 1 defect, 2 both)."""
+    single = {}
+    for code, term in enumerate(("curve", "defect")):
+        ms = meshset(sample("draped_panels.ply"))
+        single[term] = run(ms, developability=term)[2]
+        assert set(single[term]["patch_developability"].tolist()) == {code}
     ms = meshset(sample("draped_panels.ply"))
     V0, F0, auto, m = run(ms)
-    assert set(auto["patch_developability"].tolist()) == {1}
+    assert set(auto["patch_developability"].tolist()) <= {0, 1, 2}
+    assert len(auto["patch_developability"]) == auto["patches"]
     assert np.array_equal(m.face_matrix(), F0)
-    assert measures.interior_vertices(len(V0), F0).any()
-    ms = meshset(sample("draped_panels.ply"))
-    _, _, curve, _ = run(ms, developability="curve")
-    assert set(curve["patch_developability"].tolist()) == {0}
-    assert auto["abd_reduction"] > curve["abd_reduction"] + 30
+    assert auto["abd_reduction"] >= max(f["abd_reduction"] for f in single.values()) - 2
     ms = meshset(sample("bumpy_cone.ply"))
     _, _, smooth, _ = run(ms)
-    assert set(smooth["patch_developability"].tolist()) == {0}
     assert smooth["abd_reduction"] > 90
