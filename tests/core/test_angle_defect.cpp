@@ -9,6 +9,7 @@
 #include "approximate/deformer.h"
 #include "approximate/group_mesh.h"
 #include "approximate/quasidev.h"
+#include "approximate/term_race.h"
 #include "approximate/validate.h"
 #include "common/error.h"
 #include "test_meshes.h"
@@ -25,7 +26,8 @@ Problem wrinkled_sheet(int n = 24, double amplitude = 0.08, int patches = 1) {
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i) {
       const double x = 2.0 * i / n - 1, y = 2.0 * j / n - 1;
-      const double z = amplitude * (std::sin(3.1 * x) * std::cos(2.3 * y) + 0.6 * std::sin(4.7 * x * y));
+      const double z =
+          amplitude * (std::sin(3.1 * x) * std::cos(2.3 * y) + 0.6 * std::sin(4.7 * x * y));
       p.V.row(j * (n + 1) + i) << x, y, z;
     }
   p.F.resize(2 * n * n, 3);
@@ -48,8 +50,7 @@ struct OneGroup {
   GroupMesh g;
   VertexFaces incident;
   DefectStars rows;
-  explicit OneGroup(const Problem& p)
-      : g(group(p)), incident(g.F, g.V0.rows()) {
+  explicit OneGroup(const Problem& p) : g(group(p)), incident(g.F, g.V0.rows()) {
     std::vector<char> has_row(g.fixed.size(), 0);
     for (int v : g.owned) has_row[static_cast<size_t>(v)] = !g.fixed[static_cast<size_t>(v)];
     rows = defect_stars(g, incident, has_row, 1.0);
@@ -81,9 +82,8 @@ TEST(AngleDefect, GradientMatchesFiniteDifferences) {
         Positions plus = s.g.V0, minus = s.g.V0;
         plus(s.rows.star[static_cast<size_t>(i)], d) += h;
         minus(s.rows.star[static_cast<size_t>(i)], d) -= h;
-        const double numeric = (linearised(s, plus).defect[r] -
-                                linearised(s, minus).defect[r]) /
-                               (2 * h);
+        const double numeric =
+            (linearised(s, plus).defect[r] - linearised(s, minus).defect[r]) / (2 * h);
         worst = std::max(worst, std::abs(numeric - lin.gradient[static_cast<size_t>(i)](d)));
       }
   EXPECT_LT(worst, 1e-6);
@@ -118,7 +118,8 @@ TEST(AngleDefect, WrinkledSheetLosesMostCurvatureWhereTheCurveCannotHelp) {
   // The open boundary is kept (default): bit for bit.
   const int n = 24;
   for (int i = 0; i <= n; ++i)
-    for (int v : {i, n * (n + 1) + i, i * (n + 1), i * (n + 1) + n}) EXPECT_EQ(r.V.row(v), p.V.row(v));
+    for (int v : {i, n * (n + 1) + i, i * (n + 1), i * (n + 1) + n})
+      EXPECT_EQ(r.V.row(v), p.V.row(v));
 }
 
 TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
@@ -130,7 +131,8 @@ TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
   EXPECT_THROW(approximate(curve), Error);  // the paper cannot fit it: refused, as before
   const Result r = approximate(p);
   EXPECT_EQ(r.patches[0].developability, "defect");
-  EXPECT_NE(r.patches[0].developability_reason.find("no Gauss-image curve fits"), std::string::npos);
+  EXPECT_NE(r.patches[0].developability_reason.find("no Gauss-image curve fits"),
+            std::string::npos);
   EXPECT_GT(r.abd_reduction, 1.0);
   EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
 }
@@ -149,9 +151,9 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
     EXPECT_NE(patch.developability_reason.find(c.term), std::string::npos);
   }
   EXPECT_EQ(kept, 1);
-  for (const auto& [mode, name] : {std::pair{Developability::Curve, "curve"},
-                                   std::pair{Developability::Defect, "defect"},
-                                   std::pair{Developability::Both, "both"}}) {
+  for (const auto& [mode, name] :
+       {std::pair{Developability::Curve, "curve"}, std::pair{Developability::Defect, "defect"},
+        std::pair{Developability::Both, "both"}}) {
     Problem alone = p;
     alone.params.developability = mode;
     const Result single = approximate(alone);
@@ -162,12 +164,32 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
   }
 }
 
+// Once the leader has left less than δ_ABD of the start's G_ABD, no other candidate can remove a
+// meaningful share more: the race stops them there rather than at the keep-the-leader round
+// (0.4 maxIter), and keeps the leader.
+TEST(AngleDefect, AutoStopsTheRaceWhenTheLeaderLeavesLessThanDeltaAbd) {
+  Problem p = test::bumpy_plane(48, 0.05);
+  const Result r = approximate(p);
+  const PatchReport& patch = r.patches[0];
+  ASSERT_EQ(patch.candidates.size(), 3u);
+  const int keep_leader_round = static_cast<int>(std::lround(kKeepLeaderShare * p.params.max_iter));
+  for (const CandidateReport& c : patch.candidates) {
+    if (c.kept) {
+      EXPECT_GE(c.abd_reduction, 100 - p.params.stop_abd);
+    } else {
+      EXPECT_TRUE(c.dropped) << c.term;
+      EXPECT_LT(c.iterations, keep_leader_round) << c.term;
+    }
+  }
+}
+
 TEST(AngleDefect, DefectModeIsScaleAndRotationInvariant) {
   Problem p = wrinkled_sheet(16);
   p.params.developability = Developability::Defect;
   const Result r = approximate(p);
   const double s = 250.0;
-  const Eigen::Matrix3d R = Eigen::AngleAxisd(1.1, Eigen::Vector3d(3, -1, 2).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d R =
+      Eigen::AngleAxisd(1.1, Eigen::Vector3d(3, -1, 2).normalized()).toRotationMatrix();
   Problem q = p;
   q.V = (s * p.V * R.transpose()).eval();
   q.params.tolerance = s * p.params.tolerance;
@@ -192,7 +214,8 @@ TEST(AngleDefect, FixedSeamsDoNotMoveAndFreeSeamsStayShared) {
   EXPECT_GT(free.abd_reduction, 20.0);
   EXPECT_EQ(flipped_faces(p.F, p.V, free.V), 0);
   bool seam_moved = false;
-  for (int j = 1; j < n; ++j) seam_moved = seam_moved || free.V.row(j * (n + 1) + 8) != p.V.row(j * (n + 1) + 8);
+  for (int j = 1; j < n; ++j)
+    seam_moved = seam_moved || free.V.row(j * (n + 1) + 8) != p.V.row(j * (n + 1) + 8);
   EXPECT_TRUE(seam_moved);
 }
 

@@ -132,7 +132,7 @@ GroupRun run_group(const Positions& input, const Positions& V, const Triangles& 
       return Deformation(g, group_targets(g, fits), make_retarget(g, fits, params.targets, threads),
                          group_defect_rows(g, fits), params, ae);
     };
-    RaceOutcome race = race_terms(candidates, start, params.max_iter, progress);
+    RaceOutcome race = race_terms(candidates, start, params.max_iter, params.stop_abd / 100, progress);
     run.fits = fits_of.at(race.winner);
     run.targets = group_targets(g, run.fits);
     run.outcome = std::move(race.outcome);

@@ -3,14 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
-
 namespace qd {
 namespace {
 
 // a leads b: less G_ABD, or as much and less mean displacement.
 bool leads(const Deformation& a, const Deformation& b) {
   return a.best_g_abd() < b.best_g_abd() ||
-         (a.best_g_abd() == b.best_g_abd() && a.best_mean_displacement() < b.best_mean_displacement());
+         (a.best_g_abd() == b.best_g_abd() &&
+          a.best_mean_displacement() < b.best_mean_displacement());
 }
 
 // The leading candidate among those not dropped (the first on a tie).
@@ -31,8 +31,9 @@ size_t trailer(const std::vector<Deformation>& runs, const std::vector<char>& dr
 
 }  // namespace
 
-RaceOutcome race_terms(const std::vector<Term>& terms, const std::function<Deformation(Term)>& start,
-                       int max_iter, const std::function<void(double)>& progress) {
+RaceOutcome race_terms(const std::vector<Term>& terms,
+                       const std::function<Deformation(Term)>& start, int max_iter,
+                       double meaningful, const std::function<void(double)>& progress) {
   std::vector<Deformation> runs;
   for (Term t : terms) runs.push_back(start(t));
   std::vector<char> dropped(runs.size(), 0);
@@ -42,24 +43,28 @@ RaceOutcome race_terms(const std::vector<Term>& terms, const std::function<Defor
       if (active(k)) return true;
     return false;
   };
-  const int drop_worst_after = std::max(1, static_cast<int>(std::lround(kDropWorstShare * max_iter)));
+  const int drop_worst_after =
+      std::max(1, static_cast<int>(std::lround(kDropWorstShare * max_iter)));
   const int keep_leader_after =
       std::max(drop_worst_after + 1, static_cast<int>(std::lround(kKeepLeaderShare * max_iter)));
   for (int round = 1; any_active(); ++round) {
     for (size_t k = 0; k < runs.size(); ++k)
       if (active(k)) runs[k].step();
-    if (progress) progress(static_cast<double>(runs[leader(runs, dropped)].iterations()) / max_iter);
+    if (progress)
+      progress(static_cast<double>(runs[leader(runs, dropped)].iterations()) / max_iter);
     // A candidate that has removed nothing stops once another has removed something, and from
     // kFarBehindFrom on one far behind the leader.
     const size_t lead = leader(runs, dropped);
     const auto removed = [&](size_t k) { return runs[k].initial_g_abd() - runs[k].best_g_abd(); };
     if (removed(lead) > 0)
       for (size_t k = 0; k < runs.size(); ++k)
-        if (!(removed(k) > 0) || (round >= kFarBehindFrom && removed(k) < kFarBehind * removed(lead)))
+        if (!(removed(k) > 0) ||
+            (round >= kFarBehindFrom && removed(k) < kFarBehind * removed(lead)))
           dropped[k] = 1;
     if (round == drop_worst_after && std::count(dropped.begin(), dropped.end(), 0) > 2)
       dropped[trailer(runs, dropped)] = 1;
-    if (round == keep_leader_after) {
+    if (round == keep_leader_after ||
+        runs[lead].best_g_abd() <= meaningful * runs[lead].initial_g_abd()) {
       const size_t keep = leader(runs, dropped);
       for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != keep;
     }

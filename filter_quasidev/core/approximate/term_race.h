@@ -6,7 +6,11 @@
 // displacement) stop, and the leader runs to its own stop. A
 // candidate that has removed nothing stops as soon as another has removed something (on draped
 // garments the curve targets remove nothing), and from round kFarBehindFrom on, one that has
-// removed less than kFarBehind of what the leader removed stops too. A candidate that stops
+// removed less than kFarBehind of what the leader removed stops too. Once the leader has left
+// less than a meaningful share of the start's G_ABD (δ_ABD, the share the plateau rule calls
+// meaningful), no other can remove a meaningful share more, and the others stop (on smooth
+// bumps the curve targets remove all but 1 % within a few iterations, while the angle-defect
+// rows, whose factorisation costs several times more, would run on). A candidate that stops
 // earlier by its own rule stays in the comparison where it stopped. On
 // the generated family of scripts/robustness_sweep.py this keeps the term that running every
 // candidate to its end would keep, at a fraction of the cost (docs/robustness.md has the
@@ -21,7 +25,7 @@
 
 namespace qd {
 
-constexpr double kDropWorstShare = 0.1;  // at the default maxIter of 30: after 3 rounds
+constexpr double kDropWorstShare = 0.1;   // at the default maxIter of 30: after 3 rounds
 constexpr double kKeepLeaderShare = 0.4;  // and after 12
 constexpr int kFarBehindFrom = 2;
 constexpr double kFarBehind = 0.25;
@@ -29,23 +33,25 @@ constexpr double kFarBehind = 0.25;
 // A candidate's figures, for the log and the report.
 struct CandidateFigures {
   Term term = Term::None;
-  int iterations = 0;      // accepted iterations it ran
-  double g_abd = 0;        // its best G_ABD
-  double mean_disp = 0;    // of its best iterate
+  int iterations = 0;    // accepted iterations it ran
+  double g_abd = 0;      // its best G_ABD
+  double mean_disp = 0;  // of its best iterate
   bool kept = false;
-  bool dropped = false;    // stopped by the trial, not by its own stop rule
+  bool dropped = false;  // stopped by the trial, not by its own stop rule
 };
 
 struct RaceOutcome {
   Term winner = Term::None;
-  DeformOutcome outcome;   // the winner's run
+  DeformOutcome outcome;  // the winner's run
   std::vector<CandidateFigures> candidates;
-  double initial_g = 0;    // G_ABD at the start
+  double initial_g = 0;  // G_ABD at the start
 };
 
 // terms: the candidates, in order of preference on a tie; start(term): a fresh run with that
-// term; progress receives the fraction of max_iter the leader has done.
-RaceOutcome race_terms(const std::vector<Term>& terms, const std::function<Deformation(Term)>& start,
-                       int max_iter, const std::function<void(double)>& progress);
+// term; meaningful: the share of the start's G_ABD (δ_ABD / 100) below which a lead is final;
+// progress receives the fraction of max_iter the leader has done.
+RaceOutcome race_terms(const std::vector<Term>& terms,
+                       const std::function<Deformation(Term)>& start, int max_iter,
+                       double meaningful, const std::function<void(double)>& progress);
 
 }  // namespace qd
