@@ -5,7 +5,8 @@ each member run with every developability term and with auto from the same input
 What must hold on every member: auto keeps (within 2 percentage points of G_ABD removed) what
 the best single term gives, but for at most one member in 30, and never loses more than 5
 points; no term folds a face. On the smooth members of the developable bases (plane, cylinder,
-cone) with bumps up to 1 AE, auto removes at least 90 %. docs/robustness.md gives the whole
+cone) with bumps up to 1 AE, auto removes at least 90 %. On bumps of 4 AE it keeps the best term
+on every member. docs/robustness.md gives the whole
 table, including the members where the 90 % is not reached (the tangent developable)."""
 import os
 import sys
@@ -55,3 +56,15 @@ def test_smooth_bumps_on_developable_bases_go(rows):
     low = [(row["member"], round(row["auto"]["reduction"], 1)) for row in smooth
            if row["auto"]["reduction"] < 90.0]
     assert not low
+
+
+LARGE_BUMPS = [mesh_family.Member(b, 4, w, 0, 1, 1) for b in mesh_family.BASES for w in (0.08, 0.16)]
+
+
+def test_a_slow_starter_is_not_dropped_behind_a_lead_that_has_stopped():
+    """Bumps of 4 AE: here one term often stops within a few iterations (a refused step, a
+    plateau) while another starts slowly and removes more later. The race treats a stopped
+    leader as final and lets the others run on, so auto keeps the best term on every member."""
+    rows = rs.sweep(LARGE_BUMPS, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
+    gaps = {row["member"]: round(gap(row), 1) for row in rows}
+    assert max(gaps.values()) <= 2.0, gaps

@@ -29,6 +29,14 @@ size_t trailer(const std::vector<Deformation>& runs, const std::vector<char>& dr
   return worst;
 }
 
+// The most iterations any candidate not dropped has run: the race's progress.
+int most_iterations(const std::vector<Deformation>& runs, const std::vector<char>& dropped) {
+  int most = 0;
+  for (size_t k = 0; k < runs.size(); ++k)
+    if (!dropped[k]) most = std::max(most, runs[k].iterations());
+  return most;
+}
+
 }  // namespace
 
 RaceOutcome race_terms(const std::vector<Term>& terms,
@@ -47,23 +55,23 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
       std::max(1, static_cast<int>(std::lround(kDropWorstShare * max_iter)));
   const int keep_leader_after =
       std::max(drop_worst_after + 1, static_cast<int>(std::lround(kKeepLeaderShare * max_iter)));
+  bool worst_dropped = false;
   for (int round = 1; any_active(); ++round) {
     for (size_t k = 0; k < runs.size(); ++k)
       if (active(k)) runs[k].step();
-    if (progress)
-      progress(static_cast<double>(runs[leader(runs, dropped)].iterations()) / max_iter);
-    // A candidate that has removed nothing stops once another has removed something, and from
-    // kFarBehindFrom on one far behind the leader.
+    if (progress) progress(static_cast<double>(most_iterations(runs, dropped)) / max_iter);
+    // The rules of term_race.h.
     const size_t lead = leader(runs, dropped);
+    const bool lead_runs = runs[lead].running();
     const auto removed = [&](size_t k) { return runs[k].initial_g_abd() - runs[k].best_g_abd(); };
-    if (removed(lead) > 0)
+    if (lead_runs && round >= drop_worst_after && removed(lead) > 0)
       for (size_t k = 0; k < runs.size(); ++k)
-        if (!(removed(k) > 0) ||
-            (round >= kFarBehindFrom && removed(k) < kFarBehind * removed(lead)))
-          dropped[k] = 1;
-    if (round == drop_worst_after && std::count(dropped.begin(), dropped.end(), 0) > 2)
-      dropped[trailer(runs, dropped)] = 1;
-    if (round == keep_leader_after ||
+        if (!(removed(k) >= kFarBehind * removed(lead))) dropped[k] = 1;
+    if (lead_runs && round >= drop_worst_after && !worst_dropped) {
+      worst_dropped = true;
+      if (std::count(dropped.begin(), dropped.end(), 0) > 2) dropped[trailer(runs, dropped)] = 1;
+    }
+    if ((lead_runs && round >= keep_leader_after) ||
         runs[lead].best_g_abd() <= meaningful * runs[lead].initial_g_abd()) {
       const size_t keep = leader(runs, dropped);
       for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != keep;
