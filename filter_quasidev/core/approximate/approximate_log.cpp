@@ -50,7 +50,10 @@ std::string term_reason_text(const PatchFit& p, const std::vector<CandidateRepor
   }
   if (!p.fitted()) return "auto: no Gauss-image curve fits";
   if (candidates.empty() && p.term == Term::Curve)
-    return "auto: too large to race the angle-defect rows, whose factorisation would not fit";
+    return format("auto: above %d vertices the angle-defect rows are not raced (their "
+                  "factorisation would cost many times the curve term's run); developability "
+                  "defect or both runs them",
+                  static_cast<int>(kMaxDefectRaceVertices));
   if (candidates.empty()) return "auto";
   std::string s = "auto, measured:";
   for (const CandidateReport& c : candidates)
