@@ -11,14 +11,20 @@ nobody looked at. Every member is deterministic for its parameters and seed.
   jitter      each interior vertex moved by a random vector of this length, in AE
   resolution  grid density: 1 = 64 x 24 cells (about 3k triangles), 2 = twice as fine each way
 
-Used by scripts/robustness_sweep.py and tests/sweep/. numpy only.
+Used by scripts/robustness_sweep.py and tests/sweep/. numpy only (the mesh measures of
+compare_developability.py).
 """
 from __future__ import annotations
 
 import dataclasses
 import math
+import os
+import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from compare_developability import average_edge, interior_vertices  # noqa: E402
 
 BASES = ("plane", "cylinder", "cone", "tangent", "lampshade")
 PERIODIC = {"plane": False, "cylinder": True, "cone": True, "tangent": False, "lampshade": True}
@@ -84,18 +90,6 @@ def _normals(base: str, u: np.ndarray, v: np.ndarray, h: float = 1e-6) -> np.nda
     return n / np.linalg.norm(n, axis=-1, keepdims=True)
 
 
-def average_edge(V: np.ndarray, F: np.ndarray) -> float:
-    e = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]])
-    e = np.unique(np.sort(e, axis=1), axis=0)
-    return float(np.linalg.norm(V[e[:, 0]] - V[e[:, 1]], axis=1).mean())
-
-
-def boundary_vertices(F: np.ndarray) -> np.ndarray:
-    e = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
-    uniq, count = np.unique(e, axis=0, return_counts=True)
-    return np.unique(uniq[count == 1])
-
-
 def make(m: Member) -> tuple[np.ndarray, np.ndarray]:
     """Vertices (n x 3, float64) and triangles (m x 3) of a member."""
     if m.base not in BASES:
@@ -126,7 +120,7 @@ def make(m: Member) -> tuple[np.ndarray, np.ndarray]:
     if m.jitter > 0:
         d = rng.normal(size=V.shape)
         d /= np.linalg.norm(d, axis=1, keepdims=True)
-        d[boundary_vertices(F)] = 0
+        d[~interior_vertices(len(V), F)] = 0  # the boundary stays put
         V = V + m.jitter * ae * d
     return V, F
 
