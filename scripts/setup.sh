@@ -2,10 +2,12 @@
 # Installs what the project needs on Debian 12 (idempotent; fast when already done).
 #   scripts/setup.sh --demo   only what scripts/demo.sh needs:
 #     1. Debian packages to build the engine, the command and the MeshLab 2020.09 plugin (compiler,
-#        CMake, Qt5, Eigen, GLEW, SuiteSparse, nanoflann, CLI11, nlohmann-json) and to run it
+#        CMake, Qt5, Eigen, GLEW, SuiteSparse, nanoflann, CLI11, nlohmann-json, libnest2d with
+#        Boost.Geometry and NLopt for the marker, cairo for the printable PDF) and to run it
 #        (meshlab 2020.09, Xvfb, Mesa, python3-venv);
-#     2. the MeshLab 2020.09 source tree whose headers the plugin compiles against, from Debian's
-#        source package (pinned by sha256), into third_party/meshlab-2020.09;
+#     2. the MeshLab 2020.09 source tree whose headers the plugin compiles against, and the
+#        Clipper source compiled into the engine, from Debian's source packages (pinned by
+#        sha256), into third_party/meshlab-2020.09 and third_party/polyclipping-6.4.2;
 #     3. the Python venv .venv with scripts/requirements-render.txt (the demo's picture).
 #   scripts/setup.sh          all of the above, plus what only the tests and the docs need:
 #     4. Debian packages: GoogleTest, clang and its libFuzzer (tests/cli/run_sanitizers.sh),
@@ -51,7 +53,8 @@ timed() {
 # What the demo needs: build the engine, the command and the MeshLab 2020.09 plugin, and run it.
 DEMO_PACKAGES=(cmake g++ make qtbase5-dev libqt5opengl5-dev libglew-dev
                libeigen3-dev libsuitesparse-dev libopenblas0-pthread libnanoflann-dev
-               libcli11-dev nlohmann-json3-dev
+               libcli11-dev nlohmann-json3-dev libnest2d-dev libboost-dev libnlopt-cxx-dev
+               libcairo2-dev
                meshlab xvfb xauth libgl1-mesa-dri python3-venv
                ca-certificates debian-archive-keyring xz-utils)
 # What only the tests need (see the header).
@@ -76,6 +79,9 @@ install_packages() {
 # name of the orig tarball | sha256 | apt source spec | target dir
 SOURCE_2020="meshlab_2020.09+dfsg1.orig.tar.xz|d6715352ff65caffdec0292858d4263eb0c3cbbf3b1e5c2e2bab218e3f234630|meshlab=2020.09+dfsg1-2|meshlab-2020.09"
 SOURCE_2025="meshlab_2025.07~dfsg.orig.tar.xz|d22c98d362f2a284e481af8dbfc272b2222f5b9c67b3cf8bec57d1c3161886f4|meshlab=2025.07~dfsg-4|meshlab-2025.07"
+# Clipper (polygon offsets for the seam allowance, and libnest2d's geometry), compiled into the
+# engine: Debian ships it only as a shared library, which the pymeshlab wheel does not have.
+SOURCE_CLIPPER="libpolyclipping_6.4.2.orig.tar.bz2|69a2fadc3c0b6c06c3f77e92067b65e28e398a75d1260e9114c283a04e76c463|libpolyclipping=6.4.2-7|polyclipping-6.4.2"
 # A private deb-src list: the system's /etc/apt configuration stays untouched
 # (docs/meshlab-notes.md, "MeshLab's sources").
 APTDIR="$THIRD/.apt"
@@ -117,7 +123,7 @@ fetch_source() {
     || die "sha256 mismatch for $tarball: expected $sha, got $(sha256sum "$THIRD/$tarball" | cut -d' ' -f1)"
   say "extracting $tarball to third_party/$dir"
   rm -rf "$THIRD/$dir.tmp" && mkdir -p "$THIRD/$dir.tmp"
-  tar -xJf "$THIRD/$tarball" -C "$THIRD/$dir.tmp" --strip-components=1 || die "extracting $tarball"
+  tar -xaf "$THIRD/$tarball" -C "$THIRD/$dir.tmp" --strip-components=1 || die "extracting $tarball"
   echo "$sha" > "$THIRD/$dir.tmp/.sha256"
   rm -rf "${THIRD:?}/$dir" && mv "$THIRD/$dir.tmp" "$THIRD/$dir"
 }
@@ -143,6 +149,8 @@ pip_requirements() {
 timed "Debian packages for the demo" install_packages "${DEMO_PACKAGES[@]}"
 timed "MeshLab 2020.09 source" fetch_source "$SOURCE_2020"
 [ -f "$THIRD/meshlab-2020.09/src/common/interfaces.h" ] || die "third_party/meshlab-2020.09 lacks src/common/interfaces.h"
+timed "Clipper source" fetch_source "$SOURCE_CLIPPER"
+[ -f "$THIRD/polyclipping-6.4.2/cpp/clipper.cpp" ] || die "third_party/polyclipping-6.4.2 lacks cpp/clipper.cpp"
 timed "Python venv for the demo" pip_requirements "$ROOT/scripts/requirements-render.txt"
 if [ $DEMO_ONLY -eq 1 ]; then
   say "done (the demo's needs; scripts/setup.sh without --demo adds what the tests need)"

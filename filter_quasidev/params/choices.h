@@ -11,6 +11,8 @@ namespace qd::params {
 
 enum class QualityKind { Curvature, Displacement };  // what the output's vertex quality holds
 enum class PatternUnit { Model, Millimetre, Centimetre, Inch };  // the model's length unit
+enum class DxfStyle { Plain, Aama };  // the DXF pattern's layout: plain R12, or AAMA/ASTM D6673
+enum class Paper { A4, Letter };      // the printable PDF's page size
 
 template <typename T>
 using Choices = std::vector<std::pair<const char*, T>>;
@@ -25,9 +27,8 @@ inline const Choices<Developability> kDevelopability = {{"curve", Developability
                                                         {"auto", Developability::Auto}};
 inline const Choices<StopRule> kStopRules = {{"plateau", StopRule::Plateau},
                                              {"paper", StopRule::Paper}};
-inline const Choices<SegmentFirst> kSegmentFirst = {{"auto", SegmentFirst::Auto},
-                                                    {"never", SegmentFirst::Never},
-                                                    {"always", SegmentFirst::Always}};
+inline const Choices<SegmentFirst> kSegmentFirst = {
+    {"auto", SegmentFirst::Auto}, {"never", SegmentFirst::Never}, {"always", SegmentFirst::Always}};
 inline const Choices<SeamMode> kSeamModes = {{"fixed", SeamMode::Fixed}, {"free", SeamMode::Free}};
 inline const Choices<TargetMode> kTargetModes = {{"fixed", TargetMode::Fixed},
                                                  {"reproject", TargetMode::Reproject},
@@ -43,6 +44,8 @@ inline const Choices<PatternUnit> kPatternUnits = {{"model", PatternUnit::Model}
                                                    {"mm", PatternUnit::Millimetre},
                                                    {"cm", PatternUnit::Centimetre},
                                                    {"in", PatternUnit::Inch}};
+inline const Choices<DxfStyle> kDxfStyles = {{"plain", DxfStyle::Plain}, {"aama", DxfStyle::Aama}};
+inline const Choices<Paper> kPapers = {{"a4", Paper::A4}, {"letter", Paper::Letter}};
 inline const Choices<QualityKind> kQualityKinds = {{"curvature", QualityKind::Curvature},
                                                    {"displacement", QualityKind::Displacement}};
 

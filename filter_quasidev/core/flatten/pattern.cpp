@@ -43,6 +43,7 @@ PatternPiece pattern_piece(int patch, const std::string& label, const Triangles&
     }
     p.outlines.push_back(std::move(outline));
   }
+  p.cut_outlines = p.outlines;
   return p;
 }
 

@@ -1,6 +1,6 @@
-// The cutting pattern: per piece its outline(s) on the sheet, its label and its notches, the
-// marks at seam vertices by which pieces are matched when sewn or joined. What the SVG and DXF
-// writers draw; pure geometry, in model units.
+// The cutting pattern: per piece its sew line(s) and cut line(s) on the sheet, its notches (the
+// marks at seam vertices by which pieces are matched when sewn or joined), its grainline, its
+// label and how many to cut. What the pattern writers draw; pure geometry, in model units.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -12,16 +12,24 @@
 namespace qd {
 
 struct Notch {
-  Eigen::Vector2d at;      // a boundary vertex on a seam or cut (notches.h)
+  Eigen::Vector2d at;      // a boundary vertex on a seam or cut (notches.h), on the sew line
   Eigen::Vector2d inward;  // unit normal of the outline there, pointing into the piece
 };
 
+using Outline = std::vector<Eigen::Vector2d>;  // a closed polygon, its last point not repeated
+
 struct PatternPiece {
   int patch = 0;
-  std::string label;                                   // "3", or "3.1" for the second piece of patch 3
-  std::vector<std::vector<Eigen::Vector2d>> outlines;  // closed, counter-clockwise, one per boundary loop
+  std::string label;  // "3", or "3.1" for the second piece of patch 3
+  std::string name;   // the panel's name in the input (OBJ group, PLY comment); "" = none
+  std::vector<Outline> outlines;      // sew lines: counter-clockwise, one per boundary loop
+  std::vector<Outline> cut_outlines;  // cut lines: the sew lines offset outward by the seam
+                                      // allowance (seam_allowance.h); the sew lines when it is 0
   std::vector<Notch> notches;
+  Eigen::Vector2d grain = Eigen::Vector2d::UnitY();  // unit direction of the grainline on the sheet
   Eigen::Vector2d label_at = Eigen::Vector2d::Zero();  // area centroid of the piece
+  int quantity = 1;  // pieces to cut from this one (symmetric_pieces.h)
+  int mirrored = 0;  // of which this many turned over (mirror images)
 };
 
 struct Pattern {
@@ -31,8 +39,9 @@ struct Pattern {
 
 // One piece: F its faces, uv its flat positions on the sheet, loops its boundary loops in face
 // order, notch per vertex (1 = a notch where it is on a loop).
-PatternPiece pattern_piece(int patch, const std::string& label, const Triangles& F, const Eigen::MatrixX2d& uv,
-                           const std::vector<std::vector<int>>& loops, const std::vector<char>& notch);
+PatternPiece pattern_piece(int patch, const std::string& label, const Triangles& F,
+                           const Eigen::MatrixX2d& uv, const std::vector<std::vector<int>>& loops,
+                           const std::vector<char>& notch);
 
 // The pattern of the given pieces, with its bounds.
 Pattern make_pattern(std::vector<PatternPiece> pieces);
