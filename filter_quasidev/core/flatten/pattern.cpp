@@ -39,7 +39,7 @@ PatternPiece pattern_piece(int patch, const std::string& label, const Triangles&
       outline.push_back(at);
       if (!notch[loop[i]]) continue;
       const Eigen::Vector2d sum = left_normal(prev, at) + left_normal(at, next);
-      p.notches.push_back({at, sum.norm() > 1e-12 ? Eigen::Vector2d(sum.normalized()) : left_normal(at, next)});
+      p.notches.push_back({at, sum.norm() > 1e-12 ? Eigen::Vector2d(sum.normalized()) : left_normal(at, next), at});
     }
     p.outlines.push_back(std::move(outline));
   }

@@ -14,6 +14,7 @@ namespace qd {
 struct Notch {
   Eigen::Vector2d at;      // a boundary vertex on a seam or cut (notches.h), on the sew line
   Eigen::Vector2d inward;  // unit normal of the outline there, pointing into the piece
+  Eigen::Vector2d cut_at;  // where it crosses the cut line: a notch is cut through the allowance
 };
 
 using Outline = std::vector<Eigen::Vector2d>;  // a closed polygon, its last point not repeated
