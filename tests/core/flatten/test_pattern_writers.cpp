@@ -15,12 +15,14 @@ qd::Pattern two_pieces() {
   rect.patch = 3;
   rect.label = "3";
   rect.outlines = {{{0, 0}, {4, 0}, {4, 2}, {0, 2}}};
-  rect.notches = {{{4, 1}, {-1, 0}}, {{2, 0}, {0, 1}}};
+  rect.cut_outlines = rect.outlines;
+  rect.notches = {{{4, 1}, {-1, 0}, {4, 1}}, {{2, 0}, {0, 1}, {2, 0}}};
   rect.label_at = {2, 1};
   qd::PatternPiece tri;
   tri.patch = -1;
   tri.label = "-1.1";
   tri.outlines = {{{5, 0}, {7, 0}, {6, 1.5}}};
+  tri.cut_outlines = tri.outlines;
   tri.label_at = {6, 0.5};
   return qd::make_pattern({rect, tri});
 }
