@@ -169,7 +169,7 @@ struct Fit {
 // How `member` best fits `rep` within `limit` (a length): unmirrored alignments first.
 Fit best_fit(const Shape& rep, const Shape& member, double limit) {
   Fit fit;
-  if (rep.outlines.size() != member.outlines.size()) return fit;
+  if (limit <= 0 || rep.outlines.size() != member.outlines.size()) return fit;
   if (std::abs(rep.area - member.area) > 2 * limit * (rep.perimeter + member.perimeter)) return fit;
   // Identity, 180° rotation, then the mirrors x → −x and y → −y.
   const Eigen::Matrix2d symmetries[] = {
@@ -193,26 +193,32 @@ Fit best_fit(const Shape& rep, const Shape& member, double limit) {
 
 std::vector<PieceGroup> symmetric_groups(const std::vector<PatternPiece>& pieces,
                                          double tolerance) {
-  const int n = static_cast<int>(pieces.size());
   std::vector<Shape> shapes;
-  if (tolerance > 0)
-    for (const PatternPiece& p : pieces) shapes.push_back(shape_of(p));
-  std::vector<char> grouped(pieces.size(), 0);
+  for (const PatternPiece& p : pieces) shapes.push_back(shape_of(p));
+  // Each piece in turn joins the representative it fits best (the smallest difference, the
+  // earliest on a tie), or else represents a new group.
   std::vector<PieceGroup> groups;
-  for (int r = 0; r < n; ++r) {
-    if (grouped[r]) continue;
-    PieceGroup group{{r}, {0}, 0};
-    const double limit = tolerance / 100 * (shapes.empty() ? 0 : shapes[r].size);
-    for (int m = r + 1; m < n && limit > 0; ++m) {
-      if (grouped[m]) continue;
-      const Fit fit = best_fit(shapes[r], shapes[m], limit);
-      if (!fit.fits) continue;
-      grouped[m] = 1;
-      group.members.push_back(m);
-      group.mirrored.push_back(fit.mirrored);
-      group.difference = std::max(group.difference, 100 * fit.distance / shapes[r].size);
+  for (int m = 0; m < static_cast<int>(pieces.size()); ++m) {
+    PieceGroup* chosen = nullptr;
+    Fit chosen_fit;
+    double chosen_difference = 0;
+    for (PieceGroup& group : groups) {
+      const Shape& rep = shapes[group.members[0]];
+      const Fit fit = best_fit(rep, shapes[m], tolerance / 100 * rep.size);
+      const double difference = fit.fits ? 100 * fit.distance / rep.size : 0;
+      if (fit.fits && (!chosen || difference < chosen_difference)) {
+        chosen = &group;
+        chosen_fit = fit;
+        chosen_difference = difference;
+      }
     }
-    groups.push_back(std::move(group));
+    if (!chosen) {
+      groups.push_back({{m}, {0}, 0});
+      continue;
+    }
+    chosen->members.push_back(m);
+    chosen->mirrored.push_back(chosen_fit.mirrored);
+    chosen->difference = std::max(chosen->difference, chosen_difference);
   }
   return groups;
 }

@@ -32,8 +32,9 @@ struct PieceGroup {
 
 // pieces: the pattern pieces, their sew lines in `outlines`, all in one orientation on the sheet.
 // tolerance: percent of a piece's size (the diagonal of its bounding box); 0 = every piece alone.
-// Every piece is in exactly one group; a piece joins the group of the first representative (in
-// index order) it fits. Groups come in order of their representative; deterministic.
+// Every piece is in exactly one group: in index order, each piece joins the earlier
+// representative it fits with the smallest difference, or else represents a new group. Groups
+// come in order of their representative; deterministic.
 std::vector<PieceGroup> symmetric_groups(const std::vector<PatternPiece>& pieces, double tolerance);
 
 }  // namespace qd

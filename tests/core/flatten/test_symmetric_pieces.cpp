@@ -150,6 +150,21 @@ TEST(SymmetricPieces, ThreeCopiesAreOneGroupInIndexOrder) {
   }
 }
 
+TEST(SymmetricPieces, PieceJoinsTheRepresentativeItFitsBest) {
+  // Scaled by 1, 1.04 and 1.025: the first two are too far apart to group at 1.5 %, the third
+  // fits both and is closer to the second.
+  const Outline o = blob();
+  std::vector<PatternPiece> pieces;
+  for (double scale : {1.0, 1.04, 1.025})
+    pieces.push_back(piece({mapped(
+        o, false, [&](const Eigen::Vector2d& p) -> Eigen::Vector2d { return scale * p; })}));
+  ASSERT_EQ(qd::symmetric_groups({pieces[0], pieces[2]}, 1.5).size(), 1u);
+  const std::vector<qd::PieceGroup> g = qd::symmetric_groups(pieces, 1.5);
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(g[0].members, (std::vector<int>{0}));
+  EXPECT_EQ(g[1].members, (std::vector<int>{1, 2}));
+}
+
 TEST(SymmetricPieces, PieceWithAHoleNeverGroupsWithOneWithout) {
   const Outline o = blob();
   const Outline hole =
