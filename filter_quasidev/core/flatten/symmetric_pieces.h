@@ -3,18 +3,19 @@
 //
 // Method. The pieces share an orientation on the sheet (grain along +y, or the layout's principal
 // axis along x), so a piece can only match another turned by one of the four symmetries of that
-// frame: identity, 180° rotation, mirror x → −x (a left/right pair), mirror y → −y. Two pieces
-// with a different number of boundary loops never match; two whose areas differ by more than the
+// frame: identity, 180° rotation, mirror x → −x (a left/right pair), mirror y → −y. Two pieces with
+// a different number of boundary loops never match; two whose areas differ by more than the
 // tolerance band around the boundary can hold (2·tolerance·perimeter) are rejected unaligned.
-// Otherwise, for each symmetry, area centroid is moved onto area centroid and the fit is refined
-// by iterative closest points (Besl & McKay 1992) with the 2D Procrustes step (rotation and
-// translation, no scale), the turn limited to ±5°: pieces flattened separately by ARAP are
-// mirror images only up to ARAP's tolerance and a slight turn (a 2° turn of a piece already moves
-// its ends by 1.7 % of its size), while a larger turn would put the grain off. The distance of two
-// aligned pieces is the symmetric Hausdorff distance of their sew lines: every sew line sampled
-// at its vertices and at most 1/512 of the size apart, each sample's distance to the other
-// piece's polylines, both ways, the largest. An unmirrored alignment within the tolerance is
-// preferred to a mirrored one (a symmetric piece is then not reported as turned over).
+// Otherwise, for each symmetry, area centroid is moved onto area centroid and the fit is refined by
+// iterative closest points (Besl & McKay 1992) with the 2D Procrustes step (rotation and
+// translation, no scale), the turn limited to ±5°: each piece's orientation comes from its own
+// flattening (its grain or principal axis), so two pieces flattened separately may sit a slight
+// turn apart, and a 2° turn already moves a piece's ends by 1.7 % of its size; a larger turn would
+// put the grain off. The distance of two aligned pieces is the symmetric Hausdorff distance of
+// their sew lines: every sew line sampled at its vertices and at most 1/512 of the size apart, each
+// sample's distance to the other piece's polylines, both ways, the largest. An unmirrored alignment
+// within the tolerance is preferred to a mirrored one (a symmetric piece is then not reported as
+// turned over).
 #pragma once
 
 #include <vector>
