@@ -51,8 +51,9 @@ Pattern make_pattern(std::vector<PatternPiece> pieces) {
   Pattern pattern;
   pattern.pieces = std::move(pieces);
   for (const PatternPiece& p : pattern.pieces)
-    for (const auto& outline : p.outlines)
-      for (const Eigen::Vector2d& at : outline) pattern.bounds.extend(at);
+    for (const std::vector<Outline>* lines : {&p.outlines, &p.cut_outlines})
+      for (const Outline& outline : *lines)
+        for (const Eigen::Vector2d& at : outline) pattern.bounds.extend(at);
   return pattern;
 }
 

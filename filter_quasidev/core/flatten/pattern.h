@@ -44,7 +44,7 @@ PatternPiece pattern_piece(int patch, const std::string& label, const Triangles&
                            const Eigen::MatrixX2d& uv, const std::vector<std::vector<int>>& loops,
                            const std::vector<char>& notch);
 
-// The pattern of the given pieces, with its bounds.
+// The pattern of the given pieces, with its bounds (of sew and cut lines).
 Pattern make_pattern(std::vector<PatternPiece> pieces);
 
 }  // namespace qd
