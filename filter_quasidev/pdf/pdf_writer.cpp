@@ -165,7 +165,9 @@ void map_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const P
     cairo_rectangle(cr, a.x(), a.y(), b.x() - a.x(), b.y() - a.y());
     cairo_stroke(cr);
     const Eigen::Vector2d c = (a + b) / 2;
-    text(cr, tile.name() + " p." + std::to_string(i + 2), c.x(), c.y(), kFont, true);
+    const double font = std::min(kFont, (b.x() - a.x()) / 4);  // fits small cells
+    text(cr, tile.name(), c.x(), c.y(), font, true);
+    text(cr, "p." + std::to_string(i + 2), c.x(), c.y() + font, font, true);
   }
   cairo_set_source_rgb(cr, 0, 0, 0);
   const double y = page.height - page.margin - kTestSquare;
