@@ -4,7 +4,7 @@
 // (qd::segment), writes it as PLY with per-face quality = patch id and a colour per patch, and
 // optionally a JSON report. quasidev flatten: reads a mesh, flattens its patches (qd::flatten), writes it as PLY
 // with wedge texture coordinates, the stretch per face and its colour ramp, and optionally a
-// JSON report and the pattern as SVG and DXF. Subcommands and options: options.h.
+// JSON report and the pattern as SVG, DXF and a printable PDF. Subcommands and options: options.h.
 // Exit 0 on success; 1 on bad input or an engine error; 2 on a bad command line. On error one
 // line "quasidev: error: REASON" goes to stderr and no file is written.
 #include <unistd.h>
@@ -32,6 +32,7 @@
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
+#include "printable_pdf.h"
 #include "report_json.h"
 #include "segment/segment.h"
 #include "segment_mesh.h"
@@ -211,8 +212,14 @@ void flatten(const qd::cli::FlattenOptions& o) {
     qd::write_dxf(dxf, result.pattern);
     files.emplace_back(o.settings.dxf_file, dxf.str());
   }
+  std::vector<std::string> log = result.log;
+  if (!o.settings.pdf_file.empty()) {
+    auto pdf = qd::pdf::printable_pdf(result.pattern, o.settings.paper, o.settings.unit);
+    files.emplace_back(o.settings.pdf_file, std::move(pdf.bytes));
+    log.push_back(pdf.summary);
+  }
   write_files(files);
-  print_outcome(o, {}, result.log, mesh.notes);
+  print_outcome(o, {}, log, mesh.notes);
 }
 
 int fail(const std::string& reason, int status) {

@@ -67,6 +67,7 @@ std::vector<std::pair<std::string, std::string>> output_files(const FlattenOptio
   std::vector<std::pair<std::string, std::string>> files = output_files(static_cast<const JobOptions&>(o));
   if (!o.settings.svg_file.empty()) files.emplace_back("--svg-file", o.settings.svg_file);
   if (!o.settings.dxf_file.empty()) files.emplace_back("--dxf-file", o.settings.dxf_file);
+  if (!o.settings.pdf_file.empty()) files.emplace_back("--pdf-file", o.settings.pdf_file);
   return files;
 }
 
@@ -132,6 +133,9 @@ CommandLine parse_command_line(std::vector<std::string> args) {
   if (line.job == Job::Segment) check_files(line.segment, output_files(line.segment));
   else if (line.job == Job::Flatten) check_files(line.flatten, output_files(line.flatten));
   else check_files(line.approximate, output_files(line.approximate));
+  if (line.job == Job::Flatten && !line.flatten.settings.pdf_file.empty() &&
+      line.flatten.settings.unit == params::PatternUnit::Model)
+    usage("--pdf-file prints at true scale: it needs the model's length unit, --unit mm, cm or in");
   return line;
 }
 
