@@ -5,12 +5,14 @@
 #include <limits>
 #include <locale>
 #include <sstream>
+#include <utility>
 
 namespace qd {
 
 namespace {
 
 constexpr double kGrainShare = 0.6;  // of the piece's extent along the grain
+constexpr double kInside = 0.9;      // of the way from the centroid to the sew line
 
 // x rounded to hundredths, as text.
 std::string measure_text(double x) {
@@ -19,6 +21,26 @@ std::string measure_text(double x) {
   out.precision(12);
   out << std::round(x * 100) / 100;
   return out.str();
+}
+
+// How far from `at` along ±d the line first crosses the loops: {before (≤ 0), after (≥ 0)},
+// infinite where it does not.
+std::pair<double, double> crossings(const std::vector<Outline>& loops, const Eigen::Vector2d& at,
+                                    const Eigen::Vector2d& d) {
+  double before = -std::numeric_limits<double>::infinity();
+  double after = std::numeric_limits<double>::infinity();
+  for (const Outline& loop : loops)
+    for (std::size_t i = 0, n = loop.size(); i < n; ++i) {
+      const Eigen::Vector2d a = loop[i] - at, e = loop[(i + 1) % n] - loop[i];
+      const double det = e.x() * d.y() - e.y() * d.x();  // solve t d = a + s e
+      if (det == 0) continue;
+      const double s = (a.y() * d.x() - a.x() * d.y()) / det;
+      if (s < 0 || s > 1) continue;
+      const double t = (a + s * e).dot(d);
+      if (t >= 0) after = std::min(after, t);
+      if (t <= 0) before = std::max(before, t);
+    }
+  return {before, after};
 }
 
 }  // namespace
@@ -38,7 +60,9 @@ Segment2 grainline(const PatternPiece& piece) {
       high = std::max(high, p.dot(piece.grain));
     }
   const double half = high > low ? kGrainShare * (high - low) / 2 : 0;
-  return {piece.label_at - half * piece.grain, piece.label_at + half * piece.grain};
+  const auto [before, after] = crossings(piece.outlines, piece.label_at, piece.grain);
+  return {piece.label_at + std::max(-half, kInside * before) * piece.grain,
+          piece.label_at + std::min(half, kInside * after) * piece.grain};
 }
 
 Segment2 notch_tick(const Notch& notch, double beyond) {

@@ -18,7 +18,8 @@ struct Segment2 {
 // Bounding box of the piece's cut line(s).
 Eigen::AlignedBox2d cut_box(const PatternPiece& piece);
 
-// The grainline: through label_at along grain, 60 % of the cut line's extent along the grain.
+// The grainline: through label_at along grain, 60 % of the cut line's extent along the grain,
+// shortened where it would come within 10 % of the sew line (of the way from label_at to it).
 Segment2 grainline(const PatternPiece& piece);
 
 // A notch's tick: from where it crosses the cut line through the sew line, then `beyond` further

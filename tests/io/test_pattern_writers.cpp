@@ -128,6 +128,11 @@ TEST(PieceMarks, GrainlineAndNotchTicks) {
   const qd::Segment2 grain = qd::grainline(rect);  // +y through (2, 1), 60 % of the 3-unit extent
   EXPECT_LT((grain.from - Eigen::Vector2d(2, 0.1)).norm(), 1e-12);
   EXPECT_LT((grain.to - Eigen::Vector2d(2, 1.9)).norm(), 1e-12);
+  qd::PatternPiece sliver = rect;  // a piece 0.4 high: the grainline stays inside it
+  sliver.outlines = {{{0, 0.8}, {4, 0.8}, {4, 1.2}, {0, 1.2}}};
+  const qd::Segment2 clipped = qd::grainline(sliver);
+  EXPECT_LT((clipped.from - Eigen::Vector2d(2, 0.82)).norm(), 1e-12);
+  EXPECT_LT((clipped.to - Eigen::Vector2d(2, 1.18)).norm(), 1e-12);
   const qd::Segment2 tick = qd::notch_tick(rect.notches[0], 0.25);  // from the cut line inward
   EXPECT_LT((tick.from - Eigen::Vector2d(4.5, 1)).norm(), 1e-12);
   EXPECT_LT((tick.to - Eigen::Vector2d(3.75, 1)).norm(), 1e-12);
