@@ -18,9 +18,9 @@
 
 #include "bench_mesh.h"
 #include "common/error.h"
-#include "flatten/dxf_writer.h"
 #include "flatten/flatten.h"
-#include "flatten/svg_writer.h"
+#include "io/dxf_writer.h"
+#include "io/svg_writer.h"
 #include "mesh_geometry.h"
 #include "mesh_reader.h"
 
@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
     }
     if (!a.dxf.empty()) {
       std::ofstream out(a.dxf);
-      qd::write_dxf(out, r.pattern);
+      qd::write_dxf(out, r.pattern, a.unit);
     }
     return 0;
   } catch (const std::exception& e) {

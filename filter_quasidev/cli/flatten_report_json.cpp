@@ -1,5 +1,6 @@
 #include "flatten_report_json.h"
 
+#include "flatten/outline_measures.h"
 #include "flatten_params.h"
 #include "params_json.h"
 #include "report_text.h"
@@ -34,11 +35,27 @@ Json piece(const PieceReport& p) {
           {"time_ms", p.time_ms}};
 }
 
+// A pattern piece's measures, in model units: areas are the outer loop's less the holes',
+// perimeters sum every loop (outline_measures.h).
+Json pattern_piece(const PatternPiece& p) {
+  return {{"label", p.label},
+          {"name", p.name},
+          {"quantity", p.quantity},
+          {"mirrored", p.mirrored},
+          {"sew_area", outline_area(p.outlines)},
+          {"sew_perimeter", outline_length(p.outlines)},
+          {"cut_area", outline_area(p.cut_outlines)},
+          {"cut_perimeter", outline_length(p.cut_outlines)},
+          {"grain", {p.grain.x(), p.grain.y()}}};
+}
+
 }  // namespace
 
 std::string flatten_report_json(const FlattenResult& result, const FlattenReportContext& c) {
   Json pieces = Json::array();
   for (const PieceReport& p : result.pieces) pieces.push_back(piece(p));
+  Json pattern = Json::array();
+  for (const PatternPiece& p : result.pattern.pieces) pattern.push_back(pattern_piece(p));
   const Json parameters = params::values_json(params::flatten_params(), c.options.settings);
   const Json report = {{"input", c.options.input},
                        {"output", c.options.output},
@@ -47,6 +64,7 @@ std::string flatten_report_json(const FlattenResult& result, const FlattenReport
                        {"has_patch_ids", c.has_patch_ids},
                        {"parameters", parameters},
                        {"pieces", pieces},
+                       {"pattern", pattern},
                        {"max_distortion", result.max_distortion},
                        {"flattenable_pieces", result.flattenable_pieces},
                        {"sheet", box(result.pattern.bounds)},

@@ -1,7 +1,9 @@
 // The --report JSON of `quasidev flatten`: what was run (files, mesh size, parameters) and every
 // figure of a qd::FlattenResult (per piece: faces, cut, ARAP iterations and stop reason, length
 // distortion, area and boundary change, flips, overlaps, place on the sheet, time), the sheet's
-// extent and the log. Input: the result and its context. Output: text.
+// extent, per pattern piece its label, name, quantity, mirror count, sew and cut line area and
+// perimeter and grain direction (the "pattern" array), and the log. Input: the result and its
+// context. Output: text.
 #pragma once
 
 #include <string>

@@ -22,11 +22,10 @@
 
 #include "approximate/quasidev.h"
 #include "atomic_file.h"
-#include "flatten/dxf_writer.h"
 #include "flatten/flatten.h"
-#include "flatten/svg_writer.h"
 #include "flatten_fields.h"
 #include "flatten_report_json.h"
+#include "io/pattern_files.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
 #include "options.h"
@@ -202,16 +201,7 @@ void flatten(const qd::cli::FlattenOptions& o) {
                                                 !mesh.patch.empty(), mesh.notes};
     files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
   }
-  if (!o.settings.svg_file.empty()) {
-    std::ostringstream svg;
-    qd::write_svg(svg, result.pattern, qd::params::svg_unit(o.settings));
-    files.emplace_back(o.settings.svg_file, svg.str());
-  }
-  if (!o.settings.dxf_file.empty()) {
-    std::ostringstream dxf;
-    qd::write_dxf(dxf, result.pattern);
-    files.emplace_back(o.settings.dxf_file, dxf.str());
-  }
+  for (auto& file : qd::pattern_files(o.settings, result.pattern)) files.push_back(std::move(file));
   std::vector<std::string> log = result.log;
   if (!o.settings.pdf_file.empty()) {
     auto pdf = qd::pdf::printable_pdf(result.pattern, o.settings.paper, o.settings.unit);

@@ -1,19 +1,17 @@
 #include "flatten_adapter.h"
 
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 
 #include "atomic_file.h"
 #include "declared_parameters.h"
 #include "engine_mesh.h"
-#include "flatten/dxf_writer.h"
 #include "flatten/flatten.h"
 #include "flatten/stretch_ramp.h"
-#include "flatten/svg_writer.h"
 #include "flatten_figures.h"
 #include "flatten_params.h"
+#include "io/pattern_files.h"
 #include "jobs.h"
 
 namespace qdml {
@@ -50,16 +48,8 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::FlattenResult& r) {
 std::vector<std::unique_ptr<qd::meshio::PendingFile>> stage_pattern(
     const qd::FlattenResult& r, const qd::params::FlattenSettings& s) {
   std::vector<std::unique_ptr<qd::meshio::PendingFile>> files;
-  if (!s.svg_file.empty()) {
-    std::ostringstream svg;
-    qd::write_svg(svg, r.pattern, qd::params::svg_unit(s));
-    files.push_back(std::make_unique<qd::meshio::PendingFile>(s.svg_file, svg.str()));
-  }
-  if (!s.dxf_file.empty()) {
-    std::ostringstream dxf;
-    qd::write_dxf(dxf, r.pattern);
-    files.push_back(std::make_unique<qd::meshio::PendingFile>(s.dxf_file, dxf.str()));
-  }
+  for (const auto& [path, bytes] : qd::pattern_files(s, r.pattern))
+    files.push_back(std::make_unique<qd::meshio::PendingFile>(path, bytes));
   return files;
 }
 

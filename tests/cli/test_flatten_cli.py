@@ -209,8 +209,9 @@ def test_svg_pattern_is_xml_with_every_piece_notches_and_a_scale_bar(tmp_path):
     groups = {g.get("id"): g for g in root.iter(f"{ns}g") if g.get("id")}
     for p in report["pieces"]:
         g = groups[f"piece-{p['label']}"]
-        assert g.find(f"{ns}text").text == p["label"]
-        assert g.find(f"{ns}path").get("d").count("Z") == 1  # one outline: each piece is a disk
+        assert f"Piece {p['label']}" in [t.text for t in g.findall(f"{ns}text")]
+        assert g.find(f"{ns}path[@class='cut']").get("d").count("Z") == 1  # each piece is a disk
+        assert g.find(f"{ns}path[@class='grain']") is not None
         assert g.find(f"{ns}path[@class='notches']") is not None, "seams between patches get notches"
     assert re.fullmatch(r"[0-9.]+ cm", groups["scale-bar"].find(f"{ns}text").text)
     # The viewBox spans the sheet (1 SVG unit = 1 model unit) plus margins.

@@ -75,10 +75,25 @@ TEST(ReportJson, KeepsTheKeyOrderAndWritesValidUtf8) {
   const Json j = report(sample_result(), {"property 'q\xc3' ignored"});
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
-  const std::vector<std::string> expected = {
-      "input", "output", "vertices", "faces", "has_patch_ids", "segmented_first", "constrained_vertices",
-      "average_edge", "parameters", "total_before", "total_after", "abd_reduction",
-      "factorizations", "time_ms", "stage_ms", "patches", "warnings", "notes", "log"};
+  const std::vector<std::string> expected = {"input",
+                                             "output",
+                                             "vertices",
+                                             "faces",
+                                             "has_patch_ids",
+                                             "segmented_first",
+                                             "constrained_vertices",
+                                             "average_edge",
+                                             "parameters",
+                                             "total_before",
+                                             "total_after",
+                                             "abd_reduction",
+                                             "factorizations",
+                                             "time_ms",
+                                             "stage_ms",
+                                             "patches",
+                                             "warnings",
+                                             "notes",
+                                             "log"};
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(j["input"], "in\xef\xbf\xbd.ply");  // U+FFFD for the stray byte
   EXPECT_EQ(j["notes"][0], "property 'q\xef\xbf\xbd' ignored");
@@ -98,6 +113,13 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   r.pieces.push_back(p);
   r.max_distortion = p.max_distortion;
   r.pattern.bounds = p.box;
+  qd::PatternPiece square;  // a 2×2 square sewn, cut with an allowance of 0.5
+  square.label = "3.1";
+  square.quantity = 2;
+  square.mirrored = 1;
+  square.outlines = {{{0, 1}, {2, 1}, {2, 3}, {0, 3}}};
+  square.cut_outlines = {{{-0.5, 0.5}, {2.5, 0.5}, {2.5, 3.5}, {-0.5, 3.5}}};
+  r.pattern.pieces.push_back(square);
   r.log = {"patch 3.1: ...", "flattened 1 pieces"};
   qd::cli::FlattenOptions o;
   o.input = "in.ply";
@@ -110,7 +132,7 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   for (const auto& item : j.items()) keys.push_back(item.key());
   EXPECT_EQ(keys,
             (std::vector<std::string>{"input", "output", "vertices", "faces", "has_patch_ids",
-                                      "parameters", "pieces", "max_distortion",
+                                      "parameters", "pieces", "pattern", "max_distortion",
                                       "flattenable_pieces", "sheet", "time_ms", "notes", "log"}));
   const Json& piece = j["pieces"][0];
   EXPECT_EQ(piece["label"], "3.1");
@@ -120,6 +142,16 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   EXPECT_FALSE(piece["flattenable"].get<bool>());
   EXPECT_EQ(piece["overlapping"].get<int>(), 2);
   EXPECT_EQ(piece["box"]["max"][1].get<double>(), 3.0);
+  const Json& cut = j["pattern"][0];
+  EXPECT_EQ(cut["label"], "3.1");
+  EXPECT_EQ(cut["name"], "");
+  EXPECT_EQ(cut["quantity"].get<int>(), 2);
+  EXPECT_EQ(cut["mirrored"].get<int>(), 1);
+  EXPECT_NEAR(cut["sew_area"].get<double>(), 4, 1e-12);
+  EXPECT_NEAR(cut["sew_perimeter"].get<double>(), 8, 1e-12);
+  EXPECT_NEAR(cut["cut_area"].get<double>(), 9, 1e-12);
+  EXPECT_NEAR(cut["cut_perimeter"].get<double>(), 12, 1e-12);
+  EXPECT_EQ(cut["grain"], Json::array({0.0, 1.0}));
   EXPECT_EQ(j["parameters"]["unit"], "cm");
   EXPECT_EQ(j["parameters"]["gap"].get<double>(), 0.5);
   EXPECT_EQ(j["sheet"]["min"][1].get<double>(), 1.0);

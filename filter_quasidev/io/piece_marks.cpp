@@ -1,0 +1,87 @@
+#include "io/piece_marks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <locale>
+#include <sstream>
+#include <utility>
+
+namespace qd {
+
+namespace {
+
+constexpr double kGrainShare = 0.6;  // of the piece's extent along the grain
+constexpr double kInside = 0.9;      // of the way from the centroid to the sew line
+
+// x rounded to hundredths, as text.
+std::string measure_text(double x) {
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out.precision(12);
+  out << std::round(x * 100) / 100;
+  return out.str();
+}
+
+// How far from `at` along ±d the line first crosses the loops: {before (≤ 0), after (≥ 0)},
+// infinite where it does not.
+std::pair<double, double> crossings(const std::vector<Outline>& loops, const Eigen::Vector2d& at,
+                                    const Eigen::Vector2d& d) {
+  double before = -std::numeric_limits<double>::infinity();
+  double after = std::numeric_limits<double>::infinity();
+  for (const Outline& loop : loops)
+    for (std::size_t i = 0, n = loop.size(); i < n; ++i) {
+      const Eigen::Vector2d a = loop[i] - at, e = loop[(i + 1) % n] - loop[i];
+      const double det = e.x() * d.y() - e.y() * d.x();  // solve t d = a + s e
+      if (det == 0) continue;
+      const double s = (a.y() * d.x() - a.x() * d.y()) / det;
+      if (s < 0 || s > 1) continue;
+      const double t = (a + s * e).dot(d);
+      if (t >= 0) after = std::min(after, t);
+      if (t <= 0) before = std::max(before, t);
+    }
+  return {before, after};
+}
+
+}  // namespace
+
+Eigen::AlignedBox2d cut_box(const PatternPiece& piece) {
+  Eigen::AlignedBox2d box;
+  for (const Outline& loop : piece.cut_outlines)
+    for (const Eigen::Vector2d& p : loop) box.extend(p);
+  return box;
+}
+
+Segment2 grainline(const PatternPiece& piece) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+  for (const Outline& loop : piece.cut_outlines)
+    for (const Eigen::Vector2d& p : loop) {
+      low = std::min(low, p.dot(piece.grain));
+      high = std::max(high, p.dot(piece.grain));
+    }
+  const double half = high > low ? kGrainShare * (high - low) / 2 : 0;
+  const auto [before, after] = crossings(piece.outlines, piece.label_at, piece.grain);
+  return {piece.label_at + std::max(-half, kInside * before) * piece.grain,
+          piece.label_at + std::min(half, kInside * after) * piece.grain};
+}
+
+Segment2 notch_tick(const Notch& notch, double beyond) {
+  return {notch.cut_at, notch.at + beyond * notch.inward};
+}
+
+std::vector<std::string> label_lines(const PatternPiece& piece, const std::string& unit,
+                                     const std::string& times) {
+  std::vector<std::string> lines;
+  if (!piece.name.empty()) lines.push_back(piece.name);
+  lines.push_back("Piece " + piece.label);
+  std::string cut = "Cut " + std::to_string(piece.quantity);
+  if (piece.mirrored > 0) cut += " (" + std::to_string(piece.mirrored) + " mirrored)";
+  lines.push_back(cut);
+  const Eigen::AlignedBox2d box = cut_box(piece);
+  if (!box.isEmpty())
+    lines.push_back(measure_text(box.sizes().x()) + " " + times + " " +
+                    measure_text(box.sizes().y()) + " " + (unit.empty() ? "model units" : unit));
+  return lines;
+}
+
+}  // namespace qd

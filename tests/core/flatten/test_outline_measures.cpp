@@ -1,0 +1,25 @@
+// Area and length of outlines: a square with a square hole, against their sums by hand.
+#include <gtest/gtest.h>
+
+#include "flatten/outline_measures.h"
+
+namespace {
+
+const qd::Outline kSquare = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};  // area 16, length 16
+const qd::Outline kHole = {{1, 1}, {1, 2}, {2, 2}, {2, 1}};    // clockwise, area 1, length 4
+
+TEST(OutlineMeasures, SignedAreaFollowsTheTurn) {
+  EXPECT_NEAR(qd::loop_area(kSquare), 16, 1e-12);
+  EXPECT_NEAR(qd::loop_area(kHole), -1, 1e-12);
+}
+
+TEST(OutlineMeasures, OuterLoopLessHolesAndEveryLoopsLength) {
+  const std::vector<qd::Outline> piece = {kHole, kSquare};  // the outer loop need not come first
+  EXPECT_EQ(qd::outer_loop(piece), 1u);
+  EXPECT_NEAR(qd::outline_area(piece), 15, 1e-12);
+  EXPECT_NEAR(qd::outline_length(piece), 20, 1e-12);
+  EXPECT_EQ(qd::outline_area({}), 0);
+  EXPECT_EQ(qd::outline_length({}), 0);
+}
+
+}  // namespace
