@@ -83,7 +83,8 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
     grain.push_back(grain_direction(p.piece.V, p.piece.F, p.uv, params.grain_up));
     uvs.push_back(std::move(p.uv));
   }
-  const std::vector<Eigen::AlignedBox2d> boxes = lay_out(uvs, grain, params.gap);
+  const std::vector<Eigen::AlignedBox2d> boxes =
+      lay_out(uvs, grain, params.gap, kAllowanceReach * params.seam_allowance);
 
   const std::vector<char> notch = notches_of(problem.V, flat, boxes, params.notch_spacing);
 

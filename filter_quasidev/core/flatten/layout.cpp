@@ -51,14 +51,16 @@ std::vector<Eigen::Vector2d> shelf_pack(const std::vector<Eigen::AlignedBox2d>& 
 }
 
 std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces,
-                                         const std::vector<Eigen::Vector2d>& grain, double gap) {
+                                         const std::vector<Eigen::Vector2d>& grain, double gap,
+                                         double margin) {
   std::vector<Eigen::AlignedBox2d> boxes;
   double longest = 0;
   for (size_t i = 0; i < pieces.size(); ++i) {
     Eigen::MatrixX2d& uv = pieces[i];
     uv = uv * grain_rotation(grain[i]).transpose();
-    boxes.push_back(box_of(uv));
-    longest = std::max(longest, boxes.back().sizes().maxCoeff());
+    const Eigen::AlignedBox2d box = box_of(uv);
+    boxes.emplace_back(box.min().array() - margin, box.max().array() + margin);
+    longest = std::max(longest, box.sizes().maxCoeff());
   }
   const std::vector<Eigen::Vector2d> corner = shelf_pack(boxes, gap > 0 ? gap : kAutoGap * longest);
   for (size_t i = 0; i < pieces.size(); ++i) {

@@ -19,9 +19,11 @@ Eigen::Matrix2d grain_rotation(const Eigen::Vector2d& grain);
 std::vector<Eigen::Vector2d> shelf_pack(const std::vector<Eigen::AlignedBox2d>& boxes, double gap);
 
 // Turns and packs every piece in place (one matrix of flat positions per piece, grain its unit
-// grain direction) and returns each piece's box on the sheet. gap ≤ 0: 5 % of the largest
-// piece's longer side.
+// grain direction) and returns each piece's box on the sheet. The boxes grown by `margin` (how
+// far the cut lines reach outside, seam_allowance.h) keep `gap` apart; gap ≤ 0: 5 % of the
+// largest piece's longer side.
 std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces,
-                                         const std::vector<Eigen::Vector2d>& grain, double gap);
+                                         const std::vector<Eigen::Vector2d>& grain, double gap,
+                                         double margin);
 
 }  // namespace qd

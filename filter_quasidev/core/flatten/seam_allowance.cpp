@@ -9,7 +9,6 @@ namespace qd {
 
 namespace {
 
-constexpr double kMiterLimit = 2;  // of the allowance: farther corner spikes are squared off
 // Clipper works on integers. The piece is centred and scaled so that its extent (allowance
 // and miter spikes included) spans ±2^30, Clipper's range for plain 64-bit arithmetic: the
 // rounding is then a billionth of the piece's size whatever the model's unit (mm or metres).
@@ -45,7 +44,7 @@ std::vector<Outline> cut_lines(const std::vector<Outline>& sew_lines, double all
     for (const Eigen::Vector2d& p : loop) box.extend(p);
   if (box.isEmpty()) return sew_lines;
   const Eigen::Vector2d centre = box.center();
-  const double scale = kIntegerRange / (box.sizes().maxCoeff() / 2 + kMiterLimit * allowance);
+  const double scale = kIntegerRange / (box.sizes().maxCoeff() / 2 + kAllowanceReach * allowance);
 
   ClipperLib::Paths paths;
   for (const Outline& loop : sew_lines) {
@@ -59,7 +58,7 @@ std::vector<Outline> cut_lines(const std::vector<Outline>& sew_lines, double all
   // Non-zero filling: holes run opposite to their outer loop whichever way the piece turns,
   // and a boundary that overlaps itself is cut as one region.
   ClipperLib::SimplifyPolygons(paths, ClipperLib::pftNonZero);
-  ClipperLib::ClipperOffset offset(kMiterLimit);
+  ClipperLib::ClipperOffset offset(kAllowanceReach);  // the miter limit: farther spikes squared off
   offset.AddPaths(paths, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
   ClipperLib::PolyTree tree;
   offset.Execute(tree, allowance * scale);

@@ -10,6 +10,8 @@
 
 namespace qd {
 
+constexpr double kAllowanceReach = 2;  // the cut line lies at most this many allowances outside
+
 // The cut lines of the region the sew lines bound (an outer loop, and any holes, in either
 // orientation as long as holes run opposite to their outer loop): outer loops counter-clockwise,
 // holes clockwise (faces to the left, as pattern_piece gives them). allowance 0 returns the

@@ -71,7 +71,15 @@ TEST(Layout, LaysEachPieceWithItsGrainUp) {
   std::vector<Eigen::MatrixX2d> pieces = {thin, thin};
   const std::vector<Eigen::Vector2d> grain = {Eigen::Vector2d(1, 1).normalized(),
                                               Eigen::Vector2d(1, -1).normalized()};
-  const std::vector<Eigen::AlignedBox2d> boxes = qd::lay_out(pieces, grain, 0);
+  const double gap = 0.2, margin = 0.3;
+  const std::vector<Eigen::AlignedBox2d> boxes = qd::lay_out(pieces, grain, gap, margin);
+  // Grown by the margin, the boxes keep the gap apart.
+  Eigen::AlignedBox2d grown[2];
+  for (int k = 0; k < 2; ++k)
+    grown[k] = {boxes[k].min().array() - margin, boxes[k].max().array() + margin};
+  const Eigen::Vector2d apart =
+      grown[0].min().cwiseMax(grown[1].min()) - grown[0].max().cwiseMin(grown[1].max());
+  EXPECT_GE(apart.maxCoeff(), gap - 1e-12);
   const Eigen::Vector2d along = boxes[0].sizes(), across = boxes[1].sizes();
   EXPECT_GT(along.y(), 3 * along.x());    // its length along the grain now runs along y
   EXPECT_GT(across.x(), 3 * across.y());  // grain across it: its length runs along x
