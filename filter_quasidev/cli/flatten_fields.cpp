@@ -10,12 +10,14 @@ namespace qd::cli {
 FlattenProblem make_flatten_problem(const meshio::MeshFile& mesh, const FlattenOptions& o) {
   FlattenProblem problem;
   set_geometry(mesh, problem);
+  problem.patch_names = mesh.patch_names;
   problem.params = o.settings.engine;
   return problem;
 }
 
 meshio::OutputFields flatten_output_fields(const FlattenResult& result, std::size_t face_count) {
-  if (static_cast<std::size_t>(result.uv.rows()) != face_count || result.stretch.size() != face_count)
+  if (static_cast<std::size_t>(result.uv.rows()) != face_count ||
+      result.stretch.size() != face_count)
     throw Error("internal error: the flattening returned " + std::to_string(result.uv.rows()) +
                 " texture coordinate rows and " + std::to_string(result.stretch.size()) +
                 " stretch values for " + std::to_string(face_count) + " faces");

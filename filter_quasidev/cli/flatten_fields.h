@@ -1,6 +1,6 @@
 // The bridge between the command's mesh tables and the flattening engine.
 // make_flatten_problem: MeshFile + FlattenOptions -> qd::FlattenProblem (positions, triangles,
-//   patch ids, parameters as given: the flattening's lengths are in model units).
+//   patch ids, panel names, parameters as given: the flattening's lengths are in model units).
 // flatten_output_fields: qd::FlattenResult -> the fields `quasidev flatten` writes: per face
 //   the wedge texture coordinates (model units), quality = signed stretch and its colour ramp
 //   (flatten/stretch_ramp.h); the vertices keep their positions. Throws qd::Error when the

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,7 @@ struct PlyProperty {
   bool is_list = false;
   ScalarType count_type = ScalarType::UInt8;  // lists only
   std::vector<double> values;
-  std::vector<std::size_t> offsets;           // lists only, size count + 1
+  std::vector<std::size_t> offsets;  // lists only, size count + 1
 
   std::size_t list_size(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
 };
@@ -50,8 +51,9 @@ struct MeshFile {
   std::array<ScalarType, 3> position_types = {ScalarType::Float64, ScalarType::Float64,
                                               ScalarType::Float64};  // of x, y, z in the file
   std::vector<std::array<int, 3>> triangles;
-  std::vector<int> patch;           // per triangle; empty = the file has no patch ids
-  std::vector<char> constrained;    // per vertex; empty = the file selects no vertex
+  std::vector<int> patch;                  // per triangle; empty = the file has no patch ids
+  std::map<int, std::string> patch_names;  // panel names by patch id (OBJ groups, PLY comments)
+  std::vector<char> constrained;           // per vertex; empty = the file selects no vertex
   // Vertex properties other than x, y, z (one value per vertex, or lists).
   std::vector<PlyProperty> vertex_extra;
   // Face properties other than the index list (one entry per output triangle: a polygon's

@@ -26,8 +26,8 @@ namespace {
 // Everything gathered while scanning, before triangulation.
 struct ObjScan {
   std::vector<std::array<double, 2>> uv;
-  PlyProperty corners;      // vertex index lists, one per face
-  PlyProperty corner_uv;    // u v per corner, one list per face
+  PlyProperty corners;    // vertex index lists, one per face
+  PlyProperty corner_uv;  // u v per corner, one list per face
   bool all_faces_have_uv = true;
   std::vector<int> face_group;
   std::map<std::string, int> group_ids;
@@ -64,8 +64,8 @@ void parse_face(const std::vector<std::string_view>& w, int line, std::size_t ve
   for (std::size_t k = 1; k < w.size(); ++k) {
     const std::string_view corner = w[k];
     const std::size_t slash = corner.find('/');
-    scan.corners.values.push_back(static_cast<double>(
-        resolve_index(corner.substr(0, slash), vertex_count, line, "vertex")));
+    scan.corners.values.push_back(
+        static_cast<double>(resolve_index(corner.substr(0, slash), vertex_count, line, "vertex")));
     const std::string_view rest =
         slash == std::string_view::npos ? std::string_view() : corner.substr(slash + 1);
     const std::string_view vt = rest.substr(0, rest.find('/'));
@@ -91,16 +91,11 @@ void parse_group(std::string_view line, ObjScan& scan) {
   scan.current_group = it->second;
 }
 
-// Numbers groups by first appearance on a face (the unnamed group included).
-std::vector<int> patch_ids_by_first_face(const std::vector<int>& face_group) {
+// Patch id per group (-1 the unnamed one), numbered by first appearance on a face.
+std::map<int, int> patch_id_of_group(const std::vector<int>& face_group) {
   std::map<int, int> id_of;
-  std::vector<int> ids;
-  ids.reserve(face_group.size());
-  for (int g : face_group) {
-    const auto [it, added] = id_of.emplace(g, static_cast<int>(id_of.size()));
-    ids.push_back(it->second);
-  }
-  return ids;
+  for (int g : face_group) id_of.emplace(g, static_cast<int>(id_of.size()));
+  return id_of;
 }
 
 }  // namespace
@@ -139,14 +134,19 @@ MeshFile parse_obj(std::string_view bytes) {
   }
   const std::size_t faces = scan.face_group.size();
   std::vector<PlyProperty> columns;
-  if (scan.all_faces_have_uv) columns.push_back(std::move(scan.corner_uv));
+  if (scan.all_faces_have_uv)
+    columns.push_back(std::move(scan.corner_uv));
   else if (!scan.uv.empty())
     mesh.notes.push_back("texture coordinates dropped: not every face has them");
   const std::vector<std::size_t> source =
       add_faces(scan.corners, faces, mesh.positions.size(), columns, mesh);
   if (!scan.group_ids.empty()) {
-    const std::vector<int> ids = patch_ids_by_first_face(scan.face_group);
-    for (std::size_t s : source) mesh.patch.push_back(ids[s]);
+    const std::map<int, int> id_of = patch_id_of_group(scan.face_group);
+    for (std::size_t s : source) mesh.patch.push_back(id_of.at(scan.face_group[s]));
+    for (const auto& [name, group] : scan.group_ids) {
+      const auto id = id_of.find(group);
+      if (id != id_of.end() && !name.empty()) mesh.patch_names[id->second] = name;
+    }
   }
   if (scan.ignored > 0)
     mesh.notes.push_back(std::to_string(scan.ignored) + " OBJ line/point statement(s) ignored");

@@ -1,9 +1,12 @@
 #include "ply_mesh.h"
 
+#include <climits>
 #include <cmath>
+#include <map>
 #include <string>
 
 #include "common/error.h"
+#include "text_scan.h"
 #include "triangulate.h"
 
 namespace qd::meshio {
@@ -32,8 +35,8 @@ void read_vertices(PlyElement& vertex, MeshFile& mesh) {
     mesh.positions[i] = {x.values[i], y.values[i], z.values[i]};
     for (double c : mesh.positions[i])
       if (!std::isfinite(c))
-        fail("vertex " + std::to_string(i) + " has a non-finite coordinate (" +
-             std::to_string(c) + "); fix or remove it");
+        fail("vertex " + std::to_string(i) + " has a non-finite coordinate (" + std::to_string(c) +
+             "); fix or remove it");
   }
   const int flags = vertex.find("flags");
   if (flags >= 0 && !vertex.properties[static_cast<std::size_t>(flags)].is_list) {
@@ -85,17 +88,36 @@ void read_faces(PlyElement& face, MeshFile& mesh) {
   }
 }
 
+// Panel names from the comments "patch <id> <name…>"; other comments name nothing.
+std::map<int, std::string> patch_names(const std::vector<std::string>& comments) {
+  std::map<int, std::string> names;
+  for (const std::string& comment : comments) {
+    const std::vector<std::string_view> w = split_words(comment);
+    long long id = 0;
+    if (w.size() < 3 || w[0] != "patch" || !parse_integer(w[1], id) || id < INT_MIN || id > INT_MAX)
+      continue;
+    const std::size_t from = static_cast<std::size_t>(w[2].data() - comment.data());
+    const std::size_t to =
+        static_cast<std::size_t>(w.back().data() + w.back().size() - comment.data());
+    names[static_cast<int>(id)] = comment.substr(from, to - from);
+  }
+  return names;
+}
+
 }  // namespace
 
 MeshFile mesh_from_ply(PlyFile ply) {
   MeshFile mesh;
+  mesh.patch_names = patch_names(ply.comments);
   mesh.comments = std::move(ply.comments);
   mesh.obj_info = std::move(ply.obj_info);
   PlyElement* vertex = nullptr;
   PlyElement* face = nullptr;
   for (PlyElement& e : ply.elements) {
-    if (e.name == "vertex") vertex = &e;
-    else if (e.name == "face") face = &e;
+    if (e.name == "vertex")
+      vertex = &e;
+    else if (e.name == "face")
+      face = &e;
   }
   if (!vertex) fail("the file has no 'vertex' element");
   if (!face) fail("the file has no 'face' element (quasidev needs a triangle mesh)");

@@ -7,13 +7,15 @@
 #include <sstream>
 #include <thread>
 
+#include "common/parallel_for.h"
+#include "common/serial_libraries.h"
 #include "flatten/flatten_piece.h"
 #include "flatten/flatten_validate.h"
+#include "flatten/grainline.h"
 #include "flatten/layout.h"
 #include "flatten/notches.h"
 #include "flatten/piece_report.h"
-#include "common/parallel_for.h"
-#include "common/serial_libraries.h"
+#include "flatten/seam_allowance.h"
 
 namespace qd {
 
@@ -33,14 +35,17 @@ std::vector<char> notches_of(const Positions& V, const std::vector<FlatPiece>& f
   for (size_t i = 0; i < flat.size(); ++i) {
     const std::vector<int>& vertex = flat[i].piece.vertex;
     for (const std::vector<int>& loop : flat[i].loops)
-      for (size_t k = 0; k < loop.size(); ++k) boundary_edges.push_back({vertex[loop[k]], vertex[loop[(k + 1) % loop.size()]]});
+      for (size_t k = 0; k < loop.size(); ++k)
+        boundary_edges.push_back({vertex[loop[k]], vertex[loop[(k + 1) % loop.size()]]});
     longest = std::max(longest, boxes[i].sizes().maxCoeff());
   }
-  return notch_vertices(V, std::move(boundary_edges), spacing > 0 ? spacing : kAutoNotchSpacing * longest);
+  return notch_vertices(V, std::move(boundary_edges),
+                        spacing > 0 ? spacing : kAutoNotchSpacing * longest);
 }
 
 size_t thread_count(int requested) {
-  return requested > 0 ? static_cast<size_t>(requested) : std::max(1u, std::thread::hardware_concurrency());
+  return requested > 0 ? static_cast<size_t>(requested)
+                       : std::max(1u, std::thread::hardware_concurrency());
 }
 
 }  // namespace
@@ -56,7 +61,8 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
   std::atomic<size_t> done{0};
   const double total = static_cast<double>(pieces.size());
   {
-    const SerialLibraries serial_libraries;  // library threads would contend with the pieces' (serial_libraries.h)
+    const SerialLibraries
+        serial_libraries;  // library threads would contend with the pieces' (serial_libraries.h)
     parallel_for(pieces.size(), thread_count(params.threads), [&](size_t i) {
       const std::string what = "flattening patch " + label_of(pieces[i]);
       const auto report = [&](double fraction) {  // only the caller's thread reports
@@ -64,15 +70,21 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
           progress(static_cast<int>(100.0 * (static_cast<double>(done) + fraction) / total), what);
       };
       report(0);
-      flat[i] = flatten_piece(std::move(pieces[i]), params,
-                              [&](int k) { report(static_cast<double>(k) / std::max(1, params.max_iterations)); });
+      flat[i] = flatten_piece(std::move(pieces[i]), params, [&](int k) {
+        report(static_cast<double>(k) / std::max(1, params.max_iterations));
+      });
       ++done;
     });
   }
 
   std::vector<Eigen::MatrixX2d> uvs;
-  for (FlatPiece& p : flat) uvs.push_back(std::move(p.uv));
-  const std::vector<Eigen::AlignedBox2d> boxes = lay_out(uvs, params.gap);
+  std::vector<Eigen::Vector2d> grain;  // on each piece as flattened, before it is turned
+  for (FlatPiece& p : flat) {
+    grain.push_back(grain_direction(p.piece.V, p.piece.F, p.uv, params.grain_up));
+    uvs.push_back(std::move(p.uv));
+  }
+  const std::vector<Eigen::AlignedBox2d> boxes =
+      lay_out(uvs, grain, params.gap, kAllowanceReach * params.seam_allowance);
 
   const std::vector<char> notch = notches_of(problem.V, flat, boxes, params.notch_spacing);
 
@@ -92,6 +104,10 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
     for (size_t v = 0; v < notched.size(); ++v) notched[v] = notch[p.vertex[v]];
     const std::string label = label_of(p);
     pattern.push_back(pattern_piece(p.patch, label, p.F, uvs[i], flat[i].loops, notched));
+    const auto name = problem.patch_names.find(p.patch);
+    if (name != problem.patch_names.end()) pattern.back().name = name->second;
+    pattern.back().grain = grain_rotation(grain[i]) * grain[i];
+    add_seam_allowance(pattern.back(), params.seam_allowance);
     r.pieces.push_back(piece_report(flat[i], label, boxes[i]));
     r.log.push_back(log_line(r.pieces.back()));
     if (r.pieces.back().max_distortion >= r.max_distortion) {
@@ -101,10 +117,12 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
     r.flattenable_pieces += r.pieces.back().flattenable ? 1 : 0;
   }
   r.pattern = make_pattern(std::move(pattern));
-  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::ostringstream total_line;
-  total_line << std::fixed << std::setprecision(2) << "flattened " << r.pieces.size() << " pieces in " << r.time_ms / 1000
-             << " s; largest length distortion " << r.max_distortion << " % (patch " << worst_label << ")";
+  total_line << std::fixed << std::setprecision(2) << "flattened " << r.pieces.size()
+             << " pieces in " << r.time_ms / 1000 << " s; largest length distortion "
+             << r.max_distortion << " % (patch " << worst_label << ")";
   r.log.push_back(total_line.str());
   if (progress) progress(100, "done");
   return r;

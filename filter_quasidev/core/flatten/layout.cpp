@@ -1,6 +1,5 @@
 #include "flatten/layout.h"
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -9,21 +8,19 @@ namespace qd {
 
 namespace {
 
-constexpr double kAutoGap = 0.05;       // of the largest piece's longer side
-constexpr double kShelfWidth = 1.5;     // of √(total box area)
+constexpr double kAutoGap = 0.05;    // of the largest piece's longer side
+constexpr double kShelfWidth = 1.5;  // of √(total box area)
 
 Eigen::AlignedBox2d box_of(const Eigen::MatrixX2d& points) {
-  return Eigen::AlignedBox2d(points.colwise().minCoeff().transpose(), points.colwise().maxCoeff().transpose());
+  return Eigen::AlignedBox2d(points.colwise().minCoeff().transpose(),
+                             points.colwise().maxCoeff().transpose());
 }
 
 }  // namespace
 
-Eigen::Matrix2d principal_rotation(const Eigen::MatrixX2d& points) {
-  const Eigen::MatrixX2d centred = points.rowwise() - points.colwise().mean();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(centred.transpose() * centred);
-  const Eigen::Vector2d major = eigen.eigenvectors().col(1);  // eigenvalues ascend
+Eigen::Matrix2d grain_rotation(const Eigen::Vector2d& grain) {
   Eigen::Matrix2d R;
-  R << major.x(), major.y(), -major.y(), major.x();
+  R << grain.y(), -grain.x(), grain.x(), grain.y();
   return R;
 }
 
@@ -53,13 +50,17 @@ std::vector<Eigen::Vector2d> shelf_pack(const std::vector<Eigen::AlignedBox2d>& 
   return corner;
 }
 
-std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces, double gap) {
+std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces,
+                                         const std::vector<Eigen::Vector2d>& grain, double gap,
+                                         double margin) {
   std::vector<Eigen::AlignedBox2d> boxes;
   double longest = 0;
-  for (Eigen::MatrixX2d& uv : pieces) {
-    uv = uv * principal_rotation(uv).transpose();
-    boxes.push_back(box_of(uv));
-    longest = std::max(longest, boxes.back().sizes().maxCoeff());
+  for (size_t i = 0; i < pieces.size(); ++i) {
+    Eigen::MatrixX2d& uv = pieces[i];
+    uv = uv * grain_rotation(grain[i]).transpose();
+    const Eigen::AlignedBox2d box = box_of(uv);
+    boxes.emplace_back(box.min().array() - margin, box.max().array() + margin);
+    longest = std::max(longest, box.sizes().maxCoeff());
   }
   const std::vector<Eigen::Vector2d> corner = shelf_pack(boxes, gap > 0 ? gap : kAutoGap * longest);
   for (size_t i = 0; i < pieces.size(); ++i) {

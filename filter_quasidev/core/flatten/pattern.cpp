@@ -25,8 +25,9 @@ Eigen::Vector2d area_centroid(const Triangles& F, const Eigen::MatrixX2d& uv) {
 
 }  // namespace
 
-PatternPiece pattern_piece(int patch, const std::string& label, const Triangles& F, const Eigen::MatrixX2d& uv,
-                           const std::vector<std::vector<int>>& loops, const std::vector<char>& notch) {
+PatternPiece pattern_piece(int patch, const std::string& label, const Triangles& F,
+                           const Eigen::MatrixX2d& uv, const std::vector<std::vector<int>>& loops,
+                           const std::vector<char>& notch) {
   PatternPiece p;
   p.patch = patch;
   p.label = label;
@@ -35,11 +36,13 @@ PatternPiece pattern_piece(int patch, const std::string& label, const Triangles&
     std::vector<Eigen::Vector2d> outline;
     const size_t m = loop.size();
     for (size_t i = 0; i < m; ++i) {
-      const Eigen::Vector2d prev = uv.row(loop[(i + m - 1) % m]), at = uv.row(loop[i]), next = uv.row(loop[(i + 1) % m]);
+      const Eigen::Vector2d prev = uv.row(loop[(i + m - 1) % m]), at = uv.row(loop[i]),
+                            next = uv.row(loop[(i + 1) % m]);
       outline.push_back(at);
       if (!notch[loop[i]]) continue;
       const Eigen::Vector2d sum = left_normal(prev, at) + left_normal(at, next);
-      p.notches.push_back({at, sum.norm() > 1e-12 ? Eigen::Vector2d(sum.normalized()) : left_normal(at, next), at});
+      p.notches.push_back(
+          {at, sum.norm() > 1e-12 ? Eigen::Vector2d(sum.normalized()) : left_normal(at, next), at});
     }
     p.outlines.push_back(std::move(outline));
   }

@@ -35,7 +35,7 @@ struct PatternPiece {
 
 struct Pattern {
   std::vector<PatternPiece> pieces;
-  Eigen::AlignedBox2d bounds;  // of every outline
+  Eigen::AlignedBox2d bounds;  // of every sew and cut line
 };
 
 // One piece: F its faces, uv its flat positions on the sheet, loops its boundary loops in face

@@ -55,25 +55,52 @@ TEST(BoundaryCrossings, FigureEightCrossesASquareDoesNot) {
   EXPECT_EQ(qd::crossing_segments(uv, bow), (std::vector<char>{0, 1, 0, 1}));
 }
 
-TEST(Layout, PrincipalAxisEndsUpAlongX) {
-  Eigen::MatrixX2d points(4, 2);
-  points << 0, 0, 3, 3, 0.5, -0.5, 3.5, 2.5;  // a long thin parallelogram along (1, 1)
-  const Eigen::MatrixX2d turned = points * qd::principal_rotation(points).transpose();
-  const Eigen::Vector2d size = turned.colwise().maxCoeff() - turned.colwise().minCoeff();
-  EXPECT_GT(size.x(), 3 * size.y());
-  EXPECT_NEAR(qd::principal_rotation(points).determinant(), 1.0, 1e-12);
+TEST(Layout, GrainEndsUpAlongY) {
+  for (const double angle : {0.0, 0.4, 2.0, -2.9}) {
+    const Eigen::Vector2d grain(std::cos(angle), std::sin(angle));
+    const Eigen::Matrix2d R = qd::grain_rotation(grain);
+    EXPECT_NEAR((R * grain - Eigen::Vector2d::UnitY()).norm(), 0.0, 1e-12) << angle;
+    EXPECT_NEAR(R.determinant(), 1.0, 1e-12) << angle;  // turned, not mirrored
+    EXPECT_NEAR((R.transpose() * R - Eigen::Matrix2d::Identity()).norm(), 0.0, 1e-12) << angle;
+  }
+}
+
+TEST(Layout, LaysEachPieceWithItsGrainUp) {
+  Eigen::MatrixX2d thin(4, 2);
+  thin << 0, 0, 3, 3, 0.5, -0.5, 3.5, 2.5;  // a long thin parallelogram along (1, 1)
+  std::vector<Eigen::MatrixX2d> pieces = {thin, thin};
+  const std::vector<Eigen::Vector2d> grain = {Eigen::Vector2d(1, 1).normalized(),
+                                              Eigen::Vector2d(1, -1).normalized()};
+  const double gap = 0.2, margin = 0.3;
+  const std::vector<Eigen::AlignedBox2d> boxes = qd::lay_out(pieces, grain, gap, margin);
+  // Grown by the margin, the boxes keep the gap apart.
+  Eigen::AlignedBox2d grown[2];
+  for (int k = 0; k < 2; ++k)
+    grown[k] = {boxes[k].min().array() - margin, boxes[k].max().array() + margin};
+  const Eigen::Vector2d apart =
+      grown[0].min().cwiseMax(grown[1].min()) - grown[0].max().cwiseMin(grown[1].max());
+  EXPECT_GE(apart.maxCoeff(), gap - 1e-12);
+  const Eigen::Vector2d along = boxes[0].sizes(), across = boxes[1].sizes();
+  EXPECT_GT(along.y(), 3 * along.x());    // its length along the grain now runs along y
+  EXPECT_GT(across.x(), 3 * across.y());  // grain across it: its length runs along x
+  // Rigid: the edge (0,0)→(3,3) keeps its length.
+  EXPECT_NEAR((pieces[0].row(1) - pieces[0].row(0)).norm(), std::sqrt(18.0), 1e-12);
+  EXPECT_NEAR(pieces[0](1, 0) - pieces[0](0, 0), 0.0, 1e-12);  // and runs along y
 }
 
 TEST(Layout, PackedBoxesDoNotOverlapAndKeepTheGap) {
   std::vector<Eigen::AlignedBox2d> boxes;
   for (int i = 0; i < 17; ++i)
-    boxes.emplace_back(Eigen::Vector2d(-i, 3), Eigen::Vector2d(-i + 1 + (i * 7) % 5, 4 + (i * 3) % 4));
+    boxes.emplace_back(Eigen::Vector2d(-i, 3),
+                       Eigen::Vector2d(-i + 1 + (i * 7) % 5, 4 + (i * 3) % 4));
   const double gap = 0.25;
   const std::vector<Eigen::Vector2d> corner = qd::shelf_pack(boxes, gap);
   for (size_t a = 0; a < boxes.size(); ++a)
     for (size_t b = a + 1; b < boxes.size(); ++b) {
-      const Eigen::AlignedBox2d A(corner[a], corner[a] + boxes[a].sizes() + Eigen::Vector2d::Constant(gap));
-      const Eigen::AlignedBox2d B(corner[b], corner[b] + boxes[b].sizes() + Eigen::Vector2d::Constant(gap));
+      const Eigen::AlignedBox2d A(corner[a],
+                                  corner[a] + boxes[a].sizes() + Eigen::Vector2d::Constant(gap));
+      const Eigen::AlignedBox2d B(corner[b],
+                                  corner[b] + boxes[b].sizes() + Eigen::Vector2d::Constant(gap));
       const Eigen::AlignedBox2d overlap = A.intersection(B);
       EXPECT_TRUE(overlap.isEmpty() || overlap.volume() < 1e-12) << a << " " << b;
     }
