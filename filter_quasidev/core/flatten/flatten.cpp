@@ -14,6 +14,7 @@
 #include "flatten/grainline.h"
 #include "flatten/layout.h"
 #include "flatten/notches.h"
+#include "flatten/pattern_sheet.h"
 #include "flatten/piece_report.h"
 #include "flatten/seam_allowance.h"
 
@@ -41,6 +42,18 @@ std::vector<char> notches_of(const Positions& V, const std::vector<FlatPiece>& f
   }
   return notch_vertices(V, std::move(boundary_edges),
                         spacing > 0 ? spacing : kAutoNotchSpacing * longest);
+}
+
+// "pieces 2, 4 (mirrored): one pattern piece, cut 2; they differ by 0.33 %"
+std::string group_line(const PieceGroup& g, const std::vector<PieceReport>& pieces) {
+  std::ostringstream line;
+  line << "pieces ";
+  for (size_t k = 0; k < g.members.size(); ++k)
+    line << (k ? ", " : "") << pieces[static_cast<size_t>(g.members[k])].label
+         << (g.mirrored[k] ? " (mirrored)" : "");
+  line << std::fixed << std::setprecision(2) << ": one pattern piece, cut " << g.members.size()
+       << "; they differ by " << g.difference << " % of its size";
+  return line.str();
 }
 
 size_t thread_count(int requested) {
@@ -116,7 +129,10 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
     }
     r.flattenable_pieces += r.pieces.back().flattenable ? 1 : 0;
   }
-  r.pattern = make_pattern(std::move(pattern));
+  r.groups = symmetric_groups(pattern, params.symmetry_tolerance);
+  for (const PieceGroup& g : r.groups)
+    if (g.members.size() > 1) r.log.push_back(group_line(g, r.pieces));
+  r.pattern = pattern_sheet(std::move(pattern), r.groups, sheet_gap(boxes, params.gap));
   r.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::ostringstream total_line;

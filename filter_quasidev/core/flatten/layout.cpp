@@ -50,21 +50,26 @@ std::vector<Eigen::Vector2d> shelf_pack(const std::vector<Eigen::AlignedBox2d>& 
   return corner;
 }
 
+double sheet_gap(const std::vector<Eigen::AlignedBox2d>& boxes, double gap) {
+  if (gap > 0) return gap;
+  double longest = 0;
+  for (const Eigen::AlignedBox2d& box : boxes) longest = std::max(longest, box.sizes().maxCoeff());
+  return kAutoGap * longest;
+}
+
 std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces,
                                          const std::vector<Eigen::Vector2d>& grain, double gap,
                                          double margin) {
-  std::vector<Eigen::AlignedBox2d> boxes;
-  double longest = 0;
+  std::vector<Eigen::AlignedBox2d> boxes, grown;
   for (size_t i = 0; i < pieces.size(); ++i) {
     Eigen::MatrixX2d& uv = pieces[i];
     uv = uv * grain_rotation(grain[i]).transpose();
-    const Eigen::AlignedBox2d box = box_of(uv);
-    boxes.emplace_back(box.min().array() - margin, box.max().array() + margin);
-    longest = std::max(longest, box.sizes().maxCoeff());
+    boxes.push_back(box_of(uv));
+    grown.emplace_back(boxes.back().min().array() - margin, boxes.back().max().array() + margin);
   }
-  const std::vector<Eigen::Vector2d> corner = shelf_pack(boxes, gap > 0 ? gap : kAutoGap * longest);
+  const std::vector<Eigen::Vector2d> corner = shelf_pack(grown, sheet_gap(boxes, gap));
   for (size_t i = 0; i < pieces.size(); ++i) {
-    pieces[i].rowwise() += (corner[i] - boxes[i].min()).transpose();
+    pieces[i].rowwise() += (corner[i] - grown[i].min()).transpose();
     boxes[i] = box_of(pieces[i]);
   }
   return boxes;

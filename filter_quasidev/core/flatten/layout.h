@@ -18,6 +18,9 @@ Eigen::Matrix2d grain_rotation(const Eigen::Vector2d& grain);
 // do not overlap. Depends on the boxes' sizes only, ties kept in input order.
 std::vector<Eigen::Vector2d> shelf_pack(const std::vector<Eigen::AlignedBox2d>& boxes, double gap);
 
+// The space between pieces on the sheet: gap when > 0, else 5 % of the largest box's longer side.
+double sheet_gap(const std::vector<Eigen::AlignedBox2d>& boxes, double gap);
+
 // Turns and packs every piece in place (one matrix of flat positions per piece, grain its unit
 // grain direction) and returns each piece's box on the sheet. The boxes grown by `margin` (how
 // far the cut lines reach outside, seam_allowance.h) keep `gap` apart; gap ≤ 0: 5 % of the
