@@ -27,8 +27,11 @@
 #include "flatten/svg_writer.h"
 #include "flatten_fields.h"
 #include "flatten_report_json.h"
+#include "marker_dxf.h"
+#include "marker_svg.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
+#include "nest_marker.h"
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
@@ -189,6 +192,31 @@ void segment(const qd::cli::SegmentOptions& o) {
   print_outcome(o, result.warnings, result.log, mesh.notes);
 }
 
+// The nested marker of the pattern on fabric of the asked width (gap: the flatten gap, else 1 %
+// of the width): its length, efficiency and unplaced pieces on the log, its files to write.
+void add_marker(const qd::params::FlattenSettings& s, const qd::Pattern& pattern,
+                std::vector<std::string>& log,
+                std::vector<std::pair<std::string, std::string>>& files) {
+  const double gap = s.engine.gap > 0 ? s.engine.gap : 0.01 * s.marker_width;
+  const qd::Marker marker = qd::nest_marker(pattern, s.marker_width, gap);
+  std::ostringstream line;
+  line << "marker: width " << s.marker_width << ", length " << marker.length << ", efficiency "
+       << 100 * marker.efficiency << " %, " << marker.placements.size() << " pieces, gap " << gap;
+  log.push_back(line.str());
+  for (const std::string& label : marker.unplaced)
+    log.push_back("marker: piece " + label + " is wider than the fabric, not placed");
+  if (!s.marker_svg_file.empty()) {
+    std::ostringstream svg;
+    qd::write_marker_svg(svg, marker, pattern);
+    files.emplace_back(s.marker_svg_file, svg.str());
+  }
+  if (!s.marker_dxf_file.empty()) {
+    std::ostringstream dxf;
+    qd::write_marker_dxf(dxf, marker, pattern);
+    files.emplace_back(s.marker_dxf_file, dxf.str());
+  }
+}
+
 void flatten(const qd::cli::FlattenOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
       o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_flatten_problem(m, o); },
@@ -211,8 +239,10 @@ void flatten(const qd::cli::FlattenOptions& o) {
     qd::write_dxf(dxf, result.pattern);
     files.emplace_back(o.settings.dxf_file, dxf.str());
   }
+  std::vector<std::string> log = result.log;
+  if (o.settings.marker_width > 0) add_marker(o.settings, result.pattern, log, files);
   write_files(files);
-  print_outcome(o, {}, result.log, mesh.notes);
+  print_outcome(o, {}, log, mesh.notes);
 }
 
 int fail(const std::string& reason, int status) {

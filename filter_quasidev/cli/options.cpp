@@ -67,6 +67,10 @@ std::vector<std::pair<std::string, std::string>> output_files(const FlattenOptio
   std::vector<std::pair<std::string, std::string>> files = output_files(static_cast<const JobOptions&>(o));
   if (!o.settings.svg_file.empty()) files.emplace_back("--svg-file", o.settings.svg_file);
   if (!o.settings.dxf_file.empty()) files.emplace_back("--dxf-file", o.settings.dxf_file);
+  if (!o.settings.marker_svg_file.empty())
+    files.emplace_back("--marker-svg", o.settings.marker_svg_file);
+  if (!o.settings.marker_dxf_file.empty())
+    files.emplace_back("--marker-dxf", o.settings.marker_dxf_file);
   return files;
 }
 
@@ -132,6 +136,10 @@ CommandLine parse_command_line(std::vector<std::string> args) {
   if (line.job == Job::Segment) check_files(line.segment, output_files(line.segment));
   else if (line.job == Job::Flatten) check_files(line.flatten, output_files(line.flatten));
   else check_files(line.approximate, output_files(line.approximate));
+  const qd::params::FlattenSettings& flat = line.flatten.settings;
+  if (line.job == Job::Flatten && flat.marker_width <= 0 &&
+      !(flat.marker_svg_file.empty() && flat.marker_dxf_file.empty()))
+    throw UsageError("--marker-svg and --marker-dxf need the fabric's width: pass --marker WIDTH");
   return line;
 }
 
