@@ -37,7 +37,12 @@ Json piece(const PieceReport& p) {
 
 // A pattern piece's measures, in model units: areas are the outer loop's less the holes',
 // perimeters sum every loop (outline_measures.h).
-Json pattern_piece(const PatternPiece& p) {
+Json pattern_piece(const PatternPiece& p, const PieceGroup& group,
+                   const std::vector<PieceReport>& pieces) {
+  Json members = Json::array();
+  for (size_t k = 0; k < group.members.size(); ++k)
+    members.push_back({{"label", pieces[static_cast<size_t>(group.members[k])].label},
+                       {"mirrored", group.mirrored[k] != 0}});
   return {{"label", p.label},
           {"name", p.name},
           {"quantity", p.quantity},
@@ -46,7 +51,17 @@ Json pattern_piece(const PatternPiece& p) {
           {"sew_perimeter", outline_length(p.outlines)},
           {"cut_area", outline_area(p.cut_outlines)},
           {"cut_perimeter", outline_length(p.cut_outlines)},
-          {"grain", {p.grain.x(), p.grain.y()}}};
+          {"grain", {p.grain.x(), p.grain.y()}},
+          {"pieces", members},
+          {"difference", group.difference}};
+}
+
+Json marker_json(const Marker& m) {
+  return {{"width", m.width},
+          {"length", m.length},
+          {"efficiency", m.efficiency},
+          {"placed", m.placements.size()},
+          {"unplaced", m.unplaced}};
 }
 
 }  // namespace
@@ -55,22 +70,24 @@ std::string flatten_report_json(const FlattenResult& result, const FlattenReport
   Json pieces = Json::array();
   for (const PieceReport& p : result.pieces) pieces.push_back(piece(p));
   Json pattern = Json::array();
-  for (const PatternPiece& p : result.pattern.pieces) pattern.push_back(pattern_piece(p));
+  for (size_t i = 0; i < result.pattern.pieces.size(); ++i)
+    pattern.push_back(pattern_piece(result.pattern.pieces[i], result.groups[i], result.pieces));
   const Json parameters = params::values_json(params::flatten_params(), c.options.settings);
-  const Json report = {{"input", c.options.input},
-                       {"output", c.options.output},
-                       {"vertices", c.vertices},
-                       {"faces", c.faces},
-                       {"has_patch_ids", c.has_patch_ids},
-                       {"parameters", parameters},
-                       {"pieces", pieces},
-                       {"pattern", pattern},
-                       {"max_distortion", result.max_distortion},
-                       {"flattenable_pieces", result.flattenable_pieces},
-                       {"sheet", box(result.pattern.bounds)},
-                       {"time_ms", result.time_ms},
-                       {"notes", c.notes},
-                       {"log", result.log}};
+  Json report = {{"input", c.options.input},
+                 {"output", c.options.output},
+                 {"vertices", c.vertices},
+                 {"faces", c.faces},
+                 {"has_patch_ids", c.has_patch_ids},
+                 {"parameters", parameters},
+                 {"pieces", pieces},
+                 {"pattern", pattern},
+                 {"max_distortion", result.max_distortion},
+                 {"flattenable_pieces", result.flattenable_pieces},
+                 {"sheet", box(result.pattern.bounds)},
+                 {"time_ms", result.time_ms},
+                 {"notes", c.notes},
+                 {"log", c.log}};
+  if (c.marker) report["marker"] = marker_json(*c.marker);
   return report_text(report);
 }
 

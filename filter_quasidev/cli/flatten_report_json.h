@@ -2,14 +2,16 @@
 // figure of a qd::FlattenResult (per piece: faces, cut, ARAP iterations and stop reason, length
 // distortion, area and boundary change, flips, overlaps, place on the sheet, time), the sheet's
 // extent, per pattern piece its label, name, quantity, mirror count, sew and cut line area and
-// perimeter and grain direction (the "pattern" array), and the log. Input: the result and its
-// context. Output: text.
+// perimeter and grain direction (the "pattern" array), which pieces each stands for and how
+// much they differ, the marker's figures when one was nested, and the log. Input: the result and
+// its context. Output: text.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "flatten/flatten_result.h"
+#include "marker.h"
 #include "options.h"
 
 namespace qd::cli {
@@ -20,6 +22,8 @@ struct FlattenReportContext {
   int faces;
   bool has_patch_ids;
   const std::vector<std::string>& notes;  // the reader's remarks (e.g. polygons triangulated)
+  const Marker* marker;                   // the nested marker; null = none asked for
+  const std::vector<std::string>& log;    // the engine's log and the command's lines after it
 };
 
 std::string flatten_report_json(const FlattenResult& result, const FlattenReportContext& context);

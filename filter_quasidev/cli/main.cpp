@@ -2,11 +2,11 @@
 // writes the deformed mesh as PLY with per-vertex quality and a colour ramp, and optionally a JSON
 // report. quasidev segment: reads a mesh, splits it into nearly developable patches
 // (qd::segment), writes it as PLY with per-face quality = patch id and a colour per patch, and
-// optionally a JSON report. quasidev flatten: reads a mesh, flattens its patches (qd::flatten), writes it as PLY
-// with wedge texture coordinates, the stretch per face and its colour ramp, and optionally a
-// JSON report and the pattern as SVG, DXF and a printable PDF. Subcommands and options: options.h.
-// Exit 0 on success; 1 on bad input or an engine error; 2 on a bad command line. On error one
-// line "quasidev: error: REASON" goes to stderr and no file is written.
+// optionally a JSON report. quasidev flatten: reads a mesh, flattens its patches (qd::flatten),
+// writes it as PLY with wedge texture coordinates, the stretch per face and its colour ramp, and
+// optionally a JSON report and the pattern as SVG, DXF and a printable PDF. Subcommands and
+// options: options.h. Exit 0 on success; 1 on bad input or an engine error; 2 on a bad command
+// line. On error one line "quasidev: error: REASON" goes to stderr and no file is written.
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,6 +15,7 @@
 #include <iostream>
 #include <memory>
 #include <new>
+#include <optional>
 #include <sstream>
 #include <tuple>
 #include <utility>
@@ -26,8 +27,11 @@
 #include "flatten_fields.h"
 #include "flatten_report_json.h"
 #include "io/pattern_files.h"
+#include "marker_dxf.h"
+#include "marker_svg.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
+#include "nest_marker.h"
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
@@ -74,7 +78,8 @@ ProgressLine progress_line;
 
 // Refuses to replace the input (unless asked) or to write two outputs into one file, comparing
 // the files themselves (options.cpp compared their names).
-void check_paths(const qd::cli::JobOptions& o, const std::vector<std::pair<std::string, std::string>>& outputs) {
+void check_paths(const qd::cli::JobOptions& o,
+                 const std::vector<std::pair<std::string, std::string>>& outputs) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const auto same = [&ec](const std::string& a, const std::string& b) {
@@ -85,7 +90,8 @@ void check_paths(const qd::cli::JobOptions& o, const std::vector<std::pair<std::
   for (std::size_t i = 1; i < outputs.size(); ++i)
     for (std::size_t j = 0; j < i; ++j)
       if (same(outputs[i].second, o.input) || same(outputs[i].second, outputs[j].second))
-        throw qd::cli::UsageError("the " + outputs[i].first + " file must differ from INPUT, OUTPUT and the other files");
+        throw qd::cli::UsageError("the " + outputs[i].first +
+                                  " file must differ from INPUT, OUTPUT and the other files");
 }
 
 void start_progress(const qd::cli::JobOptions& o) {
@@ -154,7 +160,9 @@ auto read_and_solve(const Options& o, MakeProblem make_problem, Solve solve) {
 void approximate(const qd::cli::ApproximateOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
       o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_problem(m, o); },
-      [](const qd::Problem& p, const qd::Progress& progress) { return qd::approximate(p, progress); });
+      [](const qd::Problem& p, const qd::Progress& progress) {
+        return qd::approximate(p, progress);
+      });
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size()))}};
   if (!o.report.empty()) {
@@ -173,7 +181,9 @@ void approximate(const qd::cli::ApproximateOptions& o) {
 void segment(const qd::cli::SegmentOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
       o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_segment_problem(m, o); },
-      [](const qd::SegmentProblem& p, const qd::Progress& progress) { return qd::segment(p, progress); });
+      [](const qd::SegmentProblem& p, const qd::Progress& progress) {
+        return qd::segment(p, progress);
+      });
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(mesh, qd::cli::segment_output_fields(result, mesh))}};
   if (!o.report.empty()) {
@@ -189,24 +199,60 @@ void segment(const qd::cli::SegmentOptions& o) {
   print_outcome(o, result.warnings, result.log, mesh.notes);
 }
 
+// The nested marker of the pattern on fabric of the asked width (gap: the flatten gap, else 1 %
+// of the width), with its length, efficiency and unplaced pieces on the log.
+qd::Marker marker_of(const qd::params::FlattenSettings& s, const qd::Pattern& pattern,
+                     std::vector<std::string>& log) {
+  const double gap = s.engine.gap > 0 ? s.engine.gap : 0.01 * s.marker_width;
+  qd::Marker marker = qd::nest_marker(pattern, s.marker_width, gap);
+  std::ostringstream line;
+  line << "marker: width " << s.marker_width << ", length " << marker.length << ", efficiency "
+       << 100 * marker.efficiency << " %, " << marker.placements.size() << " pieces, gap " << gap;
+  log.push_back(line.str());
+  for (const std::string& label : marker.unplaced)
+    log.push_back("marker: piece " + label + " is wider than the fabric, not placed");
+  return marker;
+}
+
 void flatten(const qd::cli::FlattenOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
       o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_flatten_problem(m, o); },
-      [](const qd::FlattenProblem& p, const qd::Progress& progress) { return qd::flatten(p, progress); });
+      [](const qd::FlattenProblem& p, const qd::Progress& progress) {
+        return qd::flatten(p, progress);
+      });
+  const qd::params::FlattenSettings& s = o.settings;
+  std::vector<std::string> log = result.log;
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(mesh, qd::cli::flatten_output_fields(result, mesh.triangles.size()))}};
-  if (!o.report.empty()) {
-    const qd::cli::FlattenReportContext context{o, static_cast<int>(mesh.positions.size()),
-                                                static_cast<int>(mesh.triangles.size()),
-                                                !mesh.patch.empty(), mesh.notes};
-    files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
-  }
-  for (auto& file : qd::pattern_files(o.settings, result.pattern)) files.push_back(std::move(file));
-  std::vector<std::string> log = result.log;
-  if (!o.settings.pdf_file.empty()) {
-    auto pdf = qd::pdf::printable_pdf(result.pattern, o.settings.paper, o.settings.unit);
-    files.emplace_back(o.settings.pdf_file, std::move(pdf.bytes));
+  for (auto& file : qd::pattern_files(s, result.pattern)) files.push_back(std::move(file));
+  if (!s.pdf_file.empty()) {
+    auto pdf = qd::pdf::printable_pdf(result.pattern, s.paper, s.unit);
+    files.emplace_back(s.pdf_file, std::move(pdf.bytes));
     log.push_back(pdf.summary);
+  }
+  std::optional<qd::Marker> marker;
+  if (s.marker_width > 0) {
+    marker = marker_of(s, result.pattern, log);
+    if (!s.marker_svg_file.empty()) {
+      std::ostringstream svg;
+      qd::write_marker_svg(svg, *marker, result.pattern);
+      files.emplace_back(s.marker_svg_file, svg.str());
+    }
+    if (!s.marker_dxf_file.empty()) {
+      std::ostringstream dxf;
+      qd::write_marker_dxf(dxf, *marker, result.pattern);
+      files.emplace_back(s.marker_dxf_file, dxf.str());
+    }
+  }
+  if (!o.report.empty()) {
+    const qd::cli::FlattenReportContext context{o,
+                                                static_cast<int>(mesh.positions.size()),
+                                                static_cast<int>(mesh.triangles.size()),
+                                                !mesh.patch.empty(),
+                                                mesh.notes,
+                                                marker ? &*marker : nullptr,
+                                                log};
+    files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
   }
   write_files(files);
   print_outcome(o, {}, log, mesh.notes);
@@ -232,9 +278,12 @@ int main(int argc, char** argv) {
       std::cout << line.print;
       return 0;
     }
-    if (line.job == qd::cli::Job::Segment) segment(line.segment);
-    else if (line.job == qd::cli::Job::Flatten) flatten(line.flatten);
-    else approximate(line.approximate);
+    if (line.job == qd::cli::Job::Segment)
+      segment(line.segment);
+    else if (line.job == qd::cli::Job::Flatten)
+      flatten(line.flatten);
+    else
+      approximate(line.approximate);
     return 0;
   } catch (const qd::cli::UsageError& e) {
     return fail(e.what(), 2);

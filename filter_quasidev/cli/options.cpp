@@ -17,7 +17,8 @@ namespace {
 // --help and --version, which every level of the command has; the footer is inherited.
 void add_help_and_version(CLI::App& app) {
   app.set_help_flag("-h,--help", "print this help and exit");
-  app.set_version_flag("--version", std::string("quasidev ") + QD_VERSION, "print the version and exit");
+  app.set_version_flag("--version", std::string("quasidev ") + QD_VERSION,
+                       "print the version and exit");
 }
 
 // Unknown options first, then the number of file names, as the command has always checked.
@@ -32,19 +33,23 @@ void check_leftovers(const CLI::App& job) {
     if (!only_files && a.size() >= 2 && a[0] == '-') usage("unknown option '" + a + "'");
     ++files;
   }
-  if (files != 2) usage("expected INPUT and OUTPUT, got " + std::to_string(files) + " file name(s)");
+  if (files != 2)
+    usage("expected INPUT and OUTPUT, got " + std::to_string(files) + " file name(s)");
 }
 
 // OUTPUT may be INPUT only with --overwrite-input; every other written file differs from both
 // and from the others.
-void check_files(const JobOptions& o, const std::vector<std::pair<std::string, std::string>>& outputs) {
+void check_files(const JobOptions& o,
+                 const std::vector<std::pair<std::string, std::string>>& outputs) {
   if (o.output == o.input && !o.overwrite_input)
     usage("OUTPUT is the INPUT file; pass --overwrite-input to replace it");
   for (std::size_t i = 1; i < outputs.size(); ++i) {
     const auto& [name, file] = outputs[i];
-    if (file == o.input || file == o.output) usage("the " + name + " file must differ from INPUT and OUTPUT");
+    if (file == o.input || file == o.output)
+      usage("the " + name + " file must differ from INPUT and OUTPUT");
     for (std::size_t j = 1; j < i; ++j)
-      if (file == outputs[j].second) usage("the " + outputs[j].first + " and " + name + " files must differ");
+      if (file == outputs[j].second)
+        usage("the " + outputs[j].first + " and " + name + " files must differ");
   }
 }
 
@@ -64,20 +69,26 @@ std::vector<std::pair<std::string, std::string>> output_files(const JobOptions& 
 }
 
 std::vector<std::pair<std::string, std::string>> output_files(const FlattenOptions& o) {
-  std::vector<std::pair<std::string, std::string>> files = output_files(static_cast<const JobOptions&>(o));
+  std::vector<std::pair<std::string, std::string>> files =
+      output_files(static_cast<const JobOptions&>(o));
   if (!o.settings.svg_file.empty()) files.emplace_back("--svg-file", o.settings.svg_file);
   if (!o.settings.dxf_file.empty()) files.emplace_back("--dxf-file", o.settings.dxf_file);
   if (!o.settings.pdf_file.empty()) files.emplace_back("--pdf-file", o.settings.pdf_file);
+  if (!o.settings.marker_svg_file.empty())
+    files.emplace_back("--marker-svg-file", o.settings.marker_svg_file);
+  if (!o.settings.marker_dxf_file.empty())
+    files.emplace_back("--marker-dxf-file", o.settings.marker_dxf_file);
   return files;
 }
 
 CommandLine parse_command_line(std::vector<std::string> args) {
   CommandLine line;
-  CLI::App app("Makes triangle mesh patches nearly developable: cuttable from flat sheet\n"
-               "material without stretching; splits meshes into such patches and flattens\n"
-               "them into a cutting pattern.\n"
-               "Without a subcommand, `quasidev INPUT OUTPUT [options]` runs `approximate`.\n",
-               "quasidev");
+  CLI::App app(
+      "Makes triangle mesh patches nearly developable: cuttable from flat sheet\n"
+      "material without stretching; splits meshes into such patches and flattens\n"
+      "them into a cutting pattern.\n"
+      "Without a subcommand, `quasidev INPUT OUTPUT [options]` runs `approximate`.\n",
+      "quasidev");
   app.get_formatter()->column_width(25);
   app.footer(
       "Lengths are in model units, or in AE (the input's average edge length) where the\n"
@@ -88,7 +99,8 @@ CommandLine parse_command_line(std::vector<std::string> args) {
   CLI::App* approximate = add_job(
       app, "approximate",
       "Makes the patches of a triangle mesh nearly developable (Zeng et al., \"Least squares\n"
-      "quasi-developable mesh approximation\", CAGD 2012) and writes the result as a binary PLY.\n");
+      "quasi-developable mesh approximation\", CAGD 2012) and writes the result as a binary "
+      "PLY.\n");
   add_approximate_options(*approximate, line.approximate);
   CLI::App* segment = add_job(
       app, "segment",
@@ -104,14 +116,16 @@ CommandLine parse_command_line(std::vector<std::string> args) {
       "and DXF.\n");
   add_flatten_options(*flatten, line.flatten);
   const bool names_job =
-      !args.empty() && (args[0] == "-h" || args[0] == "--help" || args[0] == "--version" ||
-                        !app.get_subcommands([&](const CLI::App* s) { return s->check_name(args[0]); })
-                             .empty());
+      !args.empty() &&
+      (args[0] == "-h" || args[0] == "--help" || args[0] == "--version" ||
+       !app.get_subcommands([&](const CLI::App* s) { return s->check_name(args[0]); }).empty());
   if (!names_job) args.insert(args.begin(), approximate->get_name());
   line.job = segment->check_name(args[0])   ? Job::Segment
              : flatten->check_name(args[0]) ? Job::Flatten
                                             : Job::Approximate;
-  const CLI::App& job = line.job == Job::Segment ? *segment : line.job == Job::Flatten ? *flatten : *approximate;
+  const CLI::App& job = line.job == Job::Segment   ? *segment
+                        : line.job == Job::Flatten ? *flatten
+                                                   : *approximate;
   std::reverse(args.begin(), args.end());  // CLI11 takes the arguments last first
   try {
     app.parse(args);
@@ -130,12 +144,25 @@ CommandLine parse_command_line(std::vector<std::string> args) {
     usage(e.what());
   }
   check_leftovers(job);
-  if (line.job == Job::Segment) check_files(line.segment, output_files(line.segment));
-  else if (line.job == Job::Flatten) check_files(line.flatten, output_files(line.flatten));
-  else check_files(line.approximate, output_files(line.approximate));
-  if (line.job == Job::Flatten && !line.flatten.settings.pdf_file.empty() &&
-      line.flatten.settings.unit == params::PatternUnit::Model)
-    usage("--pdf-file prints at true scale: it needs the model's length unit, --unit mm, cm or in");
+  if (line.job == Job::Segment)
+    check_files(line.segment, output_files(line.segment));
+  else if (line.job == Job::Flatten)
+    check_files(line.flatten, output_files(line.flatten));
+  else
+    check_files(line.approximate, output_files(line.approximate));
+  const params::FlattenSettings& flat = line.flatten.settings;
+  if (line.job == Job::Flatten) {
+    const bool model = flat.unit == params::PatternUnit::Model;
+    if (model && !flat.pdf_file.empty())
+      usage(
+          "--pdf-file prints at true scale: it needs the model's length unit, --unit mm, cm or in");
+    if (model && !flat.dxf_file.empty() && flat.dxf_style == params::DxfStyle::Aama)
+      usage("--dxf-style aama declares the pattern's units: it needs --unit mm, cm or in");
+    if (flat.marker_width <= 0 && !(flat.marker_svg_file.empty() && flat.marker_dxf_file.empty()))
+      usage(
+          "--marker-svg-file and --marker-dxf-file need the fabric's width: pass --marker-width "
+          "WIDTH");
+  }
   return line;
 }
 

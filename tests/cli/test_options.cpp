@@ -30,6 +30,13 @@ std::string usage_error(std::vector<std::string> args) {
   return "";
 }
 
+// What a parameter needs beside it to be accepted: marker files a fabric width, a PDF a unit.
+std::vector<std::string> needed_beside(const std::string& name) {
+  if (name == "marker_svg_file" || name == "marker_dxf_file") return {"--marker-width", "150"};
+  if (name == "pdf_file") return {"--unit", "cm"};
+  return {};
+}
+
 // For each parameter of a job that the command has: the value set by `spelling value` (a
 // Boolean: by the flag alone) is what get() reads back; checked under the name and every alias.
 template <typename S, typename Settings>
@@ -54,6 +61,8 @@ void expect_every_option_reaches_the_settings(const std::string& job,
     for (const std::vector<std::string>& words : spellings) {
       std::vector<std::string> args = {job, "in.ply", "out.ply"};
       args.insert(args.end(), words.begin(), words.end());
+      const std::vector<std::string> beside = needed_beside(p.name);
+      args.insert(args.end(), beside.begin(), beside.end());
       EXPECT_EQ(p.get(settings_of(parse(args))), want) << job << " " << words.front();
     }
   }
@@ -197,6 +206,19 @@ TEST(Options, HelpNamesEveryOptionAndItsDefault) {
   const std::string top = parse({"--help"}).print;
   EXPECT_NE(top.find("Subcommands:"), std::string::npos) << top;
   EXPECT_NE(top.find("--max-iter"), std::string::npos) << top;
+}
+
+// Files that cannot be made as asked are refused before anything runs, naming what is missing.
+TEST(Options, PatternFilesThatNeedAUnitOrAWidthAreRefused) {
+  EXPECT_NE(usage_error({"flatten", "a", "b", "--pdf", "p.pdf"}).find("--unit"), std::string::npos);
+  EXPECT_NE(
+      usage_error({"flatten", "a", "b", "--dxf", "p.dxf", "--dxf-style", "aama"}).find("--unit"),
+      std::string::npos);
+  EXPECT_NE(usage_error({"flatten", "a", "b", "--marker-svg", "m.svg"}).find("--marker-width"),
+            std::string::npos);
+  EXPECT_EQ(
+      usage_error({"flatten", "a", "b", "--dxf", "p.dxf", "--dxf-style", "aama", "--unit", "mm"}),
+      "");
 }
 
 }  // namespace

@@ -120,6 +120,7 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   square.outlines = {{{0, 1}, {2, 1}, {2, 3}, {0, 3}}};
   square.cut_outlines = {{{-0.5, 0.5}, {2.5, 0.5}, {2.5, 3.5}, {-0.5, 3.5}}};
   r.pattern.pieces.push_back(square);
+  r.groups = {{{0}, {0}, 0.25}};
   r.log = {"patch 3.1: ...", "flattened 1 pieces"};
   qd::cli::FlattenOptions o;
   o.input = "in.ply";
@@ -127,13 +128,20 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   o.settings.unit = qd::params::PatternUnit::Centimetre;
   o.settings.engine.gap = 0.5;
   const std::vector<std::string> notes = {"polygons fan-triangulated"};
-  const Json j = Json::parse(qd::cli::flatten_report_json(r, {o, 10, 4, true, notes}));
+  qd::Marker marker;
+  marker.width = 150;
+  marker.length = 80;
+  marker.efficiency = 0.75;
+  marker.unplaced = {"2"};
+  const Json j =
+      Json::parse(qd::cli::flatten_report_json(r, {o, 10, 4, true, notes, &marker, r.log}));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
   EXPECT_EQ(keys,
             (std::vector<std::string>{"input", "output", "vertices", "faces", "has_patch_ids",
                                       "parameters", "pieces", "pattern", "max_distortion",
-                                      "flattenable_pieces", "sheet", "time_ms", "notes", "log"}));
+                                      "flattenable_pieces", "sheet", "time_ms", "notes", "log",
+                                      "marker"}));
   const Json& piece = j["pieces"][0];
   EXPECT_EQ(piece["label"], "3.1");
   EXPECT_EQ(piece["component"].get<int>(), 1);
@@ -152,6 +160,10 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   EXPECT_NEAR(cut["cut_area"].get<double>(), 9, 1e-12);
   EXPECT_NEAR(cut["cut_perimeter"].get<double>(), 12, 1e-12);
   EXPECT_EQ(cut["grain"], Json::array({0.0, 1.0}));
+  EXPECT_EQ(cut["pieces"][0]["label"], "3.1");
+  EXPECT_EQ(cut["difference"].get<double>(), 0.25);
+  EXPECT_EQ(j["marker"]["length"].get<double>(), 80.0);
+  EXPECT_EQ(j["marker"]["unplaced"], Json::array({"2"}));
   EXPECT_EQ(j["parameters"]["unit"], "cm");
   EXPECT_EQ(j["parameters"]["gap"].get<double>(), 0.5);
   EXPECT_EQ(j["sheet"]["min"][1].get<double>(), 1.0);

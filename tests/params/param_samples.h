@@ -34,6 +34,7 @@ inline Value sample_value(const ParamInfo& p) {
     case Type::Text:
       if (p.name == "patch_tolerance_ae") return std::string("2=0.5,7=3");
       if (p.name == "constraints_file") return std::string("fixed.txt");
+      if (p.name == "grain_direction") return std::string("0,0,1");
       break;
     case Type::SaveFile:
       return "pattern" + p.extension;

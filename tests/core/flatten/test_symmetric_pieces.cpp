@@ -199,12 +199,20 @@ TEST(SymmetricPieces, MirrorImagePatchesFlattenIntoAMirroredPair) {
   problem.F << a.F, b.F.array() + nv;
   problem.patch.assign(nf, 0);
   problem.patch.resize(2 * nf, 1);
-  const qd::FlattenResult r = qd::flatten(problem);
-  ASSERT_EQ(r.pattern.pieces.size(), 2u);
-  const std::vector<qd::PieceGroup> g = qd::symmetric_groups(r.pattern.pieces, 1);
+  const qd::FlattenResult r = qd::flatten(problem);  // symmetry_tolerance 1 % by default
+  ASSERT_EQ(r.pieces.size(), 2u);
+  const std::vector<qd::PieceGroup>& g = r.groups;
   ASSERT_EQ(g.size(), 1u);
   EXPECT_EQ(g[0].mirrored, (std::vector<char>{0, 1}));
   EXPECT_LT(g[0].difference, 1.0);
+  ASSERT_EQ(r.pattern.pieces.size(), 1u);  // one pattern piece, cut twice, once turned over
+  EXPECT_EQ(r.pattern.pieces[0].quantity, 2);
+  EXPECT_EQ(r.pattern.pieces[0].mirrored, 1);
+  EXPECT_NE(std::find_if(r.log.begin(), r.log.end(),
+                         [](const std::string& line) {
+                           return line.find("one pattern piece, cut 2") != std::string::npos;
+                         }),
+            r.log.end());
   RecordProperty("difference_percent", std::to_string(g[0].difference));
 }
 

@@ -1,0 +1,17 @@
+// The nested marker: every piece of a pattern (its quantity, mirrored ones turned over) placed
+// without overlap on a strip of fabric of a given width, the grainline along the fabric's
+// length, as short as the nesting finds. Nesting by libnest2d (Tamás Mészáros, LGPL-3.0; the
+// no-fit-polygon placer with NLopt's subplex along the no-fit polygons, first-fit selection,
+// largest piece first) on the convex hulls of the cut lines: its no-fit polygons are exact
+// only for convex shapes, so the hulls keep the pieces from overlapping.
+#pragma once
+
+#include "marker.h"
+
+namespace qd {
+
+// width: the fabric's width (> 0); gap: the space left between pieces and from the selvages
+// (>= 0). Pieces wider than the fabric (less the gap) are listed in Marker::unplaced.
+Marker nest_marker(const Pattern& pattern, double width, double gap);
+
+}  // namespace qd

@@ -1,0 +1,48 @@
+#include "row_marker.h"
+
+#include <algorithm>
+
+#include "marker_items.h"
+
+namespace qd {
+
+namespace {
+
+Eigen::AlignedBox2d box_of(const Outline& outline) {
+  Eigen::AlignedBox2d box;
+  for (const Eigen::Vector2d& q : outline) box.extend(q);
+  return box;
+}
+
+}  // namespace
+
+Marker row_marker(const Pattern& pattern, double width, double gap) {
+  Marker marker;
+  marker.width = width;
+  std::vector<MarkerPlacement> items = marker_items(pattern);
+  std::stable_sort(items.begin(), items.end(),
+                   [](const MarkerPlacement& a, const MarkerPlacement& b) {
+                     return box_of(a.outline).sizes().x() > box_of(b.outline).sizes().x();
+                   });
+  double row_x = 0, row_length = 0, y = 0;
+  for (MarkerPlacement& p : items) {
+    const Eigen::AlignedBox2d box = box_of(p.outline);
+    if (box.sizes().y() > width) {
+      note_unplaced(marker, pattern.pieces[static_cast<size_t>(p.piece)].label);
+      continue;
+    }
+    if (y > 0 && y + box.sizes().y() > width) {  // a new row
+      row_x += row_length + gap;
+      row_length = 0;
+      y = 0;
+    }
+    translate_placement(p, Eigen::Vector2d(row_x, y) - box.min());
+    row_length = std::max(row_length, box.sizes().x());
+    y += box.sizes().y() + gap;
+    marker.placements.push_back(std::move(p));
+  }
+  measure_marker(marker);
+  return marker;
+}
+
+}  // namespace qd
