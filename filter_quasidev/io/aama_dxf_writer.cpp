@@ -69,7 +69,8 @@ void block(DxfGroups& g, const PatternPiece& piece, const std::string& unit, dou
   g.text_lines(kBoundary, below, text,
                {"Piece Name: " + (piece.name.empty() ? "Piece " + piece.label : piece.name),
                 "Quantity: " + std::to_string(piece.quantity)});
-  g.text_lines(kAnnotation, piece.label_at, text, label_lines(piece, unit, "x"));
+  const std::vector<std::string> lines = label_lines(piece, unit, "x");
+  g.text_lines(kAnnotation, piece.label_at, label_height(piece, lines, text), lines);
   g(0, "ENDBLK")(8, "0");
 }
 

@@ -43,7 +43,8 @@ void piece_entities(DxfGroups& g, const PatternPiece& piece, const std::string& 
   }
   const Segment2 grain = grainline(piece);
   g.line(grain_layer_of(piece.patch), grain.from, grain.to);
-  g.text_lines(layer, piece.label_at, text, label_lines(piece, unit, "x"));
+  const std::vector<std::string> lines = label_lines(piece, unit, "x");
+  g.text_lines(layer, piece.label_at, label_height(piece, lines, text), lines);
 }
 
 }  // namespace

@@ -15,6 +15,13 @@ constexpr double kGrainShare = 0.6;  // of the piece's extent along the grain
 constexpr double kInside = 0.9;      // of the way from the centroid to the sew line
 
 // x rounded to hundredths, as text.
+// Characters of a UTF-8 text (its bytes less the continuation bytes).
+size_t characters(const std::string& text) {
+  return static_cast<size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  }));
+}
+
 std::string measure_text(double x) {
   std::ostringstream out;
   out.imbue(std::locale::classic());
@@ -82,6 +89,19 @@ std::vector<std::string> label_lines(const PatternPiece& piece, const std::strin
     lines.push_back(measure_text(box.sizes().x()) + " " + times + " " +
                     measure_text(box.sizes().y()) + " " + (unit.empty() ? "model units" : unit));
   return lines;
+}
+
+double label_height(const PatternPiece& piece, const std::vector<std::string>& lines,
+                    double height) {
+  Eigen::AlignedBox2d box;
+  for (const Outline& outline : piece.outlines)
+    for (const Eigen::Vector2d& at : outline) box.extend(at);
+  size_t longest = 1;
+  for (const std::string& line : lines) longest = std::max(longest, characters(line));
+  const double fit_x = 0.8 * box.sizes().x() / (0.6 * static_cast<double>(longest));
+  const double fit_y =
+      0.5 * box.sizes().y() / (1.2 * static_cast<double>(std::max<size_t>(lines.size(), 1)));
+  return std::min(height, std::min(fit_x, fit_y));
 }
 
 }  // namespace qd

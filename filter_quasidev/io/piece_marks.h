@@ -32,4 +32,9 @@ Segment2 notch_tick(const Notch& notch, double beyond);
 std::vector<std::string> label_lines(const PatternPiece& piece, const std::string& unit,
                                      const std::string& times);
 
+// The label's text height: `height`, or less so that the lines (about 0.6 height per character
+// wide, 1.2 height apart) fit in 80 % of the width and half the height of the sew line's box.
+double label_height(const PatternPiece& piece, const std::vector<std::string>& lines,
+                    double height);
+
 }  // namespace qd

@@ -97,11 +97,12 @@ void write_piece(std::ostream& out, const PatternPiece& piece, const Page& page,
   }
   write_grainline(out, piece, page, notch);
   const std::vector<std::string> lines = label_lines(piece, unit, "\u00d7");
-  const double top = page.y(piece.label_at) - 0.6 * font * static_cast<double>(lines.size() - 1);
+  const double size = label_height(piece, lines, font);
+  const double top = page.y(piece.label_at) - 0.6 * size * static_cast<double>(lines.size() - 1);
   for (size_t i = 0; i < lines.size(); ++i)
     out << "<text x=\"" << page.x(piece.label_at) << "\" y=\""
-        << top + 1.2 * font * static_cast<double>(i) << "\" stroke=\"none\" fill=\"black\">"
-        << escaped(lines[i]) << "</text>\n";
+        << top + 1.2 * size * static_cast<double>(i) << "\" font-size=\"" << size
+        << "\" stroke=\"none\" fill=\"black\">" << escaped(lines[i]) << "</text>\n";
   out << "</g>\n";
 }
 

@@ -44,4 +44,18 @@ TileGrid tile_pages(const Eigen::AlignedBox2d& bounds, double points_per_unit,
   return grid;
 }
 
+bool TileGrid::has(int row, int column) const {
+  return std::any_of(tiles.begin(), tiles.end(),
+                     [&](const Tile& t) { return t.row == row && t.column == column; });
+}
+
+void drop_empty_tiles(TileGrid& grid, const std::vector<Eigen::AlignedBox2d>& pieces) {
+  const auto empty = [&](const Tile& t) {
+    return std::none_of(pieces.begin(), pieces.end(), [&](const Eigen::AlignedBox2d& b) {
+      return !t.area.intersection(b).isEmpty();
+    });
+  };
+  grid.tiles.erase(std::remove_if(grid.tiles.begin(), grid.tiles.end(), empty), grid.tiles.end());
+}
+
 }  // namespace qd::pdf

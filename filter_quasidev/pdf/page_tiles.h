@@ -30,12 +30,17 @@ struct Tile {
 struct TileGrid {
   double points_per_unit = 1;  // the print scale: one model unit on paper
   int rows = 0, columns = 0;
-  std::vector<Tile> tiles;  // row by row, left to right
+  std::vector<Tile> tiles;              // row by row, left to right
+  bool has(int row, int column) const;  // is that tile among `tiles`?
 };
 
 // The fewest pages of `page` that cover `bounds` (model units) at `points_per_unit`, each
 // neighbour overlapping by page.overlap; an empty box is one page at the origin.
 TileGrid tile_pages(const Eigen::AlignedBox2d& bounds, double points_per_unit,
                     const PageSpec& page);
+
+// Leaves out the tiles that no piece's box reaches (the pieces lie in shelves, so a grid over
+// their bounds has empty pages); the kept tiles keep their names, so neighbours still match.
+void drop_empty_tiles(TileGrid& grid, const std::vector<Eigen::AlignedBox2d>& pieces);
 
 }  // namespace qd::pdf

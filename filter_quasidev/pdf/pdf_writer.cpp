@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "common/error.h"
+#include "io/piece_marks.h"
 
 namespace qd::pdf {
 
@@ -75,33 +76,9 @@ void arrow(cairo_t* cr, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   cairo_stroke(cr);
 }
 
-// The grainline: along piece.grain through its label point, over 60 % of the piece's extent.
-void grainline(cairo_t* cr, const View& view, const PatternPiece& piece) {
-  double low = 0, high = 0;
-  for (const Outline& outline : piece.outlines)
-    for (const Eigen::Vector2d& p : outline) {
-      const double t = (p - piece.label_at).dot(piece.grain);
-      low = std::min(low, t);
-      high = std::max(high, t);
-    }
-  const Eigen::Vector2d a = view(piece.label_at + 0.6 * low * piece.grain);
-  const Eigen::Vector2d b = view(piece.label_at + 0.6 * high * piece.grain);
-  if ((b - a).norm() > 20) arrow(cr, a, b);
-}
-
-// "3 front", "cut 2 (1 mirrored)".
-std::string piece_title(const PatternPiece& piece) {
-  return piece.name.empty() ? piece.label : piece.label + " " + piece.name;
-}
-std::string cut_text(const PatternPiece& piece) {
-  std::string s = "cut " + std::to_string(piece.quantity);
-  if (piece.mirrored > 0) s += " (" + std::to_string(piece.mirrored) + " mirrored)";
-  return s;
-}
-
 // One piece at true scale: cut lines solid, sew lines dashed where they differ, notches through
 // the allowance, grainline, label.
-void draw_piece(cairo_t* cr, const View& view, const PatternPiece& piece) {
+void draw_piece(cairo_t* cr, const View& view, const PatternPiece& piece, const std::string& unit) {
   cairo_set_line_width(cr, kCutLine);
   stroke_outlines(cr, view, piece.cut_outlines);
   if (piece.cut_outlines != piece.outlines) {
@@ -113,15 +90,21 @@ void draw_piece(cairo_t* cr, const View& view, const PatternPiece& piece) {
   }
   cairo_set_line_width(cr, kCutLine);
   for (const Notch& n : piece.notches) {
-    move_to(cr, view(n.cut_at));
-    line_to(cr, view(n.at + kNotch / view.scale * n.inward));
+    const Segment2 tick = notch_tick(n, kNotch / view.scale);
+    move_to(cr, view(tick.from));
+    line_to(cr, view(tick.to));
   }
   cairo_stroke(cr);
   cairo_set_line_width(cr, kThinLine);
-  grainline(cr, view, piece);
+  const Segment2 grain = grainline(piece);
+  if ((view(grain.to) - view(grain.from)).norm() > 20) arrow(cr, view(grain.from), view(grain.to));
+  const std::vector<std::string> lines = label_lines(piece, unit, "\u00d7");
   const Eigen::Vector2d at = view(piece.label_at);
-  text(cr, piece_title(piece), at.x() + 4, at.y() - 2, kFont);
-  text(cr, cut_text(piece), at.x() + 4, at.y() + kFont, kSmallFont);
+  for (size_t i = 0; i < lines.size(); ++i)
+    text(cr, lines[i], at.x() + 4,
+         at.y() +
+             kFont * (1.2 * static_cast<double>(i) - 0.6 * static_cast<double>(lines.size() - 1)),
+         kFont);
 }
 
 std::string page_line(int k, int n) {
@@ -184,8 +167,8 @@ void map_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const P
 
 // Tile i: its share of the pattern clipped to the drawing area, the overlap borders (dashed)
 // with the neighbours' names in the margins, its name and page number.
-void tile_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const PageSpec& page,
-               std::size_t i) {
+void tile_page(cairo_t* cr, const Pattern& pattern, const std::string& unit, const TileGrid& grid,
+               const PageSpec& page, std::size_t i) {
   const Tile& tile = grid.tiles[i];
   const double left = page.margin, top = page.margin, right = page.width - page.margin,
                bottom = page.height - page.margin;
@@ -193,7 +176,7 @@ void tile_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const 
   cairo_rectangle(cr, left, top, page.area_width(), page.area_height());
   cairo_clip(cr);
   const View view{{tile.area.min().x(), tile.area.max().y()}, {left, top}, grid.points_per_unit};
-  for (const PatternPiece& piece : pattern.pieces) draw_piece(cr, view, piece);
+  for (const PatternPiece& piece : pattern.pieces) draw_piece(cr, view, piece, unit);
   cairo_restore(cr);
 
   cairo_set_source_rgb(cr, 0.5, 0.5, 0.5);
@@ -204,22 +187,22 @@ void tile_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const 
   cairo_set_dash(cr, dash, 2, 0);
   const auto neighbour = [](int r, int c) { return Tile{r, c, {}}.name(); };
   const double o = page.overlap, middle_y = (top + bottom) / 2, middle_x = (left + right) / 2;
-  if (tile.column > 0) {
+  if (grid.has(tile.row, tile.column - 1)) {
     cairo_move_to(cr, left + o, top);
     cairo_line_to(cr, left + o, bottom);
     text(cr, neighbour(tile.row, tile.column - 1), left / 2, middle_y, kFont, true);
   }
-  if (tile.column + 1 < grid.columns) {
+  if (grid.has(tile.row, tile.column + 1)) {
     cairo_move_to(cr, right - o, top);
     cairo_line_to(cr, right - o, bottom);
     text(cr, neighbour(tile.row, tile.column + 1), (right + page.width) / 2, middle_y, kFont, true);
   }
-  if (tile.row > 0) {
+  if (grid.has(tile.row - 1, tile.column)) {
     cairo_move_to(cr, left, top + o);
     cairo_line_to(cr, right, top + o);
     text(cr, neighbour(tile.row - 1, tile.column), middle_x, top / 2 + kFont / 2, kFont, true);
   }
-  if (tile.row + 1 < grid.rows) {
+  if (grid.has(tile.row + 1, tile.column)) {
     cairo_move_to(cr, left, bottom - o);
     cairo_line_to(cr, right, bottom - o);
     text(cr, neighbour(tile.row + 1, tile.column), middle_x, bottom + kFont, kFont, true);
@@ -236,7 +219,8 @@ void tile_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const 
 
 }  // namespace
 
-std::string pattern_pdf(const Pattern& pattern, const TileGrid& grid, const PageSpec& page) {
+std::string pattern_pdf(const Pattern& pattern, const std::string& unit, const TileGrid& grid,
+                        const PageSpec& page) {
   std::string bytes;
   {
     const Surface surface(
@@ -250,7 +234,7 @@ std::string pattern_pdf(const Pattern& pattern, const TileGrid& grid, const Page
     map_page(cr.get(), pattern, grid, page);
     cairo_show_page(cr.get());
     for (std::size_t i = 0; i < grid.tiles.size(); ++i) {
-      tile_page(cr.get(), pattern, grid, page, i);
+      tile_page(cr.get(), pattern, unit, grid, page, i);
       cairo_show_page(cr.get());
     }
     cairo_surface_finish(surface.get());

@@ -51,7 +51,9 @@ def test_patches_of_a_sheet_become_pieces_that_parse(tmp_path):
     svg = ET.parse(tmp_path / "p.svg").getroot()
     assert svg.get("width").endswith("cm")
     texts = [t.text for t in svg.iter("{http://www.w3.org/2000/svg}text")]
-    assert {"0", "1", "2", "3"} <= set(texts)
+    labels = {t.removeprefix("Piece ") for t in texts if t.startswith("Piece ")}
+    assert "0" in labels and labels <= {"0", "1", "2", "3"}
+    assert sum(int(t.split()[1]) for t in texts if t.startswith("Cut ")) == 4  # every patch cut
     groups = dxf_groups(tmp_path / "p.dxf")
     layers = {v for c, v in groups if c == 8}
     assert {"PATCH_0", "PATCH_3", "PATCH_1_NOTCHES"} <= layers

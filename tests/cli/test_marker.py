@@ -39,5 +39,5 @@ def test_marker_files_and_efficiency(tmp_path):
 def test_marker_files_need_a_width(tmp_path):
     r = run("flatten", CONE, tmp_path / "out.ply", "--marker-svg", tmp_path / "m.svg")
     assert r.returncode == 2
-    assert "--marker WIDTH" in r.stderr
+    assert "--marker-width WIDTH" in r.stderr
     assert not (tmp_path / "m.svg").exists() and not (tmp_path / "out.ply").exists()

@@ -48,9 +48,9 @@ def pages_along(length, area):
     return max(1, math.ceil((length - OVERLAP) / (area - OVERLAP) - 1e-9))
 
 
-def print_pdf(tmp_path, mesh, unit, paper):
+def print_pdf(tmp_path, mesh, unit, paper, *more):
     out, pdf = tmp_path / "out.ply", tmp_path / "pattern.pdf"
-    r = run("flatten", mesh, out, "--unit", unit, "--pdf", pdf, "--paper", paper)
+    r = run("flatten", mesh, out, "--unit", unit, "--pdf", pdf, "--paper", paper, *more)
     assert r.returncode == 0, r.stderr
     return out, pymupdf.open(pdf), r.stdout
 
@@ -103,24 +103,29 @@ def test_a_one_page_pattern_is_drawn_at_true_scale(tmp_path, unit, pt_per_unit):
 
 @pytest.mark.parametrize("paper", ["a4", "letter"])
 def test_a_large_pattern_takes_the_fewest_overlapping_pages_it_reports(tmp_path, paper):
+    """The grid is the fewest pages that cover the pattern; the pages no piece reaches are left out
+    (the log says how many), every other tile is one page whose name and number the map shows."""
     big = scaled(CONE, 15, tmp_path / "big_cone.ply")  # about 62 x 39 cm in cm
-    out, doc, log = print_pdf(tmp_path, big, "cm", paper)
+    out, doc, log = print_pdf(tmp_path, big, "cm", paper, "--symmetry-tolerance", "0")
     width, height = PAPERS[paper]
     w, h = pattern_size(out) * 10 * PT_PER_MM
     columns = pages_along(w, width - 2 * MARGIN)
     rows = pages_along(h, height - 2 * MARGIN)
     assert rows * columns > 2
-    m = re.search(rf"pdf: (\d+) pages of {paper} \(assembly map \+ (\d+) rows x (\d+) columns",
-                  log)
+    m = re.search(rf"pdf: (\d+) pages of {paper} \(assembly map \+ (\d+) tiles of a (\d+) x (\d+) "
+                  rf"grid, (\d+) empty left out\)", log)
     assert m, log
-    assert [int(g) for g in m.groups()] == [rows * columns + 1, rows, columns]
-    assert len(doc) == rows * columns + 1
+    pages, tiles, r, c, empty = (int(g) for g in m.groups())
+    assert (r, c) == (rows, columns)
+    assert tiles + empty == rows * columns and pages == tiles + 1 == len(doc)
     for k, page in enumerate(doc[1:], start=2):
-        row, column_ = divmod(k - 2, columns)
-        assert f"page {k} of {len(doc)} (row {row + 1}, column {column_ + 1})" in page.get_text()
-    names = [f"{'ABCDEFGHIJ'[r]}{c + 1}\np.{r * columns + c + 2}"
-             for r in range(rows) for c in range(columns)]
-    assert all(name in doc[0].get_text() for name in names), doc[0].get_text()
+        found = re.search(rf"page {k} of {len(doc)} \(row (\d+), column (\d+)\)", page.get_text())
+        assert found, page.get_text()
+        row, column = int(found.group(1)) - 1, int(found.group(2)) - 1
+        assert f"{'ABCDEFGHIJ'[row]}{column + 1}\np.{k}" in doc[0].get_text()
+        inside = [d for d in page.get_drawings() if d["rect"].width < width - 2 * MARGIN - 1
+                  and d["rect"].x0 > MARGIN - 1 and d["rect"].y0 > MARGIN - 1]
+        assert inside, f"page {k} has nothing of the pattern"
 
 
 @pytest.mark.parametrize("unit", [[], ["--unit", "model"]])

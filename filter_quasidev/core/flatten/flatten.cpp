@@ -132,7 +132,9 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
   r.groups = symmetric_groups(pattern, params.symmetry_tolerance);
   for (const PieceGroup& g : r.groups)
     if (g.members.size() > 1) r.log.push_back(group_line(g, r.pieces));
-  r.pattern = pattern_sheet(std::move(pattern), r.groups, sheet_gap(boxes, params.gap));
+  const bool grouped = r.groups.size() < pattern.size();  // else the sheet is the texture layout
+  r.pattern = grouped ? pattern_sheet(std::move(pattern), r.groups, sheet_gap(boxes, params.gap))
+                      : make_pattern(std::move(pattern));
   r.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   std::ostringstream total_line;

@@ -41,7 +41,8 @@ struct FlattenResult {
   double max_distortion = 0;        // percent: the largest of the pieces'
   int flattenable_pieces = 0;       // pieces without flipped or overlapping faces
   std::vector<PieceGroup> groups;   // of congruent or mirror pieces, members index `pieces`
-  Pattern pattern;                  // one piece per group, in the groups' order
+  Pattern pattern;                  // one piece per group, in the groups' order; where pieces were
+                                    // grouped laid out anew (pattern_sheet.h), else as in `uv`
   std::vector<std::string> log;     // one line per piece, then a total
   double time_ms = 0;
 };
