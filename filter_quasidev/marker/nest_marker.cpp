@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <libnest2d/libnest2d.hpp>
 #include <limits>
 #include <memory>
 
+#include "libnest2d_nfp.h"
 #include "marker_items.h"
 
 namespace qd {
@@ -16,15 +16,14 @@ namespace ln = libnest2d;
 
 constexpr double kCoordinates = 1e7;  // integer units across the fabric's width
 
-// The convex hull of a placement's outline in libnest2d's integer coordinates (clockwise,
-// closed, as it wants them).
-ln::Item hull_item(const MarkerPlacement& p, double scale) {
+// A placement's cut line in libnest2d's integer coordinates (clockwise, closed, as it wants
+// them).
+ln::Item outline_item(const MarkerPlacement& p, double scale) {
   ClipperLib::Path path;
-  for (const Eigen::Vector2d& q : p.outline)
-    path.emplace_back(std::llround(q.x() * scale), std::llround(q.y() * scale));
+  for (auto q = p.outline.rbegin(); q != p.outline.rend(); ++q)
+    path.emplace_back(std::llround(q->x() * scale), std::llround(q->y() * scale));
   path.push_back(path.front());
-  ClipperLib::Polygon shape(path);
-  return ln::Item(ln::shapelike::convexHull(shape));
+  return ln::Item(std::move(path));
 }
 
 // The placer's score of a candidate position: the marker's length with the item there, then
@@ -67,7 +66,7 @@ Marker nest_marker(const Pattern& pattern, double width, double gap) {
   double length = gap;
   std::vector<ln::Item> items;
   for (const MarkerPlacement& p : placements) {
-    items.push_back(hull_item(p, scale));
+    items.push_back(outline_item(p, scale));
     length += static_cast<double>(items.back().boundingBox().width()) / scale + gap;
   }
   const ln::Box bin(ln::Point(0, 0),

@@ -2,8 +2,8 @@
 // without overlap on a strip of fabric of a given width, the grainline along the fabric's
 // length, as short as the nesting finds. Nesting by libnest2d (Tamás Mészáros, LGPL-3.0; the
 // no-fit-polygon placer with NLopt's subplex along the no-fit polygons, first-fit selection,
-// largest piece first) on the convex hulls of the cut lines: its no-fit polygons are exact
-// only for convex shapes, so the hulls keep the pieces from overlapping.
+// largest piece first) on the cut lines themselves, their no-fit polygons exact for concave
+// pieces too (Clipper's Minkowski sum, libnest2d_nfp.h), so pieces interlock.
 #pragma once
 
 #include "marker.h"
