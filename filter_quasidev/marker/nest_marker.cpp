@@ -1,6 +1,7 @@
 #include "nest_marker.h"
 
 #include <algorithm>
+#include <boost/geometry.hpp>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -15,14 +16,33 @@ namespace {
 namespace ln = libnest2d;
 
 constexpr double kCoordinates = 1e7;  // integer units across the fabric's width
+constexpr double kTolerance = 3e-4;   // how far the nested shapes hold off the cut lines, by width
 
-// A placement's cut line in libnest2d's integer coordinates (clockwise, closed, as it wants
-// them).
-ln::Item outline_item(const MarkerPlacement& p, double scale) {
+using Ring = boost::geometry::model::ring<boost::geometry::model::d2::point_xy<double>>;
+
+// The shape libnest2d nests for a placement, in its integer coordinates (clockwise, closed, as
+// it wants them): the cut line pushed out by `tolerance` (Clipper's offset), then simplified
+// within half of it (Douglas-Peucker, Boost.Geometry), so it holds the cut line with a few
+// vertices. Fewer vertices keep the no-fit polygons (their product) and the search along them
+// fast.
+ln::Item nesting_item(const MarkerPlacement& p, double scale, double tolerance) {
+  ClipperLib::Path cut;
+  for (const Eigen::Vector2d& q : p.outline)
+    cut.emplace_back(std::llround(q.x() * scale), std::llround(q.y() * scale));
+  ClipperLib::ClipperOffset offset;
+  offset.AddPath(cut, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths pushed;
+  offset.Execute(pushed, tolerance * scale);
+  Ring ring, simple;
+  for (const ClipperLib::Path& path : pushed)
+    if (ClipperLib::Area(path) > 0) {  // the outer loop, counter-clockwise
+      for (auto q = path.rbegin(); q != path.rend(); ++q)
+        ring.emplace_back(static_cast<double>(q->X), static_cast<double>(q->Y));
+      ring.push_back(ring.front());
+    }
+  boost::geometry::simplify(ring, simple, 0.5 * tolerance * scale);
   ClipperLib::Path path;
-  for (auto q = p.outline.rbegin(); q != p.outline.rend(); ++q)
-    path.emplace_back(std::llround(q->x() * scale), std::llround(q->y() * scale));
-  path.push_back(path.front());
+  for (const auto& q : simple) path.emplace_back(std::llround(q.x()), std::llround(q.y()));
   return ln::Item(std::move(path));
 }
 
@@ -66,7 +86,7 @@ Marker nest_marker(const Pattern& pattern, double width, double gap) {
   double length = gap;
   std::vector<ln::Item> items;
   for (const MarkerPlacement& p : placements) {
-    items.push_back(outline_item(p, scale));
+    items.push_back(nesting_item(p, scale, kTolerance * width));
     length += static_cast<double>(items.back().boundingBox().width()) / scale + gap;
   }
   const ln::Box bin(ln::Point(0, 0),
