@@ -37,6 +37,7 @@
 #include "ply_writer.h"
 #include "printable_pdf.h"
 #include "report_json.h"
+#include "row_marker.h"
 #include "segment/segment.h"
 #include "segment_mesh.h"
 #include "segment_report_json.h"
@@ -200,7 +201,8 @@ void segment(const qd::cli::SegmentOptions& o) {
 }
 
 // The nested marker of the pattern on fabric of the asked width (gap: the flatten gap, else 1 %
-// of the width), with its length, efficiency and unplaced pieces on the log.
+// of the width), with its length, efficiency and unplaced pieces on the log, and the simple
+// row-by-row placement's length and efficiency to compare.
 qd::Marker marker_of(const qd::params::FlattenSettings& s, const qd::Pattern& pattern,
                      std::vector<std::string>& log) {
   const double gap = s.engine.gap > 0 ? s.engine.gap : 0.01 * s.marker_width;
@@ -209,6 +211,11 @@ qd::Marker marker_of(const qd::params::FlattenSettings& s, const qd::Pattern& pa
   line << "marker: width " << s.marker_width << ", length " << marker.length << ", efficiency "
        << 100 * marker.efficiency << " %, " << marker.placements.size() << " pieces, gap " << gap;
   log.push_back(line.str());
+  const qd::Marker rows = qd::row_marker(pattern, s.marker_width, gap);
+  std::ostringstream row_line;
+  row_line << "marker: row-by-row placement: length " << rows.length << ", efficiency "
+           << 100 * rows.efficiency << " %";
+  log.push_back(row_line.str());
   for (const std::string& label : marker.unplaced)
     log.push_back("marker: piece " + label + " is wider than the fabric, not placed");
   return marker;

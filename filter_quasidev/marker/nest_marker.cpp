@@ -1,11 +1,12 @@
 #include "nest_marker.h"
 
 #include <algorithm>
+#include <boost/geometry.hpp>
 #include <cmath>
-#include <libnest2d/libnest2d.hpp>
 #include <limits>
 #include <memory>
 
+#include "libnest2d_nfp.h"
 #include "marker_items.h"
 
 namespace qd {
@@ -15,16 +16,34 @@ namespace {
 namespace ln = libnest2d;
 
 constexpr double kCoordinates = 1e7;  // integer units across the fabric's width
+constexpr double kTolerance = 3e-4;   // how far the nested shapes hold off the cut lines, by width
 
-// The convex hull of a placement's outline in libnest2d's integer coordinates (clockwise,
-// closed, as it wants them).
-ln::Item hull_item(const MarkerPlacement& p, double scale) {
-  ClipperLib::Path path;
+using Ring = boost::geometry::model::ring<boost::geometry::model::d2::point_xy<double>>;
+
+// The shape libnest2d nests for a placement, in its integer coordinates (clockwise, closed, as
+// it wants them): the cut line pushed out by `tolerance` (Clipper's offset), then simplified
+// within half of it (Douglas-Peucker, Boost.Geometry), so it holds the cut line with a few
+// vertices. Fewer vertices keep the no-fit polygons (their product) and the search along them
+// fast.
+ln::Item nesting_item(const MarkerPlacement& p, double scale, double tolerance) {
+  ClipperLib::Path cut;
   for (const Eigen::Vector2d& q : p.outline)
-    path.emplace_back(std::llround(q.x() * scale), std::llround(q.y() * scale));
-  path.push_back(path.front());
-  ClipperLib::Polygon shape(path);
-  return ln::Item(ln::shapelike::convexHull(shape));
+    cut.emplace_back(std::llround(q.x() * scale), std::llround(q.y() * scale));
+  ClipperLib::ClipperOffset offset;
+  offset.AddPath(cut, ClipperLib::jtMiter, ClipperLib::etClosedPolygon);
+  ClipperLib::Paths pushed;
+  offset.Execute(pushed, tolerance * scale);
+  Ring ring, simple;
+  for (const ClipperLib::Path& path : pushed)
+    if (ClipperLib::Area(path) > 0) {  // the outer loop, counter-clockwise
+      for (auto q = path.rbegin(); q != path.rend(); ++q)
+        ring.emplace_back(static_cast<double>(q->X), static_cast<double>(q->Y));
+      ring.push_back(ring.front());
+    }
+  boost::geometry::simplify(ring, simple, 0.5 * tolerance * scale);
+  ClipperLib::Path path;
+  for (const auto& q : simple) path.emplace_back(std::llround(q.x()), std::llround(q.y()));
+  return ln::Item(std::move(path));
 }
 
 // The placer's score of a candidate position: the marker's length with the item there, then
@@ -67,7 +86,7 @@ Marker nest_marker(const Pattern& pattern, double width, double gap) {
   double length = gap;
   std::vector<ln::Item> items;
   for (const MarkerPlacement& p : placements) {
-    items.push_back(hull_item(p, scale));
+    items.push_back(nesting_item(p, scale, kTolerance * width));
     length += static_cast<double>(items.back().boundingBox().width()) / scale + gap;
   }
   const ln::Box bin(ln::Point(0, 0),

@@ -1,12 +1,14 @@
 // The nested marker (nest_marker.h) and the row-by-row one it is compared with (row_marker.h):
 // no overlap, inside the strip, the grain along the length, quantities and mirrored copies,
-// pieces wider than the fabric reported; and the nesting no longer than the rows.
+// pieces wider than the fabric reported; the nesting no longer than the rows, and clearly
+// shorter where pieces interlock; the exact no-fit polygon it nests with (minkowski_nfp.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
 #include <polyclipping/clipper.hpp>
 
+#include "minkowski_nfp.h"
 #include "nest_marker.h"
 #include "row_marker.h"
 
@@ -126,6 +128,81 @@ TEST(NestMarker, IsNoLongerThanRowsOnIrregularPieces) {
   EXPECT_LE(nest.length, rows.length + 1e-9);
   std::cout << "nested: length " << nest.length << ", efficiency " << nest.efficiency
             << "; rows: length " << rows.length << ", efficiency " << rows.efficiency << '\n';
+}
+
+// An L tromino: two of them, one turned half round, make a 3 x 2 rectangle.
+Outline tromino(double s) {
+  return {{0, 0}, {2 * s, 0}, {2 * s, s}, {s, s}, {s, 2 * s}, {0, 2 * s}};
+}
+
+TEST(NestMarker, InterlocksTwoLShapesIntoTheirRectangle) {
+  const double s = 5, gap = 0.01;
+  const Pattern pattern = qd::make_pattern({piece("L", tromino(s), 2)});
+  const Marker m = qd::nest_marker(pattern, 2 * s + 1, gap);
+  ASSERT_EQ(m.placements.size(), 2u);
+  expect_valid(m);
+  // Side by side their bounding boxes need 4 s; interlocked they touch along the notch: 3 s.
+  EXPECT_LT(m.length, 3.5 * s);
+}
+
+TEST(NestMarker, IsClearlyShorterThanRowsWhereLShapesInterlock) {
+  const double s = 5, gap = 0.1;
+  const Pattern pattern = qd::make_pattern({piece("L", tromino(s), 8, 4)});
+  // Two boxes across: the rows stack them, the nesting has to interlock pairs to do better.
+  const Marker nest = qd::nest_marker(pattern, 4 * s + 1, gap);
+  const Marker rows = qd::row_marker(pattern, 4 * s + 1, gap);
+  ASSERT_EQ(nest.placements.size(), 8u);
+  expect_valid(nest);
+  // Pairs in 3 x 2 rectangles against 2 x 2 boxes: a quarter shorter at best.
+  EXPECT_LE(nest.length, 0.9 * rows.length);
+  std::cout << "L shapes nested: length " << nest.length << "; rows: length " << rows.length
+            << '\n';
+}
+
+// Clipper's integer polygon of an outline scaled by 1000.
+ClipperLib::Path integer_path(const Outline& o) {
+  ClipperLib::Path p;
+  for (const auto& q : o) p.emplace_back(std::llround(q.x() * 1e3), std::llround(q.y() * 1e3));
+  return p;
+}
+
+TEST(NoFitPolygon, OfTwoUnitSquaresIsTheTwoByTwoSquareAround) {
+  const ClipperLib::Path square = integer_path(rectangle(1, 1));
+  const ClipperLib::Path nfp = qd::no_fit_polygon(square, square, {0, 0});
+  EXPECT_NEAR(ClipperLib::Area(nfp), 4e6, 1);
+  for (const auto& q : nfp) {
+    EXPECT_TRUE(std::abs(q.X) == 1000 || std::abs(q.Y) == 1000) << q.X << ' ' << q.Y;
+    EXPECT_LE(std::max(std::abs(q.X), std::abs(q.Y)), 1000);
+  }
+}
+
+// A 3 x 3 U, its notch 1 wide and 2 deep, open at the top.
+Outline u_shape() { return {{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}; }
+
+TEST(NoFitPolygon, LetsASmallSquareIntoAUsNotch) {
+  // A square of side 0.8 moved by its bottom left corner.
+  const ClipperLib::Path nfp =
+      qd::no_fit_polygon(integer_path(u_shape()), integer_path(rectangle(0.8, 0.8)), {0, 0});
+  const auto where = [&nfp](double x, double y) {
+    return ClipperLib::PointInPolygon({std::llround(x * 1e3), std::llround(y * 1e3)}, nfp);
+  };
+  EXPECT_EQ(where(1.1, 1.5), 0);   // in the notch, clear of the U: outside the polygon
+  EXPECT_EQ(where(1.1, 1), -1);    // on the notch's floor: on it
+  EXPECT_EQ(where(0.5, 0.5), 1);   // on the U: inside
+  EXPECT_EQ(where(-0.5, 1.5), 1);  // over the left arm
+  EXPECT_EQ(where(-1, 1.5), 0);    // left of it
+}
+
+TEST(NestMarker, PutsASmallSquareIntoAUsNotch) {
+  const Pattern pattern =
+      qd::make_pattern({piece("U", u_shape()), piece("square", rectangle(0.8, 0.8))});
+  const Marker m = qd::nest_marker(pattern, 3.2, 0.05);
+  ASSERT_EQ(m.placements.size(), 2u);
+  expect_valid(m);
+  Eigen::AlignedBox2d u_box, square_box;
+  for (const auto& p : m.placements)
+    for (const auto& q : p.outline) (p.piece == 0 ? u_box : square_box).extend(q);
+  EXPECT_TRUE(u_box.contains(square_box));
 }
 
 }  // namespace
