@@ -64,6 +64,15 @@ Json marker_json(const Marker& m) {
           {"unplaced", m.unplaced}};
 }
 
+// The kept marker's figures, which placement it is, and both placements' figures.
+Json marker_json(const MarkerChoice& c) {
+  Json j = marker_json(c.kept());
+  j["method"] = c.nested_kept ? "nested" : "rows";
+  j["nested"] = marker_json(c.nested);
+  j["rows"] = marker_json(c.rows);
+  return j;
+}
+
 }  // namespace
 
 std::string flatten_report_json(const FlattenResult& result, const FlattenReportContext& c) {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "cut_marker.h"
 #include "flatten/flatten_result.h"
-#include "marker.h"
 #include "options.h"
 
 namespace qd::cli {
@@ -22,7 +22,7 @@ struct FlattenReportContext {
   int faces;
   bool has_patch_ids;
   const std::vector<std::string>& notes;  // the reader's remarks (e.g. polygons triangulated)
-  const Marker* marker;                   // the nested marker; null = none asked for
+  const MarkerChoice* marker;             // the markers made; null = none asked for
   const std::vector<std::string>& log;    // the engine's log and the command's lines after it
 };
 

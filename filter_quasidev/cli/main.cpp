@@ -23,6 +23,7 @@
 
 #include "approximate/quasidev.h"
 #include "atomic_file.h"
+#include "cut_marker.h"
 #include "flatten/flatten.h"
 #include "flatten_fields.h"
 #include "flatten_report_json.h"
@@ -31,13 +32,11 @@
 #include "marker_svg.h"
 #include "mesh_problem.h"
 #include "mesh_reader.h"
-#include "nest_marker.h"
 #include "options.h"
 #include "output_mesh.h"
 #include "ply_writer.h"
 #include "printable_pdf.h"
 #include "report_json.h"
-#include "row_marker.h"
 #include "segment/segment.h"
 #include "segment_mesh.h"
 #include "segment_report_json.h"
@@ -200,25 +199,24 @@ void segment(const qd::cli::SegmentOptions& o) {
   print_outcome(o, result.warnings, result.log, mesh.notes);
 }
 
-// The nested marker of the pattern on fabric of the asked width (gap: the flatten gap, else 1 %
-// of the width), with its length, efficiency and unplaced pieces on the log, and the simple
-// row-by-row placement's length and efficiency to compare.
-qd::Marker marker_of(const qd::params::FlattenSettings& s, const qd::Pattern& pattern,
-                     std::vector<std::string>& log) {
+// The marker of the pattern on fabric of the asked width (gap: the flatten gap, else 1 % of the
+// width), with both placements' length and efficiency, the one kept and the unplaced pieces on
+// the log.
+qd::MarkerChoice marker_of(const qd::params::FlattenSettings& s, const qd::Pattern& pattern,
+                           std::vector<std::string>& log) {
   const double gap = s.engine.gap > 0 ? s.engine.gap : 0.01 * s.marker_width;
-  qd::Marker marker = qd::nest_marker(pattern, s.marker_width, gap);
-  std::ostringstream line;
-  line << "marker: width " << s.marker_width << ", length " << marker.length << ", efficiency "
-       << 100 * marker.efficiency << " %, " << marker.placements.size() << " pieces, gap " << gap;
-  log.push_back(line.str());
-  const qd::Marker rows = qd::row_marker(pattern, s.marker_width, gap);
-  std::ostringstream row_line;
-  row_line << "marker: row-by-row placement: length " << rows.length << ", efficiency "
-           << 100 * rows.efficiency << " %";
-  log.push_back(row_line.str());
-  for (const std::string& label : marker.unplaced)
+  qd::MarkerChoice c = qd::cut_marker(pattern, s.marker_width, gap);
+  for (const auto& [name, m, kept] : {std::tuple{"nested (libnest2d)", &c.nested, c.nested_kept},
+                                      std::tuple{"row by row", &c.rows, !c.nested_kept}}) {
+    std::ostringstream line;
+    line << "marker " << name << ": width " << s.marker_width << ", length " << m->length
+         << ", efficiency " << 100 * m->efficiency << " %, " << m->placements.size()
+         << " pieces, gap " << gap << (kept ? " (kept: the shorter)" : "");
+    log.push_back(line.str());
+  }
+  for (const std::string& label : c.kept().unplaced)
     log.push_back("marker: piece " + label + " is wider than the fabric, not placed");
-  return marker;
+  return c;
 }
 
 void flatten(const qd::cli::FlattenOptions& o) {
@@ -237,17 +235,17 @@ void flatten(const qd::cli::FlattenOptions& o) {
     files.emplace_back(s.pdf_file, std::move(pdf.bytes));
     log.push_back(pdf.summary);
   }
-  std::optional<qd::Marker> marker;
+  std::optional<qd::MarkerChoice> marker;
   if (s.marker_width > 0) {
     marker = marker_of(s, result.pattern, log);
     if (!s.marker_svg_file.empty()) {
       std::ostringstream svg;
-      qd::write_marker_svg(svg, *marker, result.pattern);
+      qd::write_marker_svg(svg, marker->kept(), result.pattern);
       files.emplace_back(s.marker_svg_file, svg.str());
     }
     if (!s.marker_dxf_file.empty()) {
       std::ostringstream dxf;
-      qd::write_marker_dxf(dxf, *marker, result.pattern);
+      qd::write_marker_dxf(dxf, marker->kept(), result.pattern);
       files.emplace_back(s.marker_dxf_file, dxf.str());
     }
   }

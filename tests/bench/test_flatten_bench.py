@@ -56,4 +56,4 @@ def test_patches_of_a_sheet_become_pieces_that_parse(tmp_path):
     assert sum(int(t.split()[1]) for t in texts if t.startswith("Cut ")) == 4  # every patch cut
     groups = dxf_groups(tmp_path / "p.dxf")
     layers = {v for c, v in groups if c == 8}
-    assert {"PATCH_0", "PATCH_3", "PATCH_1_NOTCHES"} <= layers
+    assert {f"PATCH_{label}" for label in labels} | {"PATCH_0_NOTCHES"} <= layers

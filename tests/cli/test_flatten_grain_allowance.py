@@ -27,7 +27,9 @@ REACH = 2  # the cut line lies at most this many allowances outside the sew line
 def flatten(tmp_path, mesh, *options, name="out"):
     """Runs the command with an SVG and a report; returns (output PLY, report, SVG root)."""
     out, report, svg = (tmp_path / f"{name}.{ext}" for ext in ("ply", "json", "svg"))
-    r = run("flatten", mesh, out, "--report", report, "--svg", svg, *options)
+    # Symmetric pieces are one pattern piece laid out anew: keep every piece where it was flattened.
+    r = run("flatten", mesh, out, "--report", report, "--svg", svg, "--symmetry-tolerance", "0",
+            *options)
     assert r.returncode == 0, r.stderr
     return out, json.loads(report.read_text()), ET.parse(svg).getroot()
 

@@ -2,6 +2,7 @@
 back (the SVG as XML, the DXF's closed polylines on a FABRIC layer), its efficiency on the log is
 a fraction in (0, 1], and marker files without a width are refused with nothing written.
 """
+import json
 import pathlib
 import re
 import sys
@@ -18,18 +19,24 @@ CONE = REPO / "sample_meshes" / "cone_panels.ply"
 
 
 def test_marker_files_and_efficiency(tmp_path):
-    svg, dxf = tmp_path / "m.svg", tmp_path / "m.dxf"
-    r = run("flatten", CONE, tmp_path / "out.ply", "--marker", "3", "--marker-svg", svg, "--marker-dxf", dxf)
+    """The marker keeps the shorter of the nesting and the rows, places every piece to cut (with
+    its quantity) and its efficiency is their cut area over the fabric it takes."""
+    svg, dxf, report = tmp_path / "m.svg", tmp_path / "m.dxf", tmp_path / "r.json"
+    r = run("flatten", CONE, tmp_path / "out.ply", "--marker", "3", "--marker-svg", svg, "--marker-dxf", dxf,
+            "--seam-allowance", "0.02", "--report", report)
     assert r.returncode == 0, r.stderr
-    match = re.search(r"marker: width 3, length ([0-9.e+-]+), efficiency ([0-9.e+-]+) %, (\d+) pieces", r.stdout)
-    assert match, r.stdout
-    length, efficiency, pieces = float(match[1]), float(match[2]) / 100, int(match[3])
-    assert 0 < efficiency <= 1
-    assert length > 0 and pieces == 3
+    rep = json.loads(report.read_text())
+    marker, pattern = rep["marker"], rep["pattern"]
+    assert marker["method"] in ("nested", "rows")
+    assert marker["length"] == min(marker["nested"]["length"], marker["rows"]["length"])
+    assert marker["placed"] == sum(p["quantity"] for p in pattern) == 3 and marker["unplaced"] == []
+    area = sum(p["cut_area"] * p["quantity"] for p in pattern)
+    assert marker["efficiency"] == pytest.approx(area / (3 * marker["length"]), rel=1e-6)
+    assert "(kept: the shorter)" in r.stdout
     root = ET.parse(svg).getroot()
     ns = "{http://www.w3.org/2000/svg}"
     assert root.tag == ns + "svg"
-    assert len(root.findall(f".//{ns}g[@class='piece']")) == pieces
+    assert len(root.findall(f".//{ns}g[@class='piece']")) == marker["placed"]
     lines = dxf.read_text().splitlines()
     layers = [lines[i + 1] for i in range(0, len(lines) - 1, 2) if lines[i].strip() == "8"]
     assert "FABRIC" in layers

@@ -128,20 +128,21 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   o.settings.unit = qd::params::PatternUnit::Centimetre;
   o.settings.engine.gap = 0.5;
   const std::vector<std::string> notes = {"polygons fan-triangulated"};
-  qd::Marker marker;
-  marker.width = 150;
-  marker.length = 80;
-  marker.efficiency = 0.75;
-  marker.unplaced = {"2"};
+  qd::MarkerChoice marker;
+  marker.rows.width = 150;
+  marker.rows.length = 80;
+  marker.rows.efficiency = 0.75;
+  marker.rows.unplaced = {"2"};
+  marker.nested.length = 90;
+  marker.nested_kept = false;
   const Json j =
       Json::parse(qd::cli::flatten_report_json(r, {o, 10, 4, true, notes, &marker, r.log}));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys,
-            (std::vector<std::string>{"input", "output", "vertices", "faces", "has_patch_ids",
-                                      "parameters", "pieces", "pattern", "max_distortion",
-                                      "flattenable_pieces", "sheet", "time_ms", "notes", "log",
-                                      "marker"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"input", "output", "vertices", "faces", "has_patch_ids",
+                                            "parameters", "pieces", "pattern", "max_distortion",
+                                            "flattenable_pieces", "sheet", "time_ms", "notes",
+                                            "log", "marker"}));
   const Json& piece = j["pieces"][0];
   EXPECT_EQ(piece["label"], "3.1");
   EXPECT_EQ(piece["component"].get<int>(), 1);
@@ -163,6 +164,8 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   EXPECT_EQ(cut["pieces"][0]["label"], "3.1");
   EXPECT_EQ(cut["difference"].get<double>(), 0.25);
   EXPECT_EQ(j["marker"]["length"].get<double>(), 80.0);
+  EXPECT_EQ(j["marker"]["method"], "rows");
+  EXPECT_EQ(j["marker"]["nested"]["length"].get<double>(), 90.0);
   EXPECT_EQ(j["marker"]["unplaced"], Json::array({"2"}));
   EXPECT_EQ(j["parameters"]["unit"], "cm");
   EXPECT_EQ(j["parameters"]["gap"].get<double>(), 0.5);

@@ -83,13 +83,17 @@ def test_pattern_files_and_parameters(meshset, tmp_path):
     svg, dxf = tmp_path / "p.svg", tmp_path / "p.dxf"
     ms = meshset(sample("patches.ply"))
     fig = ms.apply_filter(FLATTEN_FILTER, svg_file=str(svg), dxf_file=str(dxf), unit="mm",
-                          arap_max_iter=3, gap=0.5, notch_spacing=0.25, arap_tolerance=0.0)
+                          arap_max_iter=3, gap=0.5, notch_spacing=0.25, arap_tolerance=0.0,
+                          seam_allowance=0.05, symmetry_tolerance=0.0)
     assert max(fig["piece_iterations"]) <= 3
     root = ET.parse(svg).getroot()
     assert root.get("width").endswith("mm")
-    assert len([g for g in root.iter("{http://www.w3.org/2000/svg}g")
-                if (g.get("id") or "").startswith("piece-")]) == fig["pieces"]
-    assert dxf.read_text().count("POLYLINE") == fig["pieces"]
+    groups = [g for g in root.iter("{http://www.w3.org/2000/svg}g")
+              if (g.get("id") or "").startswith("piece-")]
+    assert len(groups) == fig["pieces"]
+    assert all({p.get("class") for p in g.iter("{http://www.w3.org/2000/svg}path")} >= {"cut", "sew", "grain"}
+               for g in groups)
+    assert dxf.read_text().count("POLYLINE") == 2 * fig["pieces"]  # cut line and sew line
 
 
 def test_failure_changes_nothing_and_writes_no_file(pymeshlab_with_plugin, meshset, tmp_path):

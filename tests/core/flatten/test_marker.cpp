@@ -9,6 +9,7 @@
 #include <polyclipping/clipper.hpp>
 
 #include "minkowski_nfp.h"
+#include "cut_marker.h"
 #include "nest_marker.h"
 #include "row_marker.h"
 
@@ -203,6 +204,19 @@ TEST(NestMarker, PutsASmallSquareIntoAUsNotch) {
   for (const auto& p : m.placements)
     for (const auto& q : p.outline) (p.piece == 0 ? u_box : square_box).extend(q);
   EXPECT_TRUE(u_box.contains(square_box));
+}
+
+// The marker written keeps the placement with more pieces placed, then the shorter one.
+TEST(CutMarker, KeepsTheShorterOfNestingAndRows) {
+  for (const double width : {7.5, 12.0, 15.0, 20.0}) {
+    const qd::MarkerChoice c = qd::cut_marker(irregular(), width, 0.1);
+    const size_t nested = c.nested.placements.size(), rows = c.rows.placements.size();
+    if (nested == rows)
+      EXPECT_EQ(c.kept().length, std::min(c.nested.length, c.rows.length)) << width;
+    else
+      EXPECT_EQ(c.kept().placements.size(), std::max(nested, rows)) << width;
+    expect_valid(c.kept());
+  }
 }
 
 }  // namespace
