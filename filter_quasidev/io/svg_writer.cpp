@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "io/piece_marks.h"
+#include "io/xml_text.h"
 
 namespace qd {
 
@@ -15,23 +16,6 @@ namespace {
 
 // Sizes of the drawing's furniture, as fractions of the pattern's longer side.
 constexpr double kMargin = 0.04, kStroke = 0.002, kNotch = 0.012, kFont = 0.025, kScaleBar = 0.25;
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
-}
 
 // The largest 1, 2 or 5 times a power of ten not above x (> 0).
 double round_length(double x) {
@@ -79,7 +63,7 @@ void write_grainline(std::ostream& out, const PatternPiece& piece, const Page& p
 
 void write_piece(std::ostream& out, const PatternPiece& piece, const Page& page, double notch,
                  double font, const std::string& unit) {
-  out << "<g id=\"piece-" << escaped(piece.label) << "\">\n<path class=\"cut\" d=\"";
+  out << "<g id=\"piece-" << xml_escaped(piece.label) << "\">\n<path class=\"cut\" d=\"";
   write_loops(out, piece.cut_outlines, page);
   out << "\"/>\n";
   if (piece.cut_outlines != piece.outlines) {
@@ -102,7 +86,7 @@ void write_piece(std::ostream& out, const PatternPiece& piece, const Page& page,
   for (size_t i = 0; i < lines.size(); ++i)
     out << "<text x=\"" << page.x(piece.label_at) << "\" y=\""
         << top + 1.2 * size * static_cast<double>(i) << "\" font-size=\"" << size
-        << "\" stroke=\"none\" fill=\"black\">" << escaped(lines[i]) << "</text>\n";
+        << "\" stroke=\"none\" fill=\"black\">" << xml_escaped(lines[i]) << "</text>\n";
   out << "</g>\n";
 }
 
@@ -140,7 +124,7 @@ void write_svg(std::ostream& out, const Pattern& pattern, const std::string& uni
   out << "<g id=\"scale-bar\">\n<path d=\"M " << x << ' ' << y - font / 2 << " L " << x << ' ' << y
       << " L " << x + bar << ' ' << y << " L " << x + bar << ' ' << y - font / 2 << "\"/>\n"
       << "<text x=\"" << x + bar / 2 << "\" y=\"" << y + font
-      << "\" stroke=\"none\" fill=\"black\">" << escaped(length.str())
+      << "\" stroke=\"none\" fill=\"black\">" << xml_escaped(length.str())
       << "</text>\n</g>\n</g>\n</svg>\n";
   out.imbue(previous);
 }

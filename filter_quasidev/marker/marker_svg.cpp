@@ -3,28 +3,13 @@
 #include <algorithm>
 #include <locale>
 
+#include "io/xml_text.h"
+
 namespace qd {
 
 namespace {
 
 constexpr double kMargin = 0.02, kStroke = 0.002, kFont = 0.03;  // of the fabric's width
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '&')
-      out += "&amp;";
-    else if (c == '<')
-      out += "&lt;";
-    else if (c == '>')
-      out += "&gt;";
-    else if (c == '"')
-      out += "&quot;";
-    else
-      out += c;
-  }
-  return out;
-}
 
 }  // namespace
 
@@ -48,7 +33,7 @@ void write_marker_svg(std::ostream& out, const Marker& marker, const Pattern& pa
       << marker.length << "\" height=\"" << marker.width << "\" stroke=\"blue\"/>\n";
   for (const MarkerPlacement& p : marker.placements) {
     const std::string label =
-        escaped(pattern.pieces[static_cast<size_t>(p.piece)].label) + (p.mirrored ? "m" : "");
+        xml_escaped(pattern.pieces[static_cast<size_t>(p.piece)].label) + (p.mirrored ? "m" : "");
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     out << "<g class=\"piece\" id=\"piece-" << label << "\">\n<path d=\"";
     for (size_t i = 0; i < p.outline.size(); ++i) {
