@@ -108,8 +108,7 @@ std::vector<Param<S>> declare() {
              "fixed: vertices shared by two patches do not move (the paper); free: all patches are "
              "solved together and seam vertices move too, staying shared so no crack opens.")
           .alias("--seams"),
-      choice("segment_first", field(&S::engine, &P::segment_first), kSegmentFirst,
-             "Segment first",
+      choice("segment_first", field(&S::engine, &P::segment_first), kSegmentFirst, "Segment first",
              "A mesh without patch ids: auto splits it into nearly developable patches first "
              "(segmentation, largest fit error 30 degrees) and solves them with free seams when it "
              "is closed or no one Gauss-image curve fits it; never keeps it one patch; always "

@@ -39,14 +39,14 @@ std::vector<Param<S>> declare() {
            "Width of the seam allowance: the cut line runs this far outside the sew line, with "
            "mitred corners cut off where they would stick out; 0 = cut on the sew line."),
       text<S>(
-          "grain_direction", "X,Y,Z", Unit::None,
+          "grain_direction", "X,Y,Z|longest", Unit::None,
           [](const S& s) { return direction_text(s.engine.grain_up); },
           [](S& s, const std::string& t) { s.engine.grain_up = parse_direction(t); },
           "Grain direction (3D)",
           "The 3D direction the grainlines follow, e.g. the mesh's up axis 0,1,0: each piece's "
           "grainline is this direction as its flattening maps it; a piece it crosses at nearly a "
-          "right angle takes its longest axis instead. The pieces are turned so their grainlines "
-          "are parallel."),
+          "right angle takes its longest axis instead. longest: every piece's longest axis (for "
+          "sleeves held out sideways). The pieces are turned so their grainlines are parallel."),
       real("symmetry_tolerance", field(&S::engine, &P::symmetry_tolerance), Unit::Percent,
            closed(0, 100), "Symmetry tolerance",
            "Pieces that are congruent or mirror images (left and right sleeves) within this share "

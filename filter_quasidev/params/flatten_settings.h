@@ -22,8 +22,11 @@ struct FlattenSettings {
   Paper paper = Paper::A4;
 };
 
-// "X,Y,Z" of a direction, and back; parse_direction throws ParamError unless the text is three
-// finite numbers, not all 0.
+// The grain direction's value for "each piece's longest axis" (a zero direction).
+inline const char* const kLongestAxis = "longest";
+
+// "X,Y,Z" of a direction ("longest" for 0,0,0), and back; parse_direction throws ParamError
+// unless the text is "longest" or three finite numbers, not all 0.
 std::string direction_text(const Eigen::Vector3d& d);
 Eigen::Vector3d parse_direction(const std::string& text);
 

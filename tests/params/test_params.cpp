@@ -101,4 +101,15 @@ TEST(Params, EngineParamsPutTheTolerancesInModelUnits) {
   EXPECT_NO_THROW(qd::params::engine_params({}, 0.1, {}));
 }
 
+TEST(Params, GrainDirectionIsThreeNumbersOrLongest) {
+  using qd::params::direction_text;
+  using qd::params::parse_direction;
+  EXPECT_EQ(parse_direction(" 0, 0.5 ,2"), Eigen::Vector3d(0, 0.5, 2));
+  EXPECT_EQ(direction_text(Eigen::Vector3d(0, 0.5, 2)), "0,0.5,2");
+  EXPECT_TRUE(parse_direction("longest").isZero());
+  EXPECT_EQ(direction_text(Eigen::Vector3d::Zero()), "longest");
+  for (const char* bad : {"0,0,0", "1,2", "1,2,3,4", "x,1,2", "1,,2", "", "nan,1,0"})
+    EXPECT_THROW(parse_direction(bad), qd::params::ParamError) << bad;
+}
+
 }  // namespace

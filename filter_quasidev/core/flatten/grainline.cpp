@@ -13,6 +13,7 @@ Eigen::Vector2d principal_axis(const Eigen::MatrixX2d& points) {
 
 Eigen::Vector2d grain_direction(const Positions& V, const Triangles& F, const Eigen::MatrixX2d& uv,
                                 const Eigen::Vector3d& up) {
+  if (up.isZero()) return principal_axis(uv);
   const Eigen::Vector3d unit_up = up.normalized();
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   double area = 0;

@@ -27,6 +27,21 @@ TEST(Grainline, CylinderPanelGrainRunsAlongItsAxis) {
   EXPECT_NEAR((grain - turn(0.7) * Eigen::Vector2d::UnitY()).norm(), 0, 1e-3);
 }
 
+// A zero direction asks for the longest axis whatever way up points: a panel 2 wide (sweep 2 of
+// radius 1) and 3 tall gets its grain along the axis; 6 wide and 3 tall, across it.
+TEST(Grainline, ZeroDirectionTakesEveryPiecesLongestAxis) {
+  for (const auto& [sweep, along] : {std::pair{2.0, true}, std::pair{6.0, false}}) {
+    const qd::test::GridMesh panel = qd::test::cylinder(24, 6, 1, 3, sweep);
+    Eigen::MatrixX2d uv(panel.V.rows(), 2);
+    for (int v = 0; v < uv.rows(); ++v)
+      uv.row(v) =
+          Eigen::Vector2d(std::atan2(panel.V(v, 1), panel.V(v, 0)), panel.V(v, 2)).transpose();
+    const Eigen::Vector2d grain =
+        qd::grain_direction(panel.V, panel.F, uv, Eigen::Vector3d::Zero());
+    EXPECT_NEAR(std::abs(grain.y()), along ? 1 : 0, 1e-6) << sweep;
+  }
+}
+
 TEST(Grainline, HorizontalDiscFallsBackToItsLongestAxis) {
   // An elliptic disc in the plane z = 0, three times longer along x, laid out turned by 0.5.
   qd::test::GridMesh disc = qd::test::grid_mesh(24, 4, true, [](int i, int j) {
