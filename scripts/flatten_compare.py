@@ -269,7 +269,8 @@ def tables(data: dict) -> str:
     return "\n".join(out) + "\n"
 
 
-def picture(mesh: Path, svg: Path, out: Path, size: tuple[int, int] = (1200, 560)) -> None:
+def picture(mesh: Path, svg: Path, out: Path, size: tuple[int, int] = (1200, 560),
+            caption: str = "quasidev flatten --svg: pieces at true scale, notches, scale bar") -> None:
     """The 3D mesh in patch colours beside its SVG pattern, pieces filled in the same colours."""
     if not shutil.which("rsvg-convert"):
         raise SystemExit("rsvg-convert missing (Debian package librsvg2-bin; scripts/setup.sh installs it)")
@@ -299,7 +300,7 @@ def picture(mesh: Path, svg: Path, out: Path, size: tuple[int, int] = (1200, 560
         canvas.paste(right, (panel[0] + 10, 30 + (panel[1] - right.height) // 2))
     draw = ImageDraw.Draw(canvas)
     for x, text in ((panel[0] / 2, "3D, after quasidev approximate (colour = patch)"),
-                    (panel[0] * 1.5, "quasidev flatten --svg: pieces at true scale, notches, scale bar")):
+                    (panel[0] * 1.5, caption)):
         draw.text((x, 15), text, fill=(0, 0, 0), font=render.font(16), anchor="mm")
     canvas.save(out)
 

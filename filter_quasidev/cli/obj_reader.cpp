@@ -147,6 +147,9 @@ MeshFile parse_obj(std::string_view bytes) {
       const auto id = id_of.find(group);
       if (id != id_of.end() && !name.empty()) mesh.patch_names[id->second] = name;
     }
+    // Written to the output PLY as its comments, so the names reach the next job (ply_mesh.h).
+    for (const auto& [id, name] : mesh.patch_names)
+      mesh.comments.push_back("patch " + std::to_string(id) + " " + name);
   }
   if (scan.ignored > 0)
     mesh.notes.push_back(std::to_string(scan.ignored) + " OBJ line/point statement(s) ignored");

@@ -19,6 +19,8 @@ TEST(PanelNames, ObjGroupsNameTheirPatches) {
       "g unused\n");
   EXPECT_EQ(m.patch, (std::vector<int>{0, 1, 2, 1}));
   EXPECT_EQ(m.patch_names, (std::map<int, std::string>{{1, "back panel"}, {2, "front"}}));
+  // The names become the PLY comments the output carries, which name the patches when read back.
+  EXPECT_EQ(m.comments, (std::vector<std::string>{"patch 1 back panel", "patch 2 front"}));
 }
 
 TEST(PanelNames, PlyCommentsNameTheirPatchesAndAreKept) {
