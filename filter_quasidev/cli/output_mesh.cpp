@@ -52,12 +52,14 @@ void add_colors(PlyElement& e, const std::vector<std::array<unsigned char, 3>>& 
     for (std::size_t i = 0; i < colors.size(); ++i) c[i] = colors[i][k];
     e.properties.push_back(scalar_property(names[k], ScalarType::UInt8, c));
   }
-  e.properties.push_back(scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
+  e.properties.push_back(
+      scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
 }
 
 // A list property (uchar counts) of `type` with one list per row.
 template <typename T, std::size_t N>
-PlyProperty list_property(const std::string& name, ScalarType type, const std::vector<std::array<T, N>>& rows) {
+PlyProperty list_property(const std::string& name, ScalarType type,
+                          const std::vector<std::array<T, N>>& rows) {
   PlyProperty p;
   p.name = name;
   p.is_list = true;
@@ -80,10 +82,12 @@ bool fits(const std::vector<T>& values, std::size_t count) {
 
 // The input's extra properties, without those the fields replace: `quality` when quality is
 // written, the colour channels when colours are, `texcoord` when texture coordinates are.
-std::vector<PlyProperty> kept(const std::vector<PlyProperty>& extra, bool quality, bool colors, bool texcoords) {
+std::vector<PlyProperty> kept(const std::vector<PlyProperty>& extra, bool quality, bool colors,
+                              bool texcoords) {
   std::vector<PlyProperty> out;
   for (const PlyProperty& p : extra)
-    if (!(quality && p.name == "quality") && !(colors && is_color(p.name)) && !(texcoords && p.name == "texcoord"))
+    if (!(quality && p.name == "quality") && !(colors && is_color(p.name)) &&
+        !(texcoords && p.name == "texcoord"))
       out.push_back(p);
   return out;
 }
@@ -100,12 +104,13 @@ PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
   for (std::size_t k = 0; k < 3; ++k) {
     std::vector<double> c(nv);
     for (std::size_t i = 0; i < nv; ++i) c[i] = positions[i][k];
-    e.properties.push_back(scalar_property(std::string(1, "xyz"[k]),
-                                           moved ? ScalarType::Float64 : mesh.position_types[k], c));
+    e.properties.push_back(scalar_property(
+        std::string(1, "xyz"[k]), moved ? ScalarType::Float64 : mesh.position_types[k], c));
   }
   const bool normals = moved && has_normals(mesh.vertex_extra);
   std::vector<std::array<double, 3>> n;
-  for (const PlyProperty& p : kept(mesh.vertex_extra, !fields.quality.empty(), !fields.colors.empty(), false)) {
+  for (const PlyProperty& p :
+       kept(mesh.vertex_extra, !fields.quality.empty(), !fields.colors.empty(), false)) {
     e.properties.push_back(p);
     const int axis = p.name == "nx" ? 0 : p.name == "ny" ? 1 : p.name == "nz" ? 2 : -1;
     if (axis < 0 || p.is_list || !normals) continue;
@@ -119,17 +124,31 @@ PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
   return e;
 }
 
+// Index of the face property called `name` among the input's, or -1.
+int mesh_face_column(const MeshFile& mesh, const std::string& name) {
+  for (std::size_t i = 0; i < mesh.face_extra.size(); ++i)
+    if (mesh.face_extra[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
 PlyElement face_element(const MeshFile& mesh, const OutputFields& fields) {
   const std::size_t nf = mesh.triangles.size();
-  if (!fits(fields.texcoords, nf) || !fits(fields.face_quality, nf) || !fits(fields.face_colors, nf))
+  if (!fits(fields.texcoords, nf) || !fits(fields.face_quality, nf) ||
+      !fits(fields.face_colors, nf))
     throw Error("internal error: output fields do not have one value per face");
   PlyElement e;
   e.name = "face";
   e.count = nf;
   e.properties.push_back(list_property("vertex_indices", ScalarType::Int32, mesh.triangles));
   const std::vector<PlyProperty> extra =
-      kept(mesh.face_extra, !fields.face_quality.empty(), !fields.face_colors.empty(), !fields.texcoords.empty());
+      kept(mesh.face_extra, !fields.face_quality.empty(), !fields.face_colors.empty(),
+           !fields.texcoords.empty());
   e.properties.insert(e.properties.end(), extra.begin(), extra.end());
+  // Patch ids that no face property holds (OBJ groups) are written as `patch`, so they survive.
+  if (!mesh.patch.empty() && mesh_face_column(mesh, "patch") < 0 &&
+      mesh_face_column(mesh, "quality") < 0)
+    e.properties.push_back(scalar_property(
+        "patch", ScalarType::Int32, std::vector<double>(mesh.patch.begin(), mesh.patch.end())));
   if (!fields.texcoords.empty())
     e.properties.push_back(list_property("texcoord", ScalarType::Float32, fields.texcoords));
   if (!fields.face_quality.empty())

@@ -174,6 +174,15 @@ def test_obj_groups_become_patches(tmp_path):
     assert reports[0]["faces"] == reports[1]["faces"]
     assert sorted(p["faces"] for p in reports[0]["patches"]) == \
         sorted(p["faces"] for p in reports[1]["patches"])
+    # The output of the OBJ keeps its patch ids (a face `patch`) and its groups' names (comments),
+    # so the next job sees the same panels: approximating it again finds the same patches.
+    again = tmp_path / "again.json"
+    r = run(tmp_path / "o1.ply", tmp_path / "o2.ply", "--report", again, "--quiet")
+    assert r.returncode == 0, r.stderr
+    assert [(p["id"], p["faces"]) for p in json.loads(again.read_text())["patches"]] == \
+        [(p["id"], p["faces"]) for p in reports[1]["patches"]]
+    header = (tmp_path / "o1.ply").read_bytes().split(b"end_header")[0].decode()
+    assert "property int patch" in header
 
 
 def test_quiet_prints_nothing_and_polygons_are_noted(tmp_path):
