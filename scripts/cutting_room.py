@@ -3,7 +3,8 @@
 docs/tutorials/cutting-room.md, the README's pattern picture, and the marker table docs/marker.md.
 
 1. On the GCD tee (an OBJ with named panels, in cm): `quasidev approximate`, then `quasidev
-   flatten --unit cm --seam-allowance 1` with every pattern file (SVG, AAMA DXF, printable PDF,
+   flatten --unit cm --seam-allowance 1 --grain-direction longest` (its sleeves are held out
+   sideways, so their grain runs along their longest axis, not up) with every pattern file (SVG, AAMA DXF, printable PDF,
    marker SVG on 150 cm fabric); renders docs/garment_pattern.png (the 3D garment beside its
    pattern), docs/tutorials/cutting_room_marker.png and docs/tutorials/cutting_room_pdf.png (the
    PDF's assembly map and one tile page), and writes the commands' logs to docs/marker.json.
@@ -78,6 +79,7 @@ def tutorial(quasidev: Path, meshes: Path, work: Path, out: Path) -> dict:
                                              "marker.dxf", "flat.json")}
     approximate = [quasidev, "approximate", obj, dev]
     flatten = [quasidev, "flatten", dev, flat, "--unit", "cm", "--seam-allowance", ALLOWANCE,
+               "--grain-direction", "longest",
                "--svg-file", files["pattern.svg"], "--dxf-file", files["pattern.dxf"], "--dxf-style", "aama",
                "--pdf-file", files["pattern.pdf"], "--paper", "a4",
                "--marker-width", 150, "--marker-svg-file", files["marker.svg"],

@@ -54,8 +54,9 @@ class Mesh:
             self.vcolor = np.stack([np.asarray(ply.get("vertex", c), dtype=np.float64)
                                     for c in ("red", "green", "blue")], axis=1) / 255.0
         self.vquality = np.asarray(ply.get("vertex", "quality"), np.float64) if ply.has("vertex", "quality") else None
-        self.patch = (np.asarray(ply.get("face", "quality"), np.float64)[np.array(owner, dtype=np.int64)]
-                      if ply.has("face", "quality") else None)
+        patch = next((p for p in ("quality", "patch") if ply.has("face", p)), None)  # as the command reads
+        self.patch = (np.asarray(ply.get("face", patch), np.float64)[np.array(owner, dtype=np.int64)]
+                      if patch else None)
 
     def face_normals(self) -> tuple[np.ndarray, np.ndarray]:
         """Unit face normals and face areas."""

@@ -45,8 +45,9 @@ std::vector<Param<S>> declare() {
           "Grain direction (3D)",
           "The 3D direction the grainlines follow, e.g. the mesh's up axis 0,1,0: each piece's "
           "grainline is this direction as its flattening maps it; a piece it crosses at nearly a "
-          "right angle takes its longest axis instead. longest: every piece's longest axis (for "
-          "sleeves held out sideways). The pieces are turned so their grainlines are parallel."),
+          "right angle takes its longest axis instead. longest: every piece's longest axis, "
+          "pointing the way y leans on it (for sleeves held out sideways). The pieces are turned "
+          "so their grainlines are parallel."),
       real("symmetry_tolerance", field(&S::engine, &P::symmetry_tolerance), Unit::Percent,
            closed(0, 100), "Symmetry tolerance",
            "Pieces that are congruent or mirror images (left and right sleeves) within this share "

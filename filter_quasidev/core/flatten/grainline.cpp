@@ -13,8 +13,8 @@ Eigen::Vector2d principal_axis(const Eigen::MatrixX2d& points) {
 
 Eigen::Vector2d grain_direction(const Positions& V, const Triangles& F, const Eigen::MatrixX2d& uv,
                                 const Eigen::Vector3d& up) {
-  if (up.isZero()) return principal_axis(uv);
-  const Eigen::Vector3d unit_up = up.normalized();
+  const bool longest = up.isZero();  // the longest axis, pointing the way +y leans
+  const Eigen::Vector3d unit_up = longest ? Eigen::Vector3d::UnitY() : up.normalized();
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   double area = 0;
   for (int f = 0; f < F.rows(); ++f) {
@@ -32,7 +32,7 @@ Eigen::Vector2d grain_direction(const Positions& V, const Triangles& F, const Ei
     sum += a * flat * gram.inverse() * (edges.transpose() * unit_up);
     area += a;
   }
-  if (area > 0 && sum.norm() >= kWeakGrain * area) return sum.normalized();
+  if (!longest && area > 0 && sum.norm() >= kWeakGrain * area) return sum.normalized();
   const Eigen::Vector2d axis = principal_axis(uv);
   return axis.dot(sum) < 0 ? Eigen::Vector2d(-axis) : axis;
 }

@@ -21,8 +21,8 @@ constexpr double kWeakGrain = 0.3;  // the mapped up direction per unit area: si
 Eigen::Vector2d principal_axis(const Eigen::MatrixX2d& points);
 
 // Unit grain direction on the flat piece (V, F its 3D faces, uv its flat positions per vertex).
-// up = 0: the principal axis, for garments whose pieces do not hang along one axis (sleeves
-// of a T-pose run across the body's up direction).
+// up = 0: the principal axis, pointing the way +y leans on the piece, for garments whose
+// pieces do not hang along one axis (sleeves of a T-pose run across the body's up direction).
 Eigen::Vector2d grain_direction(const Positions& V, const Triangles& F, const Eigen::MatrixX2d& uv,
                                 const Eigen::Vector3d& up);
 
