@@ -12,7 +12,8 @@ docs/tutorials/cutting-room.md, the README's pattern picture, and the marker tab
    nested on fabric 110 and 150 cm wide; the nested marker (libnest2d) against the row-by-row
    placement, from the JSON report.
 
-Usage: QD_SHARED_MESHES=../shared/meshes .venv/bin/python scripts/cutting_room.py [--out docs]
+Usage: QD_SHARED_MESHES=../shared/meshes .venv/bin/python scripts/cutting_room.py [--out DIR]
+       [--tutorial-mesh OBJ] [--garments NAME ...]
 """
 from __future__ import annotations
 
@@ -71,9 +72,8 @@ def pdf_png(pdf: Path, out: Path, pages: list[int]) -> None:
     canvas.save(out)
 
 
-def tutorial(quasidev: Path, meshes: Path, work: Path, out: Path) -> dict:
-    """The tutorial's commands on the GCD tee; returns their logs and reports."""
-    obj = meshes / "obj" / f"{TUTORIAL_MESH}.obj"
+def tutorial(quasidev: Path, obj: Path, work: Path, out: Path) -> dict:
+    """The tutorial's commands on the garment `obj`; returns their logs and reports."""
     dev, flat = work / "tee_dev.ply", work / "tee_flat.ply"
     files = {k: work / f"tee_{k}" for k in ("pattern.svg", "pattern.dxf", "pattern.pdf", "marker.svg",
                                              "marker.dxf", "flat.json")}
@@ -98,9 +98,9 @@ def tutorial(quasidev: Path, meshes: Path, work: Path, out: Path) -> dict:
     return logs
 
 
-def marker_rows(quasidev: Path, meshes: Path, work: Path) -> list[dict]:
+def marker_rows(quasidev: Path, meshes: Path, garments: list[str], work: Path) -> list[dict]:
     rows = []
-    for name in GARMENTS:
+    for name in garments:
         dev = work / f"{name}.dev.ply"
         run(quasidev, "approximate", meshes / f"{name}.ply", dev, "--quiet")
         for width in WIDTHS:
@@ -145,15 +145,21 @@ def main() -> None:
     ap.add_argument("--meshes", type=Path, default=Path(os.environ.get("QD_SHARED_MESHES", "")),
                     help="the shared meshes' folder (default: $QD_SHARED_MESHES)")
     ap.add_argument("--out", type=Path, default=ROOT / "docs")
+    ap.add_argument("--tutorial-mesh", type=Path,
+                    help=f"the tutorial's garment (default: MESHES/obj/{TUTORIAL_MESH}.obj)")
+    ap.add_argument("--garments", nargs="*", default=GARMENTS, help="the marker table's garments (MESHES/NAME.ply)")
     args = ap.parse_args()
-    if not (args.meshes / f"{TUTORIAL_MESH}.ply").exists():
-        raise SystemExit("needs the shared meshes: set QD_SHARED_MESHES or pass --meshes")
+    obj = args.tutorial_mesh or args.meshes / "obj" / f"{TUTORIAL_MESH}.obj"
+    missing = [p for p in [obj, *(args.meshes / f"{g}.ply" for g in args.garments)] if not p.exists()]
+    if missing:
+        raise SystemExit(f"missing {', '.join(map(str, missing))}: set QD_SHARED_MESHES or pass --meshes")
     if not shutil.which("rsvg-convert"):
         raise SystemExit("rsvg-convert missing (Debian package librsvg2-bin; scripts/setup.sh installs it)")
     with tempfile.TemporaryDirectory() as tmp:
         work = Path(tmp)
-        logs = tutorial(args.quasidev, args.meshes, work, args.out)
-        rows = marker_rows(args.quasidev, args.meshes, work)
+        (args.out / "tutorials").mkdir(parents=True, exist_ok=True)
+        logs = tutorial(args.quasidev, obj, work, args.out)
+        rows = marker_rows(args.quasidev, args.meshes, args.garments, work)
     (args.out / "marker.md").write_text(table(rows))
     (args.out / "marker.json").write_text(json.dumps({"tutorial": logs, "markers": rows}, indent=1) + "\n")
     print(table(rows))
