@@ -39,6 +39,7 @@ if [[ "$known_targets" == *qd_core_tests* ]]; then targets+=(qd_core_tests); fi
 cmake --build "$build" -j"${QD_JOBS:-2}" --target "${targets[@]}"
 export ASAN_OPTIONS=halt_on_error=1:abort_on_error=1:detect_leaks=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+export LSAN_OPTIONS="suppressions=$here/lsan_suppressions.txt:print_suppressions=0"
 failed=()
 step() {  # runs one check, remembers a failure, goes on with the others
   echo "== $*"

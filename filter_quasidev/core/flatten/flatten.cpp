@@ -130,6 +130,10 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
     r.flattenable_pieces += r.pieces.back().flattenable ? 1 : 0;
   }
   r.groups = symmetric_groups(pattern, params.symmetry_tolerance);
+  if (params.symmetry_tolerance > 0 && pattern.size() > kMaxSymmetryPieces)
+    r.log.push_back("symmetric pieces not sought: " + std::to_string(pattern.size()) +
+                    " pieces, more than " + std::to_string(kMaxSymmetryPieces) +
+                    " (each would be compared with every other)");
   for (const PieceGroup& g : r.groups)
     if (g.members.size() > 1) r.log.push_back(group_line(g, r.pieces));
   const bool grouped = r.groups.size() < pattern.size();  // else the sheet is the texture layout

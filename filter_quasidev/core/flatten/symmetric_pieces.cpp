@@ -193,11 +193,16 @@ Fit best_fit(const Shape& rep, const Shape& member, double limit) {
 
 std::vector<PieceGroup> symmetric_groups(const std::vector<PatternPiece>& pieces,
                                          double tolerance) {
+  if (pieces.size() > kMaxSymmetryPieces) tolerance = 0;
+  std::vector<PieceGroup> groups;
+  if (tolerance <= 0) {
+    for (int m = 0; m < static_cast<int>(pieces.size()); ++m) groups.push_back({{m}, {0}, 0});
+    return groups;
+  }
   std::vector<Shape> shapes;
   for (const PatternPiece& p : pieces) shapes.push_back(shape_of(p));
   // Each piece in turn joins the representative it fits best (the smallest difference, the
   // earliest on a tie), or else represents a new group.
-  std::vector<PieceGroup> groups;
   for (int m = 0; m < static_cast<int>(pieces.size()); ++m) {
     PieceGroup* chosen = nullptr;
     Fit chosen_fit;

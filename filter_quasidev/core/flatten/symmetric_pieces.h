@@ -35,7 +35,10 @@ struct PieceGroup {
 // tolerance: percent of a piece's size (the diagonal of its bounding box); 0 = every piece alone.
 // Every piece is in exactly one group: in index order, each piece joins the earlier
 // representative it fits with the smallest difference, or else represents a new group. Groups
-// come in order of their representative; deterministic.
+// come in order of their representative; deterministic. Above kMaxSymmetryPieces pieces every
+// piece is alone: each piece is compared with every group, so the time grows with the square
+// of the count (100,000 one-triangle patches would take hours), and a pattern has tens.
+constexpr size_t kMaxSymmetryPieces = 1000;
 std::vector<PieceGroup> symmetric_groups(const std::vector<PatternPiece>& pieces, double tolerance);
 
 }  // namespace qd
