@@ -129,6 +129,15 @@ TEST(SymmetricPieces, ZeroToleranceLeavesEveryPieceAlone) {
   EXPECT_EQ(g[1].mirrored, (std::vector<char>{0}));
 }
 
+// Above the bound every piece stays alone (the search is quadratic); at it, copies still group.
+TEST(SymmetricPieces, ManyPiecesAreLeftAloneAboveTheBound) {
+  const std::vector<PatternPiece> at(qd::kMaxSymmetryPieces, piece({{{0, 0}, {1, 0}, {0, 2}}}));
+  EXPECT_EQ(qd::symmetric_groups(at, 1).size(), 1u);
+  std::vector<PatternPiece> above = at;
+  above.push_back(at.front());
+  EXPECT_EQ(qd::symmetric_groups(above, 1).size(), above.size());
+}
+
 TEST(SymmetricPieces, ThreeCopiesAreOneGroupInIndexOrder) {
   const Outline o = blob();
   const PatternPiece other =
