@@ -7,6 +7,8 @@
 #include <sstream>
 #include <utility>
 
+#include "flatten/outline_measures.h"
+
 namespace qd {
 
 namespace {
@@ -52,12 +54,7 @@ std::pair<double, double> crossings(const std::vector<Outline>& loops, const Eig
 
 }  // namespace
 
-Eigen::AlignedBox2d cut_box(const PatternPiece& piece) {
-  Eigen::AlignedBox2d box;
-  for (const Outline& loop : piece.cut_outlines)
-    for (const Eigen::Vector2d& p : loop) box.extend(p);
-  return box;
-}
+Eigen::AlignedBox2d cut_box(const PatternPiece& piece) { return outline_box(piece.cut_outlines); }
 
 Segment2 grainline(const PatternPiece& piece) {
   double low = std::numeric_limits<double>::infinity(), high = -low;
@@ -93,9 +90,7 @@ std::vector<std::string> label_lines(const PatternPiece& piece, const std::strin
 
 double label_height(const PatternPiece& piece, const std::vector<std::string>& lines,
                     double height) {
-  Eigen::AlignedBox2d box;
-  for (const Outline& outline : piece.outlines)
-    for (const Eigen::Vector2d& at : outline) box.extend(at);
+  const Eigen::AlignedBox2d box = outline_box(piece.outlines);
   size_t longest = 1;
   for (const std::string& line : lines) longest = std::max(longest, characters(line));
   const double fit_x = 0.8 * box.sizes().x() / (0.6 * static_cast<double>(longest));

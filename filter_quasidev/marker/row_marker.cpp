@@ -2,19 +2,10 @@
 
 #include <algorithm>
 
+#include "flatten/outline_measures.h"
 #include "marker_items.h"
 
 namespace qd {
-
-namespace {
-
-Eigen::AlignedBox2d box_of(const Outline& outline) {
-  Eigen::AlignedBox2d box;
-  for (const Eigen::Vector2d& q : outline) box.extend(q);
-  return box;
-}
-
-}  // namespace
 
 Marker row_marker(const Pattern& pattern, double width, double gap) {
   Marker marker;
@@ -22,11 +13,11 @@ Marker row_marker(const Pattern& pattern, double width, double gap) {
   std::vector<MarkerPlacement> items = marker_items(pattern);
   std::stable_sort(items.begin(), items.end(),
                    [](const MarkerPlacement& a, const MarkerPlacement& b) {
-                     return box_of(a.outline).sizes().x() > box_of(b.outline).sizes().x();
+                     return loop_box(a.outline).sizes().x() > loop_box(b.outline).sizes().x();
                    });
   double row_x = 0, row_length = 0, y = 0;
   for (MarkerPlacement& p : items) {
-    const Eigen::AlignedBox2d box = box_of(p.outline);
+    const Eigen::AlignedBox2d box = loop_box(p.outline);
     if (box.sizes().y() > width) {
       note_unplaced(marker, pattern.pieces[static_cast<size_t>(p.piece)].label);
       continue;

@@ -38,4 +38,16 @@ double outline_length(const std::vector<Outline>& loops) {
   return length;
 }
 
+Eigen::AlignedBox2d loop_box(const Outline& loop) {
+  Eigen::AlignedBox2d box;
+  for (const Eigen::Vector2d& p : loop) box.extend(p);
+  return box;
+}
+
+Eigen::AlignedBox2d outline_box(const std::vector<Outline>& loops) {
+  Eigen::AlignedBox2d box;
+  for (const Outline& loop : loops) box.extend(loop_box(loop));
+  return box;
+}
+
 }  // namespace qd

@@ -1,5 +1,5 @@
-// Area and length of a piece's closed outlines (pattern.h), for the report and the writers: the
-// shoelace formula for areas; the outer loop is the one enclosing the largest area, every other
+// Area, length and box of a piece's closed outlines (pattern.h), for the report and the writers:
+// the shoelace formula for areas; the outer loop is the one enclosing the largest area, every other
 // loop a hole. Model units.
 #pragma once
 
@@ -21,5 +21,9 @@ double outline_area(const std::vector<Outline>& loops);
 
 // Length of every loop, holes included (closing edges included).
 double outline_length(const std::vector<Outline>& loops);
+
+// Bounding box of one loop's points, and of every loop's (empty for no points).
+Eigen::AlignedBox2d loop_box(const Outline& loop);
+Eigen::AlignedBox2d outline_box(const std::vector<Outline>& loops);
 
 }  // namespace qd

@@ -1,5 +1,7 @@
 #include "flatten/pattern.h"
 
+#include "flatten/outline_measures.h"
+
 namespace qd {
 
 namespace {
@@ -54,9 +56,7 @@ Pattern make_pattern(std::vector<PatternPiece> pieces) {
   Pattern pattern;
   pattern.pieces = std::move(pieces);
   for (const PatternPiece& p : pattern.pieces)
-    for (const std::vector<Outline>* lines : {&p.outlines, &p.cut_outlines})
-      for (const Outline& outline : *lines)
-        for (const Eigen::Vector2d& at : outline) pattern.bounds.extend(at);
+    pattern.bounds.extend(outline_box(p.outlines)).extend(outline_box(p.cut_outlines));
   return pattern;
 }
 

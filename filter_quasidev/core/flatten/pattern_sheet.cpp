@@ -3,17 +3,11 @@
 #include <algorithm>
 
 #include "flatten/layout.h"
+#include "flatten/outline_measures.h"
 
 namespace qd {
 
 namespace {
-
-Eigen::AlignedBox2d cut_box(const PatternPiece& p) {
-  Eigen::AlignedBox2d box;
-  for (const Outline& outline : p.cut_outlines)
-    for (const Eigen::Vector2d& at : outline) box.extend(at);
-  return box;
-}
 
 void move(PatternPiece& p, const Eigen::Vector2d& by) {
   for (std::vector<Outline>* lines : {&p.outlines, &p.cut_outlines})
@@ -36,7 +30,7 @@ Pattern pattern_sheet(std::vector<PatternPiece> pieces, const std::vector<PieceG
     PatternPiece p = std::move(pieces[static_cast<size_t>(g.members.front())]);
     p.quantity = static_cast<int>(g.members.size());
     p.mirrored = static_cast<int>(std::count(g.mirrored.begin(), g.mirrored.end(), 1));
-    boxes.push_back(cut_box(p));
+    boxes.push_back(outline_box(p.cut_outlines));
     cut.push_back(std::move(p));
   }
   const std::vector<Eigen::Vector2d> corner = shelf_pack(boxes, gap);
