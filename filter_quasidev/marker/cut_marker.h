@@ -1,8 +1,6 @@
 // The marker the command writes: libnest2d's nesting (nest_marker.h) and the simple row-by-row
-// placement (row_marker.h) are both made, and the shorter is kept. Measured on garments of a
-// few large pieces (docs/cutting-room.md), nesting gains little or loses a little against rows,
-// while on many irregular pieces it is 10-30 % shorter: trying both costs one cheap row
-// placement and is never worse than either.
+// placement (row_marker.h) are both made, and the shorter is kept: neither wins on every
+// garment (docs/measurements-behind-the-code.md), and the rows cost little.
 #pragma once
 
 #include "marker.h"

@@ -10,9 +10,9 @@
 //  3. The closed curve with these turning angles and the boundary's lengths (boundary_curve.h).
 //  4. The interior as the harmonic extension of both coordinates, L_II x_I = −L_IB x_B
 //     (a Tutte/harmonic embedding whose boundary shape is computed, not guessed).
-// Only scalar systems: one factorisation of L_II serves steps 1 and 4. LSCM (Lévy et al.
-// 2002) with two pinned vertices needs the coupled 2n×2n system: CHOLMOD factorised a
-// 500k-vertex grid's Laplacian in 2.4 s and the same pattern in 2×2 blocks in 16 s.
+// Only scalar systems: one factorisation of L_II serves steps 1 and 4, where LSCM (Lévy et al.
+// 2002) with two pinned vertices needs the coupled 2n×2n system, several times slower to
+// factorise (docs/measurements-behind-the-code.md).
 #pragma once
 
 #include <Eigen/SparseCore>

@@ -41,10 +41,8 @@ struct SegmentParams {
   // 9°, and a coarse cylinder of eight facets (45° apart) stays whole.
   double crease_deg = 60.0;
   CostWeights weights;
-  // Lloyd rounds after the first growth, at most (they stop earlier once settled, lloyd.h).
-  // Measured on the shared bowl, wingnut, spot, shirt and a 100k-face torus: ten rounds lower
-  // the area-weighted rms fit error by about 1° against one round and cut spot's patches over
-  // the limit from 9 to 6; thirty do no better. A round takes about 0.5 s per million faces.
+  // Lloyd rounds after the first growth, at most (they stop earlier once settled, lloyd.h); ten
+  // fit better than one and thirty no better than ten (docs/measurements-behind-the-code.md).
   int max_rounds = 10;
   int threads = 0;      // 0 = all cores
 };
