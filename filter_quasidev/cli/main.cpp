@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "approximate/quasidev.h"
+#include "approximate_params.h"
 #include "atomic_file.h"
 #include "cut_marker.h"
 #include "flatten/flatten.h"
@@ -157,11 +158,19 @@ auto read_and_solve(const Options& o, MakeProblem make_problem, Solve solve) {
   return std::make_tuple(std::move(mesh), std::move(problem), std::move(result));
 }
 
+// A parameter's setting in the engine's log as the command is given it: "--name value".
+std::string option_setting(const std::string& name, const std::string& value) {
+  const auto& declared = qd::params::approximate_params();
+  const bool known = std::any_of(declared.begin(), declared.end(),
+                                 [&](const qd::params::ParamInfo& p) { return p.name == name; });
+  return known ? qd::params::option_name(name) + " " + value : name + " = " + value;
+}
+
 void approximate(const qd::cli::ApproximateOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
       o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_problem(m, o); },
       [](const qd::Problem& p, const qd::Progress& progress) {
-        return qd::approximate(p, progress);
+        return qd::approximate(p, progress, option_setting);
       });
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size()))}};

@@ -1,5 +1,6 @@
 #include "report_json.h"
 
+#include "approximate/report_text.h"
 #include "approximate_params.h"
 #include "params_json.h"
 #include "report_text.h"
@@ -31,7 +32,7 @@ Json stage_times(const StageTimes& t) {
 }
 
 Json candidate(const CandidateReport& c) {
-  return {{"term", c.term},
+  return {{"term", term_name(c.term)},
           {"iterations", c.iterations},
           {"abd_reduction", c.abd_reduction},
           {"mean_disp", c.mean_disp},
@@ -51,13 +52,13 @@ Json patch(const PatchReport& p, double average_edge) {
           {"tolerance_model", p.tolerance},
           {"tolerance_ae", average_edge > 0 ? p.tolerance / average_edge : 0.0},
           {"target_kind", p.target_kind},
-          {"developability", p.developability},
-          {"developability_reason", p.developability_reason},
+          {"developability", term_name(p.developability)},
+          {"developability_reason", term_choice_text(p)},
           {"candidates", candidates},
           {"fit_residual_deg", p.fit_residual_deg},
           {"iterations", p.iterations},
           {"iterations_run", p.iterations_run},
-          {"stop_reason", p.stop_reason},
+          {"stop_reason", stop_reason_text(p.stops)},
           {"before", figures(p.before)},
           {"after", figures(p.after)},
           {"abd_reduction", p.abd_reduction},

@@ -22,6 +22,13 @@ namespace qdml {
 
 namespace {
 
+// A parameter's setting in the engine's log as the filter's dialog shows it: "Label = value".
+std::string label_setting(const std::string& name, const std::string& value) {
+  for (const qd::params::ParamInfo& p : qd::params::approximate_params())
+    if (p.name == name) return p.label + " = " + value;
+  return name + " = " + value;
+}
+
 using Settings = qd::params::ApproximateSettings;
 
 std::size_t count_selected(const std::vector<char>& constrained) {
@@ -136,7 +143,7 @@ Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBack
   return guarded_run<qd::Result>([&](Outcome& out) {
     EngineMesh e;
     const qd::Problem problem = make_problem(m, has_face_quality, s, out.log, e);
-    out.result = qd::approximate(problem, progress_of(cb));
+    out.result = qd::approximate(problem, progress_of(cb), label_setting);
     write_back(m, e, out.result, s);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
   });

@@ -10,8 +10,13 @@ namespace {
 // The developability term a patch used, as the index of that value of the parameter
 // "developability" (curve 0, defect 1, both 2); -1 when the patch was left unchanged.
 int developability_code(const qd::PatchReport& p) {
-  const std::string& d = p.developability;
-  return d == "curve" ? 0 : d == "defect" ? 1 : d == "both" ? 2 : -1;
+  switch (p.developability) {
+    case qd::Term::Curve: return 0;
+    case qd::Term::Defect: return 1;
+    case qd::Term::Both: return 2;
+    case qd::Term::None: break;
+  }
+  return -1;
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "approximate/deformer.h"
 #include "approximate/group_mesh.h"
 #include "approximate/quasidev.h"
+#include "approximate/report_text.h"
 #include "approximate/term_race.h"
 #include "approximate/validate.h"
 #include "common/error.h"
@@ -111,7 +112,7 @@ TEST(AngleDefect, WrinkledSheetLosesMostCurvatureWhereTheCurveCannotHelp) {
   p.params.developability = Developability::Defect;
   const Result r = approximate(p);
   ASSERT_EQ(r.patches.size(), 1u);
-  EXPECT_EQ(r.patches[0].developability, "defect");
+  EXPECT_EQ(r.patches[0].developability, Term::Defect);
   EXPECT_GT(r.abd_reduction, 60.0);
   EXPECT_GT(r.abd_reduction, curve.abd_reduction + 30.0);
   EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
@@ -130,8 +131,8 @@ TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
   curve.params.developability = Developability::Curve;
   EXPECT_THROW(approximate(curve), Error);  // the paper cannot fit it: refused, as before
   const Result r = approximate(p);
-  EXPECT_EQ(r.patches[0].developability, "defect");
-  EXPECT_NE(r.patches[0].developability_reason.find("no Gauss-image curve fits"),
+  EXPECT_EQ(r.patches[0].developability, Term::Defect);
+  EXPECT_NE(term_choice_text(r.patches[0]).find("no Gauss-image curve fits"),
             std::string::npos);
   EXPECT_GT(r.abd_reduction, 1.0);
   EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
@@ -148,19 +149,19 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
   int kept = 0;
   for (const CandidateReport& c : patch.candidates) {
     kept += c.kept;
-    EXPECT_NE(patch.developability_reason.find(c.term), std::string::npos);
+    EXPECT_NE(term_choice_text(patch).find(term_name(c.term)), std::string::npos);
   }
   EXPECT_EQ(kept, 1);
   for (const auto& [mode, name] :
-       {std::pair{Developability::Curve, "curve"}, std::pair{Developability::Defect, "defect"},
-        std::pair{Developability::Both, "both"}}) {
+       {std::pair{Developability::Curve, Term::Curve}, std::pair{Developability::Defect, Term::Defect},
+        std::pair{Developability::Both, Term::Both}}) {
     Problem alone = p;
     alone.params.developability = mode;
     const Result single = approximate(alone);
     if (patch.developability == name) {
-      EXPECT_EQ(r.V, single.V) << name;
+      EXPECT_EQ(r.V, single.V) << term_name(name);
     }
-    EXPECT_GE(r.abd_reduction, single.abd_reduction - 2.0) << name << ": percentage points";
+    EXPECT_GE(r.abd_reduction, single.abd_reduction - 2.0) << term_name(name) << ": percentage points";
   }
 }
 
@@ -177,8 +178,8 @@ TEST(AngleDefect, AutoStopsTheRaceWhenTheLeaderLeavesLessThanDeltaAbd) {
     if (c.kept) {
       EXPECT_GE(c.abd_reduction, 100 - p.params.stop_abd);
     } else {
-      EXPECT_TRUE(c.dropped) << c.term;
-      EXPECT_LT(c.iterations, keep_leader_round) << c.term;
+      EXPECT_TRUE(c.dropped) << term_name(c.term);
+      EXPECT_LT(c.iterations, keep_leader_round) << term_name(c.term);
     }
   }
 }

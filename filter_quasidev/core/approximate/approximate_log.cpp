@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "approximate/deformer.h"
+#include "approximate/report_text.h"
+#include "approximate/segment_first.h"
 
 namespace qd {
 namespace {
@@ -11,98 +14,32 @@ namespace {
 // targets then warn.
 constexpr double kFarResidualDeg = 10.0;
 
-std::string format(const char* fmt, double a, double b = 0, double c = 0, double d = 0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
-  return buf;
-}
-
 // "G_ABD a → b (−r%), " with the sign of the change: a rise reads "(+r%)".
 std::string g_abd_change(const Figures& before, const Figures& after, double reduction) {
-  return format(reduction >= 0 ? "G_ABD %.4g → %.4g (−%.1f%%), " : "G_ABD %.4g → %.4g (+%.1f%%), ",
-                before.g_abd, after.g_abd, std::abs(reduction));
+  return printf_text(
+      reduction >= 0 ? "G_ABD %.4g → %.4g (−%.1f%%), " : "G_ABD %.4g → %.4g (+%.1f%%), ",
+      before.g_abd, after.g_abd, std::abs(reduction));
 }
 
 }  // namespace
 
-const char* term_name(Term t) {
-  return t == Term::Curve ? "curve" : t == Term::Defect ? "defect" : t == Term::Both ? "both" : "none";
-}
-
-std::vector<CandidateReport> candidate_reports(const std::vector<CandidateFigures>& race,
-                                               double initial_g) {
-  std::vector<CandidateReport> out;
-  for (const CandidateFigures& c : race)
-    out.push_back({term_name(c.term), c.iterations,
-                   initial_g > 0 ? 100.0 * (initial_g - c.g_abd) / initial_g : 0.0, c.mean_disp,
-                   c.kept, c.dropped});
-  return out;
-}
-
-std::string term_reason_text(const PatchFit& p, const std::vector<CandidateReport>& candidates) {
-  switch (p.reason) {
-    case TermReason::AsAsked: return "as asked";
-    case TermReason::Planar: return "planar";
-    case TermReason::TooSmall: return "too small";
-    case TermReason::NoCurveFits: return "no Gauss-image curve fits";
-    case TermReason::Given: return "auto: chosen in the earlier pass";
-    case TermReason::Measured: break;
-  }
-  if (!p.fitted()) return "auto: no Gauss-image curve fits";
-  if (candidates.empty() && p.term == Term::Curve)
-    return format("auto: above %d vertices the angle-defect rows are not raced (their "
-                  "factorisation would cost many times the curve term's run); developability "
-                  "defect or both runs them",
-                  static_cast<int>(kMaxDefectRaceVertices));
-  if (candidates.empty()) return "auto";
-  std::string s = "auto, measured:";
-  for (const CandidateReport& c : candidates)
-    s += " " + c.term + format(" −%.1f%% in %.0f it.", c.abd_reduction, c.iterations) +
-         (c.kept ? " (kept)" : c.dropped ? " (left after the trial)" : "") + ",";
-  s.pop_back();
-  return s;
-}
-
-std::string stop_text(const DeformOutcome& o, const Params& params) {
-  std::string s;
-  switch (o.stop) {
-    case StopReason::Running:
-    case StopReason::MaxIter: s = "maxIter reached"; break;
-    case StopReason::Plateau:
-      s = format("plateau: the last %.0f iterations removed %.2f%% of G_ABD (< δ_ABD %g%%)",
-                 kPlateauIterations, o.plateau_removed, params.stop_abd);
-      break;
-    case StopReason::RatioAbd: s = "ratio_ABD below δ_ABD"; break;
-    case StopReason::RatioObd: s = "ratio_OBD below δ_OBD"; break;
-    case StopReason::NothingToDo: return o.stop_detail;
-    case StopReason::NoStep:
-      s = "never-worse rule: iteration " + std::to_string(o.iterations_run + 1) + " refused (" +
-          o.stop_detail + ")";
-      break;
-  }
-  const int kept = static_cast<int>(o.history.size());
-  if (kept < o.iterations_run)
-    s += "; iteration " + std::to_string(kept) + " of " + std::to_string(o.iterations_run) +
-         " had the least curvature and is kept";
-  return s;
-}
-
 std::string patch_log_line(const PatchReport& p, double ae) {
-  if (p.developability == "none" && p.target_kind == "unchanged")
+  if (p.developability == Term::None && !p.fitted)
     return "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
-           p.stop_reason;
+           stop_reason_text(p.stops);
   const IterationReport last = p.history.empty() ? IterationReport{} : p.history.back();
-  const std::string fit = p.target_kind == "unchanged"
-                              ? "no curve fit"
-                              : p.target_kind + format(" fit residual %.2f°", p.fit_residual_deg);
-  std::string s = "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
-                  fit + ", developability " + p.developability + " (" + p.developability_reason +
-                  "), " + std::to_string(p.iterations) + " iteration(s) (stop: " + p.stop_reason +
-                  "), " + g_abd_change(p.before, p.after, p.abd_reduction) +
-                  format("last ratio_ABD %.1f%%, ratio_OBD %.1f%%, ", last.ratio_abd, last.ratio_obd) +
-                  format("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
-  if (p.developability == "curve" && p.fit_residual_deg > kFarResidualDeg)
-    s += format(
+  const std::string fit =
+      !p.fitted ? "no curve fit"
+                : p.target_kind + printf_text(" fit residual %.2f°", p.fit_residual_deg);
+  std::string s =
+      "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " + fit +
+      ", developability " + term_name(p.developability) + " (" + term_choice_text(p) + "), " +
+      std::to_string(p.iterations) + " iteration(s) (stop: " + stop_reason_text(p.stops) + "), " +
+      g_abd_change(p.before, p.after, p.abd_reduction) +
+      printf_text("last ratio_ABD %.1f%%, ratio_OBD %.1f%%, ", last.ratio_abd, last.ratio_obd) +
+      printf_text("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
+  if (p.developability == Term::Curve && p.fit_residual_deg > kFarResidualDeg)
+    s += printf_text(
         "; warning: fit residual %.1f°: this patch is far from one developable surface, which "
         "the paper's method assumes: use the angle-defect term (developability defect or auto), "
         "or split it into finer patches",
@@ -110,42 +47,87 @@ std::string patch_log_line(const PatchReport& p, double ae) {
   return s;
 }
 
+namespace {
+
 std::string total_log_line(const Result& r) {
   int iterations = 0;
   for (const PatchReport& p : r.patches) iterations = std::max(iterations, p.iterations);
   return "total: " + std::to_string(r.patches.size()) + " patch(es), " +
          g_abd_change(r.total_before, r.total_after, r.abd_reduction) +
-         format("max displacement %.3g AE (AE = %.4g), ", r.total_after.max_disp / r.average_edge,
-                r.average_edge) +
-         "up to " + std::to_string(iterations) + " iterations, " + std::to_string(r.factorizations) +
-         format(" factorisation(s), %.0f ms", r.time_ms);
+         printf_text("max displacement %.3g AE (AE = %.4g), ",
+                     r.total_after.max_disp / r.average_edge, r.average_edge) +
+         "up to " + std::to_string(iterations) + " iterations, " +
+         std::to_string(r.factorizations) + printf_text(" factorisation(s), %.0f ms", r.time_ms);
 }
 
+// When the run removed less than half of the curvature: why, with the figures the engine has,
+// and what to try.
 std::vector<std::string> advice(const Result& r, const Params& params, double held_share) {
   std::vector<std::string> out;
   if (r.abd_reduction >= 50.0) return out;
-  const std::string head = format("little was removed (%.1f%% of G_ABD): ", r.abd_reduction);
+  const std::string head = printf_text("little was removed (%.1f%% of G_ABD): ", r.abd_reduction);
   if (held_share >= 25.0)
-    out.push_back(head + format("%.0f%% of the curvature lies on vertices that do not move (", held_share) +
-                  (params.seams == SeamMode::Fixed ? "fixed seams, " : "") +
-                  (params.keep_boundary ? "the kept boundary, " : "") +
-                  "the selection); free seams or a free boundary can reach it");
+    out.push_back(
+        head +
+        printf_text("%.0f%% of the curvature lies on vertices that do not move (", held_share) +
+        (params.seams == SeamMode::Fixed ? "fixed seams, " : "") +
+        (params.keep_boundary ? "the kept boundary, " : "") +
+        "the selection); free seams or a free boundary can reach it");
   for (const PatchReport& p : r.patches) {
-    const bool capped = p.stop_reason.find("maxIter reached") != std::string::npos;
+    const bool capped = std::any_of(p.stops.begin(), p.stops.end(), [](const PassStop& s) {
+      return s.reason == PatchStop::MaxIter;
+    });
     if (capped && p.history.size() > static_cast<size_t>(kPlateauIterations)) {
       const double then = p.history[p.history.size() - 1 - kPlateauIterations].figures.g_abd;
-      const double removed = then > 0 ? 100.0 * (then - p.history.back().figures.g_abd) / then : 0.0;
-      out.push_back(head + "patch " + std::to_string(p.id) +
-                    format(" stopped at maxIter while its last %.0f iterations still removed %.1f%% "
-                           "of its curvature: a larger maxIter goes further",
-                           kPlateauIterations, removed));
+      const double removed =
+          then > 0 ? 100.0 * (then - p.history.back().figures.g_abd) / then : 0.0;
+      out.push_back(
+          head + "patch " + std::to_string(p.id) +
+          printf_text(" stopped at maxIter while its last %.0f iterations still removed %.1f%% "
+                      "of its curvature: a larger maxIter goes further",
+                      kPlateauIterations, removed));
     }
   }
   if (out.empty())
-    out.push_back(head + "the patches stopped where no step of their terms removes more within the "
-                         "tolerance (their lines give the candidates' figures); a larger tolerance or "
-                         "developability weight moves the surface further for more");
+    out.push_back(head +
+                  "the patches stopped where no step of their terms removes more within the "
+                  "tolerance (their lines give the candidates' figures); a larger tolerance or "
+                  "developability weight moves the surface further for more");
   return out;
+}
+
+}  // namespace
+
+std::vector<std::string> approximate_log(const Result& r, const std::vector<PatchMerge>& merged,
+                                         const std::vector<std::vector<int>>& reruns,
+                                         const Params& params, double held_share) {
+  std::vector<std::string> log;
+  for (const std::string& w : r.warnings) log.push_back("warning: " + w);
+  for (const PatchMerge& m : merged)
+    log.push_back("note: patch " + std::to_string(m.patch) + " (" + std::to_string(m.faces) +
+                  (m.faces == 1 ? " face" : " faces") +
+                  ") has most of its vertices on seams or the boundary: it is solved together "
+                  "with patch " +
+                  std::to_string(m.group) + ", and the seam between them moves");
+  for (const std::vector<int>& ids : reruns) {
+    std::string list;
+    for (int id : ids) list += (list.empty() ? "" : ", ") + std::to_string(id);
+    log.push_back("note: patches " + list +
+                  ", solved at once, raised the curvature where they meet; solved again one "
+                  "after the other");
+  }
+  for (const PatchReport& p : r.patches) log.push_back(patch_log_line(p, r.average_edge));
+  log.push_back(total_log_line(r));
+  for (const std::string& line : advice(r, params, held_share)) log.push_back("note: " + line);
+  return log;
+}
+
+std::string segmented_note(const std::string& why, int count, const SettingText& setting) {
+  return "note: the mesh has no patch ids and " + why + ": split into " + std::to_string(count) +
+         " nearly developable patches (segment, largest fit error " +
+         std::to_string(static_cast<int>(kSegmentFirstMaxErrorDeg)) +
+         "°), solved with free seams (" + setting_text(setting, "segment_first", "never") +
+         " keeps it one patch)";
 }
 
 }  // namespace qd

@@ -9,6 +9,7 @@
 #include "approximate/deformer.h"
 #include "approximate/group_mesh.h"
 #include "approximate/params.h"
+#include "approximate/result.h"
 #include "approximate/target_normals.h"
 
 namespace qd {
@@ -16,18 +17,14 @@ namespace qd {
 // Below this fit residual a planar patch is already developable: nothing to do.
 constexpr double kPlanarResidualDeg = 0.05;
 
-// The developability rows a patch gets: the paper's normal targets (Eq. 13), the angle-defect
-// rows (angle_defect.h), both, or none (planar, too small, or not fitted with Curve asked).
-enum class Term { None, Curve, Defect, Both };
-
 // Why a patch takes its term.
 enum class TermReason { AsAsked, Planar, TooSmall, NoCurveFits, Measured, Given };
 
 struct PatchFit {
   int id = 0;
-  std::vector<int> faces;     // local faces of the group
+  std::vector<int> faces;  // local faces of the group
   TargetFit fit;
-  std::string skipped;        // why Step 1 failed; empty when it succeeded
+  std::string skipped;  // why Step 1 failed; empty when it succeeded
   Term term = Term::None;
   TermReason reason = TermReason::AsAsked;
   bool fitted() const { return skipped.empty(); }

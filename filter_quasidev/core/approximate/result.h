@@ -9,24 +9,57 @@
 
 namespace qd {
 
+// The developability rows a patch gets: the paper's normal targets (Eq. 13), the angle-defect
+// rows (angle_defect.h), both, or none (planar, too small, or not fitted with Curve asked).
+enum class Term { None, Curve, Defect, Both };
+
+// Why a patch took its term, as reported (report_text.h words it).
+enum class TermChoice {
+  AsAsked,          // the parameter named it
+  Planar,           // already developable
+  TooSmall,         // too few faces to fit
+  NoCurveFits,      // Curve asked, and no Gauss-image curve fits
+  EarlierPass,      // Auto: decided by the race of an earlier pass
+  AutoNoCurveFits,  // Auto: no curve fits, so the defect rows
+  AutoNotRaced,     // Auto: above kMaxDefectRaceVertices, the curve term without a race
+  Auto,             // Auto: the only candidate
+  AutoMeasured      // Auto: the race's winner (candidates hold its figures)
+};
+
+// The passes of a solve (solve_schedule.h): one with fixed seams, three with free seams.
+enum class SolvePass { Only, AllAtOnce, SeamsHeld, SeamsFree };
+
+// Why a patch's run in one pass stopped.
+enum class PatchStop { MaxIter, Plateau, RatioAbd, RatioObd, NoStep, Planar, Unfitted };
+
+struct PassStop {
+  SolvePass pass = SolvePass::Only;
+  PatchStop reason = PatchStop::MaxIter;
+  double plateau_removed = 0;  // Plateau: percent of G_ABD the last iterations removed
+  double stop_abd = 0;         // Plateau: δ_ABD, percent
+  int iterations_run = 0;      // accepted iterations, including those after the kept one
+  int kept = 0;                // the kept (best) iteration
+  std::string detail;          // NoStep: the refused candidates; Unfitted: why Step 1 failed
+};
+
 struct IterationReport {
-  int iteration = 0;         // 1-based
-  Figures figures;           // after this iteration
-  double ratio_abd = 0;      // Eq. (19), percent, vs the previous iteration
-  double ratio_obd = 0;      // Eq. (20), percent
-  double step_scale = 1;     // 1 = full step; < 1 = shortened by the never-worse rule
-  double weight_scale = 1;   // of the developability weights, < 1 after back-offs (deformer.h)
-  std::string note;          // why a step was shortened or rejected, if it was
+  int iteration = 0;        // 1-based
+  Figures figures;          // after this iteration
+  double ratio_abd = 0;     // Eq. (19), percent, vs the previous iteration
+  double ratio_obd = 0;     // Eq. (20), percent
+  double step_scale = 1;    // 1 = full step; < 1 = shortened by the never-worse rule
+  double weight_scale = 1;  // of the developability weights, < 1 after back-offs (deformer.h)
+  std::string note;         // why a step was shortened or rejected, if it was
 };
 
 // One candidate of Developability::Auto's race (term_race.h).
 struct CandidateReport {
-  std::string term;            // "curve", "defect", "both"
-  int iterations = 0;          // accepted iterations it ran
-  double abd_reduction = 0;    // of its best iterate, percent
-  double mean_disp = 0;        // of its best iterate, model units
-  bool kept = false;           // the one whose result the patch keeps
-  bool dropped = false;        // stopped after the trial, not by its own stop rule
+  Term term = Term::None;
+  int iterations = 0;        // accepted iterations it ran
+  double abd_reduction = 0;  // of its best iterate, percent
+  double mean_disp = 0;      // of its best iterate, model units
+  bool kept = false;         // the one whose result the patch keeps
+  bool dropped = false;      // stopped after the trial, not by its own stop rule
 };
 
 struct PatchReport {
@@ -34,19 +67,20 @@ struct PatchReport {
   int faces = 0;
   int vertices = 0;
   int free_vertices = 0;
-  double tolerance = 0;          // δ_err used, model units
-  std::string target_kind;       // "curve", "closed curve", "plane"
-  std::string developability;    // rows used: "curve" (paper), "defect", "both", "none"
-  std::string developability_reason;  // why (Developability::Auto: the race's figures)
+  double tolerance = 0;              // δ_err used, model units
+  std::string target_kind;           // the Step 1 model's name: "curve", "closed curve", "plane"
+  bool fitted = false;               // Step 1 fitted a model (else the faces keep their normals)
+  Term developability = Term::None;  // rows used
+  TermChoice developability_reason = TermChoice::AsAsked;  // why (Auto: candidates' figures)
   std::vector<CandidateReport> candidates;  // Developability::Auto's race, else empty
-  double fit_residual_deg = 0;   // area-weighted mean angle between n_f and its target
-  int iterations = 0;            // accepted iterations up to the kept (best) iterate
-  int iterations_run = 0;        // accepted iterations, including those after the kept one
-  std::string stop_reason;
+  double fit_residual_deg = 0;              // area-weighted mean angle between n_f and its target
+  int iterations = 0;                       // accepted iterations up to the kept (best) iterate
+  int iterations_run = 0;       // accepted iterations, including those after the kept one
+  std::vector<PassStop> stops;  // one per pass that solved the patch, in order
   Figures before;
   Figures after;
-  double abd_reduction = 0;      // (G_before − G_after)/G_before, percent
-  double obd_reduction = 0;      // same for D(P), measured with the initial targets
+  double abd_reduction = 0;  // (G_before − G_after)/G_before, percent
+  double obd_reduction = 0;  // same for D(P), measured with the initial targets
   double time_ms = 0;
   std::vector<IterationReport> history;
 };
@@ -60,8 +94,8 @@ struct StageTimes {
   double solve = 0;          // forward and back substitutions
   double metrics = 0;        // figures for the stop criteria, the never-worse rule, the reports
   int factorizations = 0;
-  int solves = 0;            // linear solves, one per iteration
-  int cg_iterations = 0;     // conjugate-gradient iterations of the iterative solves
+  int solves = 0;         // linear solves, one per iteration
+  int cg_iterations = 0;  // conjugate-gradient iterations of the iterative solves
   StageTimes& operator+=(const StageTimes& o) {
     setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
     solve += o.solve, metrics += o.metrics;
@@ -71,22 +105,22 @@ struct StageTimes {
 };
 
 struct Result {
-  Positions V;                       // new positions, same order as the input
-  double average_edge = 0;           // AE of the input
-  std::vector<double> k_before;      // K(v) per vertex, 0 on boundary / unused vertices
+  Positions V;                   // new positions, same order as the input
+  double average_edge = 0;       // AE of the input
+  std::vector<double> k_before;  // K(v) per vertex, 0 on boundary / unused vertices
   std::vector<double> k_after;
   std::vector<double> displacement;  // |v' − v0| per vertex
   std::vector<PatchReport> patches;  // in ascending patch id order
   Figures total_before;              // whole mesh
   Figures total_after;
-  double abd_reduction = 0;          // whole mesh, percent
-  int factorizations = 0;            // sparse Cholesky numeric factorisations performed
-  StageTimes times;                  // per stage; time_ms is the wall-clock total
+  double abd_reduction = 0;  // whole mesh, percent
+  int factorizations = 0;    // sparse Cholesky numeric factorisations performed
+  StageTimes times;          // per stage; time_ms is the wall-clock total
   double time_ms = 0;
-  std::vector<int> segmented_patch;  // patch id per face when the engine split the mesh first
-                                     // (segment_first.h), else empty
-  std::vector<std::string> warnings; // parts of the mesh left as they are (validate.h warnings())
-  std::vector<std::string> log;      // human-readable lines: the warnings, one per patch, total
+  std::vector<int> segmented_patch;   // patch id per face when the engine split the mesh first
+                                      // (segment_first.h), else empty
+  std::vector<std::string> warnings;  // parts of the mesh left as they are (validate.h warnings())
+  std::vector<std::string> log;       // human-readable lines: the warnings, one per patch, total
 };
 
 }  // namespace qd

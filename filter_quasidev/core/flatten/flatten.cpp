@@ -9,6 +9,7 @@
 
 #include "common/parallel_for.h"
 #include "common/serial_libraries.h"
+#include "common/thread_count.h"
 #include "flatten/flatten_piece.h"
 #include "flatten/flatten_validate.h"
 #include "flatten/grainline.h"
@@ -54,11 +55,6 @@ std::string group_line(const PieceGroup& g, const std::vector<PieceReport>& piec
   line << std::fixed << std::setprecision(2) << ": one pattern piece, cut " << g.members.size()
        << "; they differ by " << g.difference << " % of its size";
   return line.str();
-}
-
-size_t thread_count(int requested) {
-  return requested > 0 ? static_cast<size_t>(requested)
-                       : std::max(1u, std::thread::hardware_concurrency());
 }
 
 }  // namespace

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <thread>
 
 #include "common/parallel_for.h"
+#include "common/thread_count.h"
 #include "segment/chart_merging.h"
 #include "segment/face_parts.h"
 #include "segment/lloyd.h"
@@ -94,8 +94,7 @@ SegmentResult segment(const SegmentProblem& problem, const Progress& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   validate_segment(problem);
   const SegmentParams& q = problem.params;
-  const int threads = q.threads > 0 ? q.threads
-                                    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = static_cast<int>(thread_count(q.threads));
   const double limit = radians(q.max_error_deg);
   if (progress) progress(0, "Segmenting: face normals and adjacency");
 

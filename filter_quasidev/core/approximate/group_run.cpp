@@ -1,0 +1,122 @@
+#include "approximate/group_run.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "common/stage_timer.h"
+
+namespace qd {
+namespace {
+
+// With a total tolerance, what each vertex has left of its budget after the moves of earlier
+// groups (input: the positions before any): |v' − v_now| ≤ δ − |v_now − v_input| keeps
+// |v' − v_input| ≤ δ.
+void spend_earlier_moves(GroupMesh& g, const Positions& input) {
+  for (size_t l = 0; l < g.global_vertex.size(); ++l) {
+    const double moved =
+        (g.V0.row(static_cast<Eigen::Index>(l)) - input.row(g.global_vertex[l])).norm();
+    g.tolerance[l] = std::max(0.0, g.tolerance[l] - moved);
+  }
+}
+
+// The fits with `term` on every patch the race decides (a patch no curve fits takes the
+// defect rows instead of the curve targets).
+std::vector<PatchFit> with_term(std::vector<PatchFit> fits, Term term) {
+  for (PatchFit& p : fits)
+    if (p.reason == TermReason::Measured)
+      p.term = p.fitted() || term == Term::Defect ? term : Term::Defect;
+  return fits;
+}
+
+// Step 1: each patch's fit and term; the candidates of the race when a term is to be measured.
+std::vector<Term> choose_terms(GroupRun& run, const Params& params, const DecidedTerms& decided,
+                               size_t threads) {
+  const GroupMesh& g = run.group;
+  std::vector<Term> candidates;
+  run.fits = fit_patches(g, g.V0, threads);
+  for (PatchFit& p : run.fits) {
+    choose_term(p, params.developability);
+    const auto given = decided.find(p.id);
+    if (p.reason != TermReason::Measured) continue;
+    if (given != decided.end()) {
+      p.term = given->second;
+      p.reason = TermReason::Given;
+    } else if (candidates.size() < 2) {
+      candidates = candidate_terms(p, g.solve_vertices);
+    }
+  }
+  if (candidates.size() == 1) run.fits = with_term(run.fits, candidates.front());
+  run.targets = group_targets(g, run.fits);
+  return candidates;
+}
+
+// Step 2 as a race of the candidate terms; the run keeps the winner's fits and outcome.
+void race(GroupRun& run, const std::vector<Term>& candidates, const Params& params, double ae,
+          size_t threads, const std::function<void(double)>& progress) {
+  const GroupMesh& g = run.group;
+  // Each candidate's fits outlive its run: the re-projection keeps a reference to them.
+  std::map<Term, std::vector<PatchFit>> fits_of;
+  for (Term t : candidates) fits_of[t] = with_term(run.fits, t);
+  const auto start = [&](Term t) {
+    const std::vector<PatchFit>& fits = fits_of.at(t);
+    return Deformation(g, group_targets(g, fits), make_retarget(g, fits, params.targets, threads),
+                       group_defect_rows(g, fits), params, ae);
+  };
+  RaceOutcome raced =
+      race_terms(candidates, start, params.max_iter, params.stop_abd / 100, progress);
+  run.fits = fits_of.at(raced.winner);
+  run.targets = group_targets(g, run.fits);
+  run.outcome = std::move(raced.outcome);
+  run.race = std::move(raced.candidates);
+  run.initial_g = raced.initial_g;
+}
+
+}  // namespace
+
+GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<int>& faces,
+                   const std::vector<char>& constrained, const Params& params,
+                   const DecidedTerms& decided, bool one_unit,
+                   const std::function<void(double)>& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  GroupRun run;
+  double setup_ms = 0;
+  {
+    StageTimer timer(setup_ms);
+    run.group =
+        extract_group(V, in.F, faces, in.patch, constrained, in.interior, in.incident, params);
+    for (size_t l = 0; l < run.group.global_vertex.size(); ++l)
+      run.group.V_input.row(static_cast<Eigen::Index>(l)) =
+          in.input.row(run.group.global_vertex[l]);
+    if (one_unit)
+      std::fill(run.group.face_unit.begin(), run.group.face_unit.end(),
+                run.group.face_patch.front());
+    if (params.tolerance_mode == ToleranceMode::Total) spend_earlier_moves(run.group, in.input);
+  }
+  const GroupMesh& g = run.group;
+  const size_t threads = static_cast<size_t>(params.threads);
+  double step1_ms = 0;
+  std::vector<Term> candidates;  // of the race, when a patch's term is to be measured
+  {
+    StageTimer timer(step1_ms);
+    candidates = choose_terms(run, params, decided, threads);
+  }
+  bool all_idle = candidates.size() < 2;
+  for (const PatchFit& p : run.fits) all_idle = all_idle && p.idle();
+  if (all_idle) {
+    run.outcome.V = g.V0;
+    run.outcome.stop = StopReason::NothingToDo;
+    run.outcome.stop_detail = run.fits.front().skipped;  // empty: planar
+  } else if (candidates.size() > 1) {
+    race(run, candidates, params, in.ae, threads, progress);
+  } else {
+    run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets, threads),
+                         group_defect_rows(g, run.fits), params, in.ae, progress);
+  }
+  run.outcome.times.setup += setup_ms;
+  run.outcome.times.step1 += step1_ms;
+  run.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return run;
+}
+
+}  // namespace qd

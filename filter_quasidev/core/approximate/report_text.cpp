@@ -1,0 +1,122 @@
+#include "approximate/report_text.h"
+
+#include <cstdio>
+
+#include "approximate/deformer.h"
+#include "approximate/patch_fit.h"
+
+namespace qd {
+
+std::string printf_text(const char* fmt, double a, double b, double c, double d) {
+  char buf[256];
+  std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
+  return buf;
+}
+
+const char* term_name(Term t) {
+  switch (t) {
+    case Term::None:
+      return "none";
+    case Term::Curve:
+      return "curve";
+    case Term::Defect:
+      return "defect";
+    case Term::Both:
+      return "both";
+  }
+  return "";
+}
+
+const char* pass_name(SolvePass pass) {
+  switch (pass) {
+    case SolvePass::Only:
+      return "";
+    case SolvePass::AllAtOnce:
+      return "all patches at once";
+    case SolvePass::SeamsHeld:
+      return "seams held";
+    case SolvePass::SeamsFree:
+      return "seams free";
+  }
+  return "";
+}
+
+std::string term_choice_text(const PatchReport& p) {
+  switch (p.developability_reason) {
+    case TermChoice::AsAsked:
+      return "as asked";
+    case TermChoice::Planar:
+      return "planar";
+    case TermChoice::TooSmall:
+      return "too small";
+    case TermChoice::NoCurveFits:
+      return "no Gauss-image curve fits";
+    case TermChoice::EarlierPass:
+      return "auto: chosen in the earlier pass";
+    case TermChoice::AutoNoCurveFits:
+      return "auto: no Gauss-image curve fits";
+    case TermChoice::AutoNotRaced:
+      return printf_text(
+          "auto: above %.0f vertices the angle-defect rows are not raced (their "
+          "factorisation would cost many times the curve term's run); "
+          "developability defect or both runs them",
+          static_cast<double>(kMaxDefectRaceVertices));
+    case TermChoice::Auto:
+      return "auto";
+    case TermChoice::AutoMeasured:
+      break;
+  }
+  std::string s = "auto, measured:";
+  for (const CandidateReport& c : p.candidates)
+    s += std::string(" ") + term_name(c.term) +
+         printf_text(" −%.1f%% in %.0f it.", c.abd_reduction, c.iterations) +
+         (c.kept      ? " (kept)"
+          : c.dropped ? " (left after the trial)"
+                      : "") +
+         ",";
+  s.pop_back();
+  return s;
+}
+
+std::string pass_stop_text(const PassStop& s) {
+  std::string t;
+  switch (s.reason) {
+    case PatchStop::MaxIter:
+      t = "maxIter reached";
+      break;
+    case PatchStop::Plateau:
+      t = printf_text("plateau: the last %.0f iterations removed %.2f%% of G_ABD (< δ_ABD %g%%)",
+                      kPlateauIterations, s.plateau_removed, s.stop_abd);
+      break;
+    case PatchStop::RatioAbd:
+      t = "ratio_ABD below δ_ABD";
+      break;
+    case PatchStop::RatioObd:
+      t = "ratio_OBD below δ_OBD";
+      break;
+    case PatchStop::NoStep:
+      t = "never-worse rule: iteration " + std::to_string(s.iterations_run + 1) + " refused (" +
+          s.detail + ")";
+      break;
+    case PatchStop::Planar:
+      return "planar: the Gauss image is a point, nothing to do";
+    case PatchStop::Unfitted:
+      return "left unchanged: " + s.detail;
+  }
+  if (s.kept < s.iterations_run)
+    t += "; iteration " + std::to_string(s.kept) + " of " + std::to_string(s.iterations_run) +
+         " had the least curvature and is kept";
+  return t;
+}
+
+std::string stop_reason_text(const std::vector<PassStop>& stops) {
+  std::string out;
+  for (const PassStop& s : stops) {
+    if (!out.empty()) out += "; then ";
+    if (s.pass != SolvePass::Only) out += pass_name(s.pass) + std::string(": ");
+    out += pass_stop_text(s);
+  }
+  return out;
+}
+
+}  // namespace qd

@@ -1,0 +1,30 @@
+// The words of a Result's enums and figures, for the edges that show them: the engine's log
+// (approximate_log.h), the command's JSON report and the MeshLab figures.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "approximate/result.h"
+
+namespace qd {
+
+// fmt (printf style) with up to four numbers.
+std::string printf_text(const char* fmt, double a, double b = 0, double c = 0, double d = 0);
+
+// "none", "curve", "defect", "both".
+const char* term_name(Term t);
+
+// "all patches at once", "seams held", "seams free"; "" for the only pass.
+const char* pass_name(SolvePass pass);
+
+// Why a patch takes its term; the race's figures when it was measured.
+std::string term_choice_text(const PatchReport& p);
+
+// Why one pass of a patch stopped, with the figure that decided.
+std::string pass_stop_text(const PassStop& s);
+
+// The stops of every pass: "seams held: ...; then seams free: ...".
+std::string stop_reason_text(const std::vector<PassStop>& stops);
+
+}  // namespace qd

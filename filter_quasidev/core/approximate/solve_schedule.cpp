@@ -1,0 +1,173 @@
+#include "approximate/solve_schedule.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <thread>
+
+#include "approximate/solve_rounds.h"
+#include "common/metrics.h"
+#include "common/parallel_for.h"
+#include "common/serial_libraries.h"
+#include "common/thread_count.h"
+
+namespace qd {
+namespace {
+
+struct Pass {
+  SolvePass name;
+  const std::vector<char>* constrained;  // the vertices no group of the pass moves
+  bool per_group;                        // one group per solve group, else one for all
+  size_t first = 0, last = 0;            // its groups
+};
+
+// G_ABD (Σ|K(v)| over interior vertices, Eq. 18) of the mesh and of each group of a round (over
+// the vertices of its faces, seams included): what the never-worse rule keeps from rising when
+// groups run at once.
+struct RoundFigures {
+  double mesh = 0;
+  std::vector<double> group;
+};
+RoundFigures round_figures(const Positions& V, const Triangles& F,
+                           const std::vector<char>& interior,
+                           const std::vector<std::vector<int>>& groups,
+                           const std::vector<size_t>& round) {
+  const std::vector<double> K = gaussian_curvature(vertex_angles(V, F), interior);
+  RoundFigures out;
+  for (double k : K) out.mesh += std::abs(k);
+  std::vector<size_t> seen(K.size(), groups.size());  // the last group that counted the vertex
+  for (size_t gi : round) {
+    double sum = 0;
+    for (int f : groups[gi])
+      for (int c = 0; c < 3; ++c) {
+        const auto v = static_cast<size_t>(F(f, c));
+        if (seen[v] != gi) sum += std::abs(K[v]);
+        seen[v] = gi;
+      }
+    out.group.push_back(sum);
+  }
+  return out;
+}
+
+// Worse than before: the mesh's G_ABD, or that of a group that moves a vertex (a group that
+// moves none has no step of its own to hold back), rose. Run in turn, groups never make either
+// rise: each checks its own faces' vertices, seams included, with its neighbours' results.
+bool round_made_worse(const RoundFigures& before, const RoundFigures& after,
+                      const std::vector<size_t>& round, const std::vector<ScheduledRun>& runs) {
+  if (after.mesh > before.mesh) return true;
+  for (size_t k = 0; k < round.size(); ++k) {
+    const std::vector<char>& fixed = runs[round[k]].run.group.fixed;
+    const bool moves = std::find(fixed.begin(), fixed.end(), 0) != fixed.end();
+    if (moves && after.group[k] > before.group[k]) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
+                           const std::vector<char>& constrained, const std::vector<char>& held,
+                           const Progress& progress) {
+  const Params& params = in.params;
+  const Triangles& F = in.F;
+  std::map<int, std::vector<int>> faces_of_group;
+  for (size_t f = 0; f < group.size(); ++f) faces_of_group[group[f]].push_back(static_cast<int>(f));
+  std::vector<std::vector<int>> groups;
+  std::vector<Pass> passes;
+  const auto add_pass = [&](SolvePass name, const std::vector<char>& held_here, bool per_group) {
+    passes.push_back({name, &held_here, per_group, groups.size(), 0});
+    if (per_group) {
+      for (auto& [id, faces] : faces_of_group) groups.push_back(faces);
+    } else {
+      groups.emplace_back(group.size());
+      std::iota(groups.back().begin(), groups.back().end(), 0);
+    }
+    passes.back().last = groups.size();
+  };
+  if (params.seams == SeamMode::Free) {
+    add_pass(SolvePass::AllAtOnce, constrained, false);
+    add_pass(SolvePass::SeamsHeld, held, true);
+    add_pass(SolvePass::SeamsFree, constrained, true);
+  } else {
+    add_pass(SolvePass::Only, held, true);
+  }
+
+  // Step 1 and Step 2 per group, pass by pass and round by round (solve_rounds.h): the groups
+  // of a round move no common vertex and run in parallel from the positions the earlier
+  // rounds left. With a total tolerance each pass moves a vertex only by what the earlier
+  // passes left of its budget.
+  SolveSchedule out;
+  out.V = in.input;
+  out.runs.resize(groups.size());
+  DecidedTerms decided;  // by the races of the first pass, for the later ones
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<size_t> done{0};
+  // The engine's threads run patches, or the two scalar factors of a lone patch's iterative
+  // solve: BLAS threads would only contend, and their number would change the rounding, so
+  // the result would depend on the threads parameter (serial_libraries.h). Switched once per
+  // call, since switching OpenBLAS back and forth restarts its threads.
+  const SerialLibraries serial_libraries;
+  const size_t threads = thread_count(params.threads);
+  const auto run_round = [&](const std::vector<size_t>& round, const Pass& p) {
+    Params group_params = params;  // a patch alone in its round has every thread
+    group_params.threads = static_cast<int>(round.size() == 1 ? threads : 1);
+    parallel_for(round.size(), std::min(round.size(), threads), [&](size_t k) {
+      // Only the caller's thread reports; below 100 % even when groups run again (rare).
+      const auto group_progress = [&](double fraction) {
+        if (progress && std::this_thread::get_id() == caller)
+          progress(std::min(99, static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
+                                                 static_cast<double>(groups.size()))),
+                   "deforming");
+      };
+      out.runs[round[k]] = {run_group(in, out.V, groups[round[k]], *p.constrained, group_params,
+                                      decided, p.per_group, group_progress),
+                            p.name};
+      ++done;
+    });
+    if (p.per_group)  // the per-patch races decide for the later passes
+      for (size_t gi : round)
+        for (const PatchFit& fit : out.runs[gi].run.fits)
+          if (fit.reason == TermReason::Measured) decided[fit.id] = fit.term;
+  };
+  const auto keep = [&](size_t gi) {  // a group's result into out.V
+    const GroupRun& run = out.runs[gi].run;
+    for (size_t l = 0; l < run.group.global_vertex.size(); ++l)
+      if (!run.group.fixed[l])
+        out.V.row(run.group.global_vertex[l]) = run.outcome.V.row(static_cast<Eigen::Index>(l));
+  };
+  for (const Pass& p : passes) {
+    const std::vector<std::vector<int>> pass_groups(groups.begin() + static_cast<long>(p.first),
+                                                    groups.begin() + static_cast<long>(p.last));
+    for (std::vector<size_t> round : solve_rounds(pass_groups, F, *p.constrained)) {
+      for (size_t& gi : round) gi += p.first;
+      const bool together = round.size() > 1;
+      const Positions start = together ? out.V : Positions();
+      const RoundFigures before =
+          together ? round_figures(out.V, F, in.interior, groups, round) : RoundFigures();
+      run_round(round, p);
+      for (size_t gi : round) keep(gi);
+      if (!together ||
+          !round_made_worse(before, round_figures(out.V, F, in.interior, groups, round), round,
+                            out.runs))
+        continue;
+      // Never worse (§5.4): each group's step was checked with its neighbours where they
+      // started, and together they raised the curvature where they meet. The first group's
+      // result stands; the others run again, each from the one before, as they used to.
+      std::vector<int> ids;
+      for (size_t gi : round)
+        for (const PatchFit& fit : out.runs[gi].run.fits) ids.push_back(fit.id);
+      out.reruns.push_back(ids);
+      out.V = start;
+      keep(round.front());
+      for (size_t k = 1; k < round.size(); ++k) {
+        run_round({round[k]}, p);
+        keep(round[k]);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace qd

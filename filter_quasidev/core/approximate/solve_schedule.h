@@ -1,0 +1,35 @@
+// The schedule of a solve: its passes, the rounds of each pass (solve_rounds.h) and the re-runs
+// the never-worse rule asks for (§5.4). One pass with fixed seams (the paper). Free seams take
+// three, each starting where the one before ended, so none can undo another: all patches in
+// one group (its one step scale is set by the worst patch; Developability::Auto races one term
+// for all of them), then each solve group with its seams held (where Auto measures each patch's
+// own term, which the last pass keeps), then each again moving its seam vertices (moved by one
+// group, seen by the next, so they stay shared).
+#pragma once
+
+#include <vector>
+
+#include "approximate/group_run.h"
+#include "approximate/result.h"
+#include "common/progress.h"
+
+namespace qd {
+
+struct ScheduledRun {
+  GroupRun run;
+  SolvePass pass = SolvePass::Only;
+};
+
+struct SolveSchedule {
+  Positions V;                           // the positions after the last pass
+  std::vector<ScheduledRun> runs;        // the groups' last runs, pass by pass
+  std::vector<std::vector<int>> reruns;  // the patch ids of each round solved again in turn
+};
+
+// group: solve group per face (solve_groups.h); constrained: per vertex, held with free seams;
+// held: held with fixed seams.
+SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
+                           const std::vector<char>& constrained, const std::vector<char>& held,
+                           const Progress& progress);
+
+}  // namespace qd

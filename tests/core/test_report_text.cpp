@@ -1,0 +1,90 @@
+// The words of the Result's enums (report_text.h) and the engine's neutral naming of a
+// parameter's setting (setting_text.h).
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "approximate/approximate_log.h"
+#include "approximate/report_text.h"
+
+namespace qd {
+namespace {
+
+TEST(ReportText, EveryTermHasItsOwnName) {
+  std::set<std::string> names;
+  for (Term t : {Term::None, Term::Curve, Term::Defect, Term::Both}) names.insert(term_name(t));
+  EXPECT_EQ(names, (std::set<std::string>{"none", "curve", "defect", "both"}));
+}
+
+TEST(ReportText, EveryTermChoiceHasText) {
+  std::set<std::string> texts;
+  for (TermChoice c :
+       {TermChoice::AsAsked, TermChoice::Planar, TermChoice::TooSmall, TermChoice::NoCurveFits,
+        TermChoice::EarlierPass, TermChoice::AutoNoCurveFits, TermChoice::AutoNotRaced,
+        TermChoice::Auto, TermChoice::AutoMeasured}) {
+    PatchReport p;
+    p.developability_reason = c;
+    p.candidates = {{Term::Curve, 4, 50.0, 0.1, true, false}};
+    texts.insert(term_choice_text(p));
+  }
+  EXPECT_EQ(texts.size(), 9u);
+  EXPECT_EQ(texts.count(""), 0u);
+}
+
+TEST(ReportText, MeasuredChoiceNamesEveryCandidate) {
+  PatchReport p;
+  p.developability_reason = TermChoice::AutoMeasured;
+  p.candidates = {{Term::Curve, 4, 50.0, 0.1, false, true},
+                  {Term::Both, 6, 70.0, 0.1, true, false}};
+  const std::string text = term_choice_text(p);
+  EXPECT_EQ(text.rfind("auto, measured:", 0), 0u) << text;
+  EXPECT_NE(text.find("curve"), std::string::npos) << text;
+  EXPECT_NE(text.find("both"), std::string::npos) << text;
+  EXPECT_NE(text.find("(kept)"), std::string::npos) << text;
+}
+
+TEST(ReportText, StopsOfSeveralPassesNameEachPassInOrder) {
+  std::vector<PassStop> stops(3);
+  stops[0].pass = SolvePass::AllAtOnce;
+  stops[1].pass = SolvePass::SeamsHeld;
+  stops[1].reason = PatchStop::RatioAbd;
+  stops[2].pass = SolvePass::SeamsFree;
+  stops[2].reason = PatchStop::Unfitted;
+  stops[2].detail = "too few faces";
+  const std::string text = stop_reason_text(stops);
+  const size_t all = text.find(pass_name(SolvePass::AllAtOnce));
+  const size_t held = text.find(pass_name(SolvePass::SeamsHeld));
+  const size_t free = text.find(pass_name(SolvePass::SeamsFree));
+  ASSERT_NE(free, std::string::npos) << text;
+  EXPECT_LT(all, held);
+  EXPECT_LT(held, free);
+  EXPECT_NE(text.find("too few faces"), std::string::npos) << text;
+  EXPECT_EQ(stop_reason_text({PassStop{}}), "maxIter reached");  // the only pass is not named
+}
+
+TEST(ReportText, EveryStopHasText) {
+  for (PatchStop s :
+       {PatchStop::MaxIter, PatchStop::Plateau, PatchStop::RatioAbd, PatchStop::RatioObd,
+        PatchStop::NoStep, PatchStop::Planar, PatchStop::Unfitted}) {
+    PassStop stop;
+    stop.reason = s;
+    EXPECT_FALSE(pass_stop_text(stop).empty());
+  }
+}
+
+// The segment-first note names its parameter as the front end spells it, and by its declared
+// name without one: never as a command-line option.
+TEST(SettingText, EngineNamesNoCommandOption) {
+  const std::string neutral = segmented_note("it is closed", 4, {});
+  EXPECT_EQ(neutral.find("--"), std::string::npos) << neutral;
+  EXPECT_NE(neutral.find("segment_first = never"), std::string::npos) << neutral;
+  const std::string spelt =
+      segmented_note("it is closed", 4, [](const std::string& name, const std::string& value) {
+        return "<" + name + ":" + value + ">";
+      });
+  EXPECT_NE(spelt.find("<segment_first:never>"), std::string::npos) << spelt;
+}
+
+}  // namespace
+}  // namespace qd
