@@ -46,11 +46,12 @@ from pathlib import Path
 
 import numpy as np
 from PIL import Image, ImageDraw
+from plyfile import PlyData
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import flat_measures as fm  # noqa: E402
 import render  # noqa: E402
-from plyio import PlyData, PlyElement, PlyProperty, read_ply, write_ply  # noqa: E402
+import ply_columns as pc  # noqa: E402
 
 ROOT = Path(__file__).resolve().parent.parent
 LSCM = "compute_texcoord_parametrization_least_squares_conformal_maps"
@@ -69,14 +70,14 @@ class Job:
     """A mesh file as the tables see it: positions, faces, patch id per face."""
 
     def __init__(self, path: Path):
-        ply = read_ply(path)
+        ply = PlyData.read(path)
         self.path = path
         self.ply = ply
-        self.V = np.asarray(ply.vertices(), float)
-        self.F = np.asarray(ply.faces(), np.int64)
+        self.V = pc.positions(ply)
+        self.F = np.asarray(pc.faces(ply), np.int64)
         for name in ("quality", "patch"):
-            if ply.has("face", name):
-                self.patch = np.rint(np.asarray(ply.get("face", name), float)).astype(np.int64)
+            if pc.has(ply, "face", name):
+                self.patch = np.rint(np.asarray(pc.column(ply, "face", name), float)).astype(np.int64)
                 break
         else:
             self.patch = np.zeros(len(self.F), np.int64)
@@ -92,7 +93,7 @@ def flatten(quasidev: Path, mesh: Path, work: Path, name: str) -> tuple[np.ndarr
     """(wedge UV, report, SVG path) of `quasidev flatten` on mesh."""
     out, report, svg = work / f"{name}.flat.ply", work / f"{name}.flat.json", work / f"{name}.svg"
     run(quasidev, "flatten", mesh, out, "--report", report, "--svg-file", svg, "--quiet")
-    uv = np.asarray(read_ply(out).get("face", "texcoord"), float)
+    uv = np.asarray(pc.column(PlyData.read(out), "face", "texcoord"), float)
     return uv, json.loads(report.read_text()), svg
 
 
@@ -173,24 +174,20 @@ def against_meshlab(pymeshlab, job: Job, uv: np.ndarray) -> list[dict]:
 
 def cut_like_pattern(job: Job, positions: np.ndarray, work: Path, name: str) -> Path:
     """The mesh (with `positions`) cut along the seams of its texture coordinates, as a PLY."""
-    pattern = np.asarray(job.ply.get("face", "texcoord"), float)
+    pattern = np.asarray(pc.column(job.ply, "face", "texcoord"), float)
     vertex_of, F = fm.split_by_uv(job.F, pattern)
     V = positions[vertex_of]
-    ply = PlyData("binary_little_endian", ["cut along its sewing pattern by flatten_compare.py"])
-    ply.elements["vertex"] = PlyElement("vertex", len(V), [PlyProperty(c, "double") for c in "xyz"],
-                                        {c: V[:, k].tolist() for k, c in enumerate("xyz")})
-    ply.elements["face"] = PlyElement("face", len(F), [PlyProperty("vertex_indices", "int", "uchar"),
-                                                       PlyProperty("quality", "float")],
-                                      {"vertex_indices": [tuple(map(int, f)) for f in F],
-                                       "quality": job.patch.astype(float).tolist()})
+    ply = PlyData([pc.element("vertex", [(c, "f8", V[:, k]) for k, c in enumerate("xyz")]),
+                   pc.element("face", [("vertex_indices", ("u1", "i4"), F), ("quality", "f4", job.patch)])],
+                  comments=["cut along its sewing pattern by flatten_compare.py"])
     out = work / f"{name}.cut.ply"
-    write_ply(out, ply)
+    ply.write(out)
     return out
 
 
 def against_pattern(job: Job, uv: np.ndarray) -> list[dict]:
     """Per panel: our piece (cut like the pattern) against the pattern piece, rigidly aligned."""
-    pattern = np.asarray(job.ply.get("face", "texcoord"), float)
+    pattern = np.asarray(pc.column(job.ply, "face", "texcoord"), float)
     rows = []
     for patch in np.unique(job.patch):
         faces = job.patch == patch
@@ -274,7 +271,7 @@ def picture(mesh: Path, svg: Path, out: Path, size: tuple[int, int] = (1200, 560
     """The 3D mesh in patch colours beside its SVG pattern, pieces filled in the same colours."""
     if not shutil.which("rsvg-convert"):
         raise SystemExit("rsvg-convert missing (Debian package librsvg2-bin; scripts/setup.sh installs it)")
-    m = render.Mesh(read_ply(mesh), mesh.name)
+    m = render.Mesh(PlyData.read(mesh), mesh.name)
     ids = np.unique(m.patch)
     panel = (size[0] // 2, size[1] - 40)
     basis, scale, centre, _ = render.camera([m], None, None, panel)

@@ -15,11 +15,13 @@ import subprocess
 import sys
 import tempfile
 
+from plyfile import PlyData
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
-import plyio  # noqa: E402
 from mesh_folders import SAMPLES, existing, find_mesh  # noqa: E402
+from ply_columns import column, faces, positions  # noqa: E402
 
 PAPER_TABLE1 = {"ratio_abd": [90.9, 39.7, 6.3], "ratio_obd": [89.2, 54.3, 8.2]}
 PAPER_TABLE2 = [  # δ_err, ratio_ABD, ratio_OBD, max vertex position difference, max Gauss curvature
@@ -39,7 +41,7 @@ def quasidev(build, mesh, *args):
     subprocess.run(cmd, check=True)
     with open(rep) as f:
         report = json.load(f)
-    return report, plyio.read_ply(mesh), plyio.read_ply(out)
+    return report, PlyData.read(mesh), PlyData.read(out)
 
 
 def face_normals(vertices, faces):
@@ -52,15 +54,15 @@ def face_normals(vertices, faces):
 
 
 def flipped_faces(before, after):
-    n0 = face_normals(before.vertices(), before.faces())
-    n1 = face_normals(after.vertices(), after.faces())
+    n0 = face_normals(positions(before), faces(before))
+    n1 = face_normals(positions(after), faces(after))
     return sum(1 for a, b in zip(n0, n1) if sum(x * y for x, y in zip(a, b)) <= 0)
 
 
 def seam_vertices(ply):
     patch_of = {}
     seams = set()
-    for face, q in zip(ply.faces(), ply.get("face", "quality")):
+    for face, q in zip(faces(ply), column(ply, "face", "quality")):
         for v in face:
             if patch_of.setdefault(v, round(q)) != round(q):
                 seams.add(v)
@@ -68,7 +70,7 @@ def seam_vertices(ply):
 
 
 def max_seam_move(before, after):
-    vb, va = before.vertices(), after.vertices()
+    vb, va = positions(before), positions(after)
     return max((math.dist(vb[v], va[v]) for v in seam_vertices(before)), default=0.0)
 
 
@@ -108,7 +110,7 @@ def seams(build):
 
 def a_in_ae(ply_path):
     """Bump amplitude a in units of AE, from the sample's header comment."""
-    for line in plyio.read_ply(ply_path).comments:
+    for line in PlyData.read(ply_path).comments:
         if "amplitude a = " in line:
             return float(line.split("=")[-1].split("×")[0].split("x")[0].strip())
     raise ValueError("no amplitude comment in " + ply_path)

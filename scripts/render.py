@@ -6,7 +6,7 @@ Input:  BEFORE.ply [AFTER.ply]: ascii or binary PLY, float or double x y z, opti
 Output: a PNG (default 800x450): one panel per mesh, the same orthographic camera for both,
         z-buffered, Gouraud (or --flat) shading times the colour: vertex colour if present,
         else patch colours from face quality, else grey (or forced by --color).
-Needs numpy and Pillow (scripts/requirements-render.txt). Example:
+Needs numpy, Pillow and plyfile (scripts/requirements-render.txt). Example:
     .venv/bin/python scripts/render.py in.ply out.ply -o cmp.png --title "quasidev" --color quality
 """
 from __future__ import annotations
@@ -20,7 +20,9 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from plyio import PlyData, PlyError, read_ply  # noqa: E402
+from plyfile import PlyData, PlyParseError  # noqa: E402
+
+from ply_columns import column, faces, has, positions  # noqa: E402
 
 SUPERSAMPLE = 2
 BACKGROUND = (255, 255, 255)
@@ -38,9 +40,9 @@ class Mesh:
 
     def __init__(self, ply: PlyData, name: str):
         self.name = name
-        self.v = np.array(ply.vertices(), dtype=np.float64).reshape(-1, 3)
+        self.v = positions(ply)
         tris, owner = [], []
-        for k, poly in enumerate(ply.faces()):
+        for k, poly in enumerate(faces(ply)):
             for j in range(1, len(poly) - 1):
                 tris.append((poly[0], poly[j], poly[j + 1]))
                 owner.append(k)
@@ -50,12 +52,12 @@ class Mesh:
         if self.f.min() < 0 or self.f.max() >= len(self.v):
             raise SystemExit(f"render.py: {name} has face indices outside 0..{len(self.v) - 1}")
         self.vcolor = None
-        if all(ply.has("vertex", c) for c in ("red", "green", "blue")):
-            self.vcolor = np.stack([np.asarray(ply.get("vertex", c), dtype=np.float64)
+        if all(has(ply, "vertex", c) for c in ("red", "green", "blue")):
+            self.vcolor = np.stack([np.asarray(column(ply, "vertex", c), dtype=np.float64)
                                     for c in ("red", "green", "blue")], axis=1) / 255.0
-        self.vquality = np.asarray(ply.get("vertex", "quality"), np.float64) if ply.has("vertex", "quality") else None
-        patch = next((p for p in ("quality", "patch") if ply.has("face", p)), None)  # as the command reads
-        self.patch = (np.asarray(ply.get("face", patch), np.float64)[np.array(owner, dtype=np.int64)]
+        self.vquality = np.asarray(column(ply, "vertex", "quality"), np.float64) if has(ply, "vertex", "quality") else None
+        patch = next((p for p in ("quality", "patch") if has(ply, "face", p)), None)  # as the command reads
+        self.patch = (np.asarray(column(ply, "face", patch), np.float64)[np.array(owner, dtype=np.int64)]
                       if patch else None)
 
     def face_normals(self) -> tuple[np.ndarray, np.ndarray]:
@@ -229,7 +231,7 @@ def font(size: int):
 
 def render(paths: list[Path], out: Path, title: str, labels: list[str], view, up: str | None,
            mode: str, qrange, flat: bool, size: tuple[int, int]) -> None:
-    meshes = [Mesh(read_ply(p), p.name) for p in paths]
+    meshes = [Mesh(PlyData.read(p), p.name) for p in paths]
     title_h, label_h = 34, 22
     panel = (size[0] // len(meshes), size[1] - title_h - label_h)
     basis, scale, centre, (az, el, up) = camera(meshes, view, up, panel)
@@ -278,7 +280,7 @@ def main() -> None:
     try:
         render(args.meshes, args.out, args.title, labels, args.view, args.up, args.color, args.qrange,
                args.flat, (w, h))
-    except PlyError as exc:
+    except PlyParseError as exc:
         sys.exit(f"render.py: cannot read the input PLY: {exc}")
 
 

@@ -25,11 +25,11 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
+from plyfile import PlyData
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import render  # noqa: E402
 from compare_developability import average_edge, gaussian_curvature  # noqa: E402
-from plyio import read_ply  # noqa: E402
 from tradeoff import DEFAULT_QUASIDEV, input_figures, load_pair, measure  # noqa: E402
 
 COLORMAP = "YlOrRd"
@@ -61,7 +61,7 @@ def make_figure(before_path: Path, after_path: Path, out: Path, name: str, after
     import matplotlib.pyplot as plt
     from matplotlib import cm, colors
 
-    meshes = [render.Mesh(read_ply(p), p.name) for p in (before_path, after_path)]
+    meshes = [render.Mesh(PlyData.read(p), p.name) for p in (before_path, after_path)]
     if len(meshes[0].v) != len(meshes[1].v):
         raise SystemExit("render_before_after.py: BEFORE and AFTER have different vertex counts")
     k = [abs_curvature(m) for m in meshes]

@@ -25,10 +25,11 @@ import sys
 import tempfile
 
 import numpy as np
+from plyfile import PlyData
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import mesh_family  # noqa: E402
-import plyio  # noqa: E402
+import ply_columns  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_QUASIDEV = os.path.join(ROOT, "build", "bin", "quasidev")
@@ -40,8 +41,7 @@ SINGLE = ("curve", "defect", "both")
 
 
 def positions(path: str) -> np.ndarray:
-    ply = plyio.read_ply(path)
-    return np.column_stack([ply.get("vertex", k) for k in "xyz"]).astype(float)
+    return ply_columns.positions(PlyData.read(path))
 
 
 def flipped_faces(V0, V1, F) -> int:

@@ -15,8 +15,9 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plyfile import column, element, prop_type, read_ply, write_ply  # noqa: E402
+from plyfile import PlyData  # noqa: E402
 from test_quasidev_cli import BINARY, DATA, REPO, assert_clean_failure, run  # noqa: E402
+from ply_columns import column, columns, element  # noqa: E402
 
 sys.path.insert(0, str(REPO / "scripts"))
 import flat_measures  # noqa: E402
@@ -30,7 +31,7 @@ SHIRT = DATA / "garment_shirt_initial_diffavatar.ply"
 
 def flattened(path):
     """(V, F, UV) of a flattened PLY."""
-    elements, _ = read_ply(path)
+    elements = PlyData.read(path)
     V = np.array(list(zip(*(column(elements, "vertex", c) for c in "xyz"))), float)
     F = np.array(column(elements, "face", "vertex_indices"), int)
     UV = np.array(column(elements, "face", "texcoord"), float)
@@ -74,11 +75,10 @@ def test_developable_cone_flattens_to_its_true_lengths(tmp_path):
 
 def test_a_tube_gets_one_cut_and_still_its_true_lengths(tmp_path):
     """The cone without patch ids is one tube: cut once (said in the log), then exact."""
-    elements, comments = read_ply(CONE)
-    face = element(elements, "face")
-    face[2] = [p for p in face[2] if p[0] != "quality"]
+    cone = PlyData.read(CONE)
+    face = element("face", [c for c in columns(cone["face"]) if c[0] != "quality"])
     tube = tmp_path / "tube.ply"
-    write_ply(tube, elements, "binary_little_endian", comments)
+    PlyData([cone["vertex"], face], comments=cone.comments).write(tube)
     out, report, r = flatten(tmp_path, tube)
     assert len(report["pieces"]) == 1 and not report["has_patch_ids"]
     assert "cut to a disk along 1 shortest path joining its 2 boundary loops" in report["pieces"][0]["cut"]
@@ -94,7 +94,7 @@ def test_crumpled_crane_flattens_to_its_known_pattern_lengths(tmp_path):
     V, F, UV = flattened(out)
     assert flat_measures.edge_length_errors(V, F, UV).max() < 1e-3
     assert abs(flat_measures.area_ratio(V, F, UV) - 1) < 1e-3
-    known = np.array(column(read_ply(CRANE)[0], "face", "texcoord"), float)
+    known = np.array(column(PlyData.read(CRANE), "face", "texcoord"), float)
     scale = np.sqrt(flat_measures.area_ratio(V, F, known))  # its pattern's unit
     ours = flat_measures.edge_length_errors(V, F, UV)
     theirs = flat_measures.edge_length_errors(V, F, known / scale)
@@ -105,38 +105,40 @@ def test_crumpled_crane_flattens_to_its_known_pattern_lengths(tmp_path):
 # What the output keeps and adds
 
 
+def described(ply, name):
+    """Each property of an element: its header line and its values."""
+    return [(str(p), column(ply, name, p.name)) for p in ply[name].properties]
+
+
 def test_everything_but_texcoord_quality_and_face_colour_is_kept_bit_for_bit(tmp_path):
     """Vertices (float positions stay float), faces and every other property and element of
     the input pass through unchanged; texcoord, face quality and colour are replaced."""
     src = tmp_path / "rich.ply"
-    elements, _ = read_ply(CONE)
-    vertex, face = element(elements, "vertex"), element(elements, "face")
-    n, m = vertex[1], face[1]
-    vertex[2] = [[c, "float", False, [float(np.float32(x)) for x in v]] for c, _, _, v in vertex[2]]
-    vertex[2] += [["nx", "float", False, [0.5] * n], ["ny", "float", False, [0.25] * n],
-                  ["nz", "float", False, [-1.0] * n], ["red", "uchar", False, [i % 256 for i in range(n)]],
-                  ["green", "uchar", False, [7] * n], ["blue", "uchar", False, [9] * n],
-                  ["flags", "int", False, [32 * (i % 2) for i in range(n)]],
-                  ["temperature", "short", False, [i % 300 - 150 for i in range(n)]]]
-    face[2] += [["texcoord", ("uchar", "float"), True, [(1.0, 2.0, 3.0, 4.0, 5.0, 6.0)] * m],
-                ["red", "uchar", False, [1] * m], ["patch", "int", False, [int(q) for q in column(elements, "face", "quality")]],
-                ["texnumber", "int", False, [0] * m]]
-    elements.append(["edge", 2, [["vertex1", "int", False, [0, 1]], ["vertex2", "int", False, [1, 2]]]])
-    write_ply(src, elements, "binary_big_endian", ["made by test_flatten_cli", "TextureFile none.png"])
+    cone = PlyData.read(CONE)
+    n, m = cone["vertex"].count, cone["face"].count
+    vertex = [(c, "f4", cone["vertex"][c]) for c in "xyz"]
+    vertex += [("nx", "f4", [0.5] * n), ("ny", "f4", [0.25] * n), ("nz", "f4", [-1.0] * n),
+               ("red", "u1", [i % 256 for i in range(n)]), ("green", "u1", [7] * n), ("blue", "u1", [9] * n),
+               ("flags", "i4", [32 * (i % 2) for i in range(n)]),
+               ("temperature", "i2", [i % 300 - 150 for i in range(n)])]
+    face = columns(cone["face"])
+    face += [("texcoord", ("u1", "f4"), [(1.0, 2.0, 3.0, 4.0, 5.0, 6.0)] * m), ("red", "u1", [1] * m),
+             ("patch", "i4", cone["face"]["quality"]), ("texnumber", "i4", [0] * m)]
+    edge = element("edge", [("vertex1", "i4", [0, 1]), ("vertex2", "i4", [1, 2])])
+    PlyData([element("vertex", vertex), element("face", face), edge], byte_order=">",
+            comments=["made by test_flatten_cli", "TextureFile none.png"]).write(src)
     out, _, _ = flatten(tmp_path, src)
-    inp, in_comments = read_ply(src)
-    res, out_comments = read_ply(out)
-    assert out_comments == in_comments
-    assert element(res, "vertex")[2] == element(inp, "vertex")[2], "vertices bit for bit, types too"
-    kept = {p[0]: p for p in element(inp, "face")[2]}
+    inp, res = PlyData.read(src), PlyData.read(out)
+    assert res.comments == inp.comments
+    assert described(res, "vertex") == described(inp, "vertex"), "vertices bit for bit, types too"
     replaced = {"texcoord", "quality", "red", "green", "blue", "alpha"}
-    got = {p[0]: p for p in element(res, "face")[2]}
-    for name, p in kept.items():
-        if name not in replaced:
-            assert got[name] == p, name
-    assert element(res, "edge") == element(inp, "edge")
-    assert prop_type(res, "face", "texcoord") == ("uchar", "float"), "what MeshLab reads"
-    assert prop_type(res, "face", "quality") == "double"
+    got = dict(zip((p.name for p in res["face"].properties), described(res, "face")))
+    for p, kept in zip(inp["face"].properties, described(inp, "face")):
+        if p.name not in replaced:
+            assert got[p.name] == kept, p.name
+    assert described(res, "edge") == described(inp, "edge")
+    assert str(res["face"].ply_property("texcoord")) == "property list uchar float texcoord", "what MeshLab reads"
+    assert str(res["face"].ply_property("quality")) == "property double quality"
     assert column(res, "face", "texcoord") != column(inp, "face", "texcoord")
     assert set(column(res, "face", "alpha")) == {255}
 
@@ -145,7 +147,7 @@ def test_face_quality_is_the_signed_stretch_with_a_ramp_centred_on_green(tmp_pat
     mesh = SHIRT
     out, report, _ = flatten(tmp_path, mesh)
     V, F, UV = flattened(out)
-    res, _ = read_ply(out)
+    res = PlyData.read(out)
     q = np.array(column(res, "face", "quality"))
     s = flat_measures.singular_values(V, F, UV)
     # σ1 − 1, or −(1 − σ2) where the compression is larger: recomputed from the float UV (the

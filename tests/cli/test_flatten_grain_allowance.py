@@ -15,8 +15,9 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plyfile import column, read_ply  # noqa: E402
+from plyfile import PlyData  # noqa: E402
 from test_quasidev_cli import BINARY, REPO, run  # noqa: E402
+from ply_columns import column  # noqa: E402
 
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 
@@ -36,7 +37,7 @@ def flatten(tmp_path, mesh, *options, name="out"):
 
 def mesh_uv(path):
     """(V, F, UV per face corner as F×3×2) of a flattened PLY."""
-    elements, _ = read_ply(path)
+    elements = PlyData.read(path)
     V = np.array(list(zip(*(column(elements, "vertex", c) for c in "xyz"))), float)
     F = np.array(column(elements, "face", "vertex_indices"), int)
     UV = np.array(column(elements, "face", "texcoord"), float).reshape(-1, 3, 2)
@@ -77,7 +78,7 @@ def assert_cut_lines_reach_the_allowance(report, a):
 
 def test_cone_panels_get_an_allowance_and_lie_grain_up(tmp_path):
     a = 0.05
-    patch = np.array(column(read_ply(CONE)[0], "face", "quality")).round().astype(int)
+    patch = np.array(column(PlyData.read(CONE), "face", "quality")).round().astype(int)
     out, report, _ = flatten(tmp_path, CONE, "--seam-allowance", a, "--grain-direction", "0,0,1")
     assert len(report["pieces"]) == 3
     assert_cut_lines_reach_the_allowance(report, a)
@@ -139,5 +140,5 @@ def test_ply_panel_names_stay_in_the_output(tmp_path):
     mesh.write_bytes(named)
     out, report, _ = flatten(tmp_path, mesh, "--seam-allowance", 0.02)
     assert len(report["pieces"]) == 3
-    comments = read_ply(out)[1]
+    comments = PlyData.read(out).comments
     assert "patch 0 front" in comments and "patch 2 left side" in comments

@@ -14,8 +14,9 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plyfile import column, read_ply, write_ply  # noqa: E402
+from plyfile import PlyData  # noqa: E402
 from test_quasidev_cli import BINARY, REPO, assert_clean_failure, run  # noqa: E402
+from ply_columns import column  # noqa: E402
 
 pymupdf = pytest.importorskip("pymupdf")
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
@@ -29,18 +30,17 @@ CUT_LINE = 0.8  # pt, the width of the cut lines (pdf_writer.cpp)
 
 def scaled(mesh, factor, path):
     """The mesh with every coordinate times factor, as a binary PLY."""
-    elements, comments = read_ply(mesh)
-    for name, _, props in elements:
-        for prop in props:
-            if name == "vertex" and prop[0] in ("x", "y", "z"):
-                prop[3] = [v * factor for v in prop[3]]
-    write_ply(path, elements, "binary_little_endian", comments)
+    ply = PlyData.read(mesh)
+    for c in "xyz":
+        ply["vertex"][c] *= factor
+    ply.text, ply.byte_order = False, "<"
+    ply.write(path)
     return path
 
 
 def pattern_size(out_ply):
     """Width and height of the laid-out pattern: the texture coordinates' extent (model units)."""
-    uv = np.array(column(read_ply(out_ply)[0], "face", "texcoord"), float).reshape(-1, 2)
+    uv = np.array(column(PlyData.read(out_ply), "face", "texcoord"), float).reshape(-1, 2)
     return uv.max(axis=0) - uv.min(axis=0)
 
 

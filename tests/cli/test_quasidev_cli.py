@@ -14,7 +14,9 @@ import sys
 import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plyfile import column, element, has, prop_type, read_ply, write_ply  # noqa: E402
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "scripts"))
+from plyfile import PlyData  # noqa: E402
+from ply_columns import column, has  # noqa: E402
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD = pathlib.Path(os.environ.get("QD_BUILD_DIR", REPO / "build"))
@@ -47,7 +49,7 @@ def assert_clean_failure(r, output, status=None):
 
 
 def read_input_faces(path):
-    elements, _ = read_ply(path)
+    elements = PlyData.read(path)
     return elements
 
 
@@ -62,12 +64,12 @@ def test_success_keeps_order_adds_quality_and_colour(mesh, tmp_path):
     assert r.returncode == 0, r.stderr
     assert r.stdout.strip(), "the per-patch log goes to stdout"
     inp = read_input_faces(mesh)
-    res, _ = read_ply(out)
+    res = PlyData.read(out)
     # Same vertices and faces, same order; positions double.
-    assert element(res, "vertex")[1] == element(inp, "vertex")[1]
+    assert res["vertex"].count == inp["vertex"].count
     in_faces = column(inp, "face", "vertex_indices")
     assert column(res, "face", "vertex_indices") == in_faces
-    assert prop_type(res, "vertex", "x") == "double"
+    assert str(res["vertex"].ply_property("x")) == "property double x"
     # Quality finite, colours present and not all equal (the ramp spans the range).
     q = column(res, "vertex", "quality")
     assert all(math.isfinite(v) for v in q)
@@ -76,8 +78,8 @@ def test_success_keeps_order_adds_quality_and_colour(mesh, tmp_path):
     assert len(colours) > 1 or len(set(q)) == 1
     assert set(column(res, "vertex", "alpha")) == {255}
     # Every face property of the input passes through bit-identical (texcoord, quality, patch).
-    for name, _, _, values in element(inp, "face")[2]:
-        assert column(res, "face", name) == values, name
+    for prop in inp["face"].properties:
+        assert column(res, "face", prop.name) == column(inp, "face", prop.name), prop.name
     # The displacement respects the tolerance bound loosely: no vertex flies away.
     rep = json.loads(report.read_text())
     assert rep["faces"] == len(in_faces)
@@ -97,8 +99,10 @@ def test_texcoords_and_face_quality_pass_through(tmp_path):
     mesh = DATA / "garment_shirt_initial_diffavatar.ply"
     out = tmp_path / "out.ply"
     assert run(mesh, out, "--quiet").returncode == 0
-    inp, in_comments = read_ply(mesh)
-    res, out_comments = read_ply(out)
+    inp = PlyData.read(mesh)
+    in_comments = inp.comments
+    res = PlyData.read(out)
+    out_comments = res.comments
     assert column(res, "face", "texcoord") == column(inp, "face", "texcoord")
     assert column(res, "face", "quality") == column(inp, "face", "quality")
     assert column(res, "face", "patch") == column(inp, "face", "patch")
@@ -113,7 +117,7 @@ def test_free_seams_remove_at_least_what_fixed_seams_remove_on_a_garment(tmp_pat
         out, report = tmp_path / f"{seams}.ply", tmp_path / f"{seams}.json"
         assert run(mesh, out, "--seam-mode", seams, "--report", report, "--quiet").returncode == 0
         figures[seams] = json.loads(report.read_text())
-        assert column(read_ply(out)[0], "face", "vertex_indices") == column(read_ply(mesh)[0], "face", "vertex_indices")
+        assert column(PlyData.read(out), "face", "vertex_indices") == column(PlyData.read(mesh), "face", "vertex_indices")
     assert figures["free"]["abd_reduction"] >= figures["fixed"]["abd_reduction"] > 60
     stops = [p["stop_reason"] for p in figures["free"]["patches"]]
     assert all("seams held:" in s and "seams free:" in s and "all patches at once:" in s for s in stops)
@@ -133,8 +137,8 @@ def test_displacement_quality_equals_the_vertex_moves(tmp_path):
     mesh = SAMPLES[0]
     out = tmp_path / "out.ply"
     assert run(mesh, out, "--output-quality", "displacement", "--no-colorize", "--quiet").returncode == 0
-    inp, _ = read_ply(mesh)
-    res, _ = read_ply(out)
+    inp = PlyData.read(mesh)
+    res = PlyData.read(out)
     assert not has(res, "vertex", "red")
     moved = [math.dist(a, b) for a, b in zip(
         zip(*(column(inp, "vertex", c) for c in "xyz")),
@@ -146,15 +150,15 @@ def test_displacement_quality_equals_the_vertex_moves(tmp_path):
 
 def test_constrained_vertices_do_not_move(tmp_path):
     mesh = SAMPLES[0]
-    inp, _ = read_ply(mesh)
-    n = element(inp, "vertex")[1]
+    inp = PlyData.read(mesh)
+    n = inp["vertex"].count
     chosen = list(range(0, n, 7))
     cfile = tmp_path / "fixed.txt"
     cfile.write_text("# every 7th vertex\n" + "\n".join(map(str, chosen)) + "\n")
     out, report = tmp_path / "out.ply", tmp_path / "r.json"
     r = run(mesh, out, "--constraints-file", cfile, "--report", report, "--quiet")
     assert r.returncode == 0, r.stderr
-    res, _ = read_ply(out)
+    res = PlyData.read(out)
     for c in "xyz":
         a, b = column(inp, "vertex", c), column(res, "vertex", c)
         assert all(a[i] == b[i] for i in chosen)
@@ -198,8 +202,8 @@ def test_quiet_prints_nothing_and_polygons_are_noted(tmp_path):
     assert r.returncode == 0, r.stderr
     assert "fan-triangulated" in r.stderr
     assert any("fan-triangulated" in n for n in json.loads((tmp_path / "n.json").read_text())["notes"])
-    res, _ = read_ply(tmp_path / "n.ply")
-    assert element(res, "face")[1] == 2 * 49
+    res = PlyData.read(tmp_path / "n.ply")
+    assert res["face"].count == 2 * 49
 
 
 def test_every_ply_encoding_and_off_give_the_same_result(tmp_path):
@@ -207,20 +211,22 @@ def test_every_ply_encoding_and_off_give_the_same_result(tmp_path):
     mesh = REPO / "sample_meshes" / "bumpy_cylinder.ply"
     if not mesh.exists():
         mesh = SAMPLES[0]
-    elements, comments = read_ply(mesh)
+    elements = PlyData.read(mesh)
     outputs = {}
-    for fmt in ("binary_little_endian", "binary_big_endian", "ascii"):
+    for fmt, text, order in (("binary_little_endian", False, "<"), ("binary_big_endian", False, ">"),
+                             ("ascii", True, "=")):
         src = tmp_path / f"in_{fmt}.ply"
-        write_ply(src, elements, fmt, comments)
+        elements.text, elements.byte_order = text, order
+        elements.write(src)
         out = tmp_path / f"out_{fmt}.ply"
         r = run(src, out, "--quiet")
         assert r.returncode == 0, r.stderr
         outputs[fmt] = out.read_bytes()
     assert outputs["binary_big_endian"] == outputs["binary_little_endian"]
     assert outputs["ascii"] == outputs["binary_little_endian"]
-    out, _ = read_ply(tmp_path / "out_ascii.ply")
+    out = PlyData.read(tmp_path / "out_ascii.ply")
     assert column(out, "vertex", "x") != column(elements, "vertex", "x"), "the mesh should move"
-    if any(len(set(p[3])) > 1 for p in element(elements, "face")[2] if p[0] in ("quality", "patch")):
+    if any(len(set(column(elements, "face", p))) > 1 for p in ("quality", "patch") if has(elements, "face", p)):
         return  # several patches: OFF carries no patch ids
     xyz = list(zip(*(column(elements, "vertex", c) for c in "xyz")))
     faces = column(elements, "face", "vertex_indices")
@@ -230,8 +236,8 @@ def test_every_ply_encoding_and_off_give_the_same_result(tmp_path):
                    "".join(f"{len(f)} " + " ".join(map(str, f)) + "\n" for f in faces))
     r = run(off, tmp_path / "off.ply", "--quiet")
     assert r.returncode == 0, r.stderr
-    a, _ = read_ply(tmp_path / "off.ply")
-    b, _ = read_ply(tmp_path / "out_ascii.ply")
+    a = PlyData.read(tmp_path / "off.ply")
+    b = PlyData.read(tmp_path / "out_ascii.ply")
     for c in ("x", "y", "z", "quality"):
         assert column(a, "vertex", c) == column(b, "vertex", c)
 

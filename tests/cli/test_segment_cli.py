@@ -10,8 +10,9 @@ import sys
 import pytest
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from plyfile import column, element, has, read_ply, write_ply  # noqa: E402
+from plyfile import PlyData  # noqa: E402
 from test_quasidev_cli import BINARY, REPO, assert_clean_failure, run  # noqa: E402
+from ply_columns import column, columns, element, has  # noqa: E402
 
 pytestmark = pytest.mark.skipif(not BINARY.exists(), reason=f"{BINARY} not built")
 
@@ -23,7 +24,7 @@ def segment(tmp_path, mesh, *options):
     out, report = tmp_path / "out.ply", tmp_path / "report.json"
     r = run("segment", mesh, out, "--report", report, *options)
     assert r.returncode == 0, r.stderr
-    elements, _ = read_ply(out)
+    elements = PlyData.read(out)
     return elements, json.loads(report.read_text()), r
 
 
@@ -48,11 +49,11 @@ def test_every_face_gets_one_patch_and_the_rest_is_kept(mesh, tmp_path):
     source = REPO / "sample_meshes" / mesh
     elements, report, r = segment(tmp_path, source)
     assert_one_patch_per_face(elements, report)
-    given, _ = read_ply(source)
+    given = PlyData.read(source)
     for c in "xyz":
         assert column(elements, "vertex", c) == column(given, "vertex", c)
     assert column(elements, "face", "vertex_indices") == column(given, "face", "vertex_indices")
-    assert element(elements, "vertex")[1] == element(given, "vertex")[1]
+    assert elements["vertex"].count == given["vertex"].count
     lines = r.stdout.splitlines()
     assert len(lines) == report["patch_count"] + 1 and lines[-1].startswith("Segmented ")
     assert all(line.startswith(f"Patch {k}: ") for k, line in enumerate(lines[:-1]))
@@ -60,7 +61,7 @@ def test_every_face_gets_one_patch_and_the_rest_is_kept(mesh, tmp_path):
 
 def test_capped_cylinder_splits_into_its_three_pieces(tmp_path):
     elements, report, _ = segment(tmp_path, CAPPED)
-    given, _ = read_ply(CAPPED)
+    given = PlyData.read(CAPPED)
     pieces = [int(q) for q in column(given, "face", "quality")]
     ids = patch_ids(elements)
     assert report["patch_count"] == 3
@@ -75,7 +76,7 @@ def test_capped_cylinder_splits_into_its_three_pieces(tmp_path):
 
 def test_keep_patches_keeps_the_fitting_input_patches(tmp_path):
     elements, report, _ = segment(tmp_path, PATCHES, "--keep-patches")
-    given, _ = read_ply(PATCHES)
+    given = PlyData.read(PATCHES)
     pairs = set(zip((int(q) for q in column(given, "face", "quality")), patch_ids(elements)))
     assert report["patch_count"] == 4 and len(pairs) == 4
     assert all(p["kept"] for p in report["patches"])
@@ -84,20 +85,20 @@ def test_keep_patches_keeps_the_fitting_input_patches(tmp_path):
 
 def test_selection_border_is_kept(tmp_path):
     """Selecting the faces of the side's lower half (PLY face flags bit 0x20) adds a border."""
-    given, comments = read_ply(CAPPED)
+    given = PlyData.read(CAPPED)
     V = list(zip(*(column(given, "vertex", c) for c in "xyz")))
     F = column(given, "face", "vertex_indices")
     pieces = [int(q) for q in column(given, "face", "quality")]
     lower = [int(p == 0 and sum(V[v][2] for v in f) / 3 < 1.0) for f, p in zip(F, pieces)]
-    name, count, props = element(given, "face")
-    props = props + [("flags", "int", False, [0x20 * s for s in lower])]
+    flags = [0x20 * s for s in lower]
+    face = element("face", columns(given["face"]) + [("flags", "i4", flags)])
     src = tmp_path / "selected.ply"
-    write_ply(src, [element(given, "vertex"), (name, count, props)], "binary_little_endian", comments)
+    PlyData([given["vertex"], face], comments=given.comments).write(src)
     elements, report, _ = segment(tmp_path, src)
     assert report["patch_count"] == 4 and report["selected_faces"] == sum(lower)
     ids = patch_ids(elements)
     assert not {ids[f] for f in range(len(F)) if lower[f]} & {ids[f] for f in range(len(F)) if not lower[f]}
-    assert column(elements, "face", "flags") == props[-1][3]
+    assert column(elements, "face", "flags") == flags
 
 
 def test_report_and_log_name_every_figure(tmp_path):
@@ -184,7 +185,7 @@ def test_segment_then_approximate_runs_on_a_closed_mesh(tmp_path):
     r = run("approximate", seg, out, "--seam-mode", "free", "--report", report)
     assert r.returncode == 0, r.stderr
     assert [p["faces"] for p in json.loads(report.read_text())["patches"]] == [1536, 240, 240]
-    assert has(read_ply(out)[0], "face", "quality")
+    assert has(PlyData.read(out), "face", "quality")
 
 
 def test_each_warning_is_said_once(tmp_path):

@@ -1,6 +1,6 @@
 """Helpers of the MeshLab 2020.09 integration tests.
 
-Inputs: PLY files (read with scripts/plyio.py), .mlx filter scripts, the build directory.
+Inputs: PLY files (read with plyfile), .mlx filter scripts, the build directory.
 Outputs: meshes as numpy arrays, independent geometry figures (angle defects, boundary and seam
 vertices), the `quasidev` command line equivalent to an .mlx, and runners for the real
 meshlabserver (under xvfb-run) and the quasidev command.
@@ -17,10 +17,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from plyfile import PlyData
 
 REPO = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(REPO / "scripts"))
-from plyio import PlyData, PlyElement, PlyProperty, read_ply, write_ply  # noqa: E402
+from ply_columns import column, element, faces, has, positions  # noqa: E402
 
 FILTER_NAME = "Quasi-Developable Approximation"
 FLATTEN_FILTER_NAME = "Quasi-Developable Flattening"
@@ -65,18 +66,19 @@ class Mesh:
 
 
 def _column(ply: PlyData, element: str, prop: str, dtype) -> np.ndarray | None:
-    return np.asarray(ply.get(element, prop), dtype=dtype) if ply.has(element, prop) else None
+    return np.asarray(column(ply, element, prop), dtype=dtype) if has(ply, element, prop) else None
 
 
 def load_mesh(path: Path) -> Mesh:
-    ply = read_ply(path)
+    ply = PlyData.read(path)
+
     def rgb(element: str) -> np.ndarray | None:
-        if not all(ply.has(element, c) for c in ("red", "green", "blue")):
+        if not all(has(ply, element, c) for c in ("red", "green", "blue")):
             return None
-        return np.stack([np.asarray(ply.get(element, c), np.uint8) for c in ("red", "green", "blue")], 1)
+        return np.stack([np.asarray(column(ply, element, c), np.uint8) for c in ("red", "green", "blue")], 1)
     texcoord = _column(ply, "face", "texcoord", np.float64)
-    return Mesh(v=np.asarray(ply.vertices(), np.float64).reshape(-1, 3),
-                f=np.asarray(ply.faces(), np.int64).reshape(-1, 3),
+    return Mesh(v=positions(ply),
+                f=np.asarray(faces(ply), np.int64).reshape(-1, 3),
                 face_quality=_column(ply, "face", "quality", np.float64),
                 flags=_column(ply, "vertex", "flags", np.int64),
                 quality=_column(ply, "vertex", "quality", np.float64),
@@ -88,20 +90,13 @@ def load_mesh(path: Path) -> Mesh:
 def save_float_mesh(mesh: Mesh, path: Path, face_quality: bool = True) -> None:
     """Writes mesh with float32 x y z (what MeshLab 2020.09 stores), vertex flags and face
     quality when present (face quality dropped when face_quality is False)."""
-    vprops = [PlyProperty(c, "float") for c in "xyz"]
-    vdata = {c: [float(x) for x in np.float32(mesh.v[:, k])] for k, c in enumerate("xyz")}
+    vcols = [(c, "f4", mesh.v[:, k]) for k, c in enumerate("xyz")]
     if mesh.flags is not None:
-        vprops.append(PlyProperty("flags", "int"))
-        vdata["flags"] = [int(x) for x in mesh.flags]
-    fprops = [PlyProperty("vertex_indices", "int", "uchar")]
-    fdata = {"vertex_indices": [tuple(int(i) for i in t) for t in mesh.f]}
+        vcols.append(("flags", "i4", mesh.flags))
+    fcols = [("vertex_indices", ("u1", "i4"), mesh.f)]
     if face_quality and mesh.face_quality is not None:
-        fprops.append(PlyProperty("quality", "float"))
-        fdata["quality"] = [float(q) for q in mesh.face_quality]
-    ply = PlyData(format="binary_little_endian", comments=["written by tests/meshlab"])
-    ply.elements["vertex"] = PlyElement("vertex", len(mesh.v), vprops, vdata)
-    ply.elements["face"] = PlyElement("face", len(mesh.f), fprops, fdata)
-    write_ply(path, ply)
+        fcols.append(("quality", "f4", mesh.face_quality))
+    PlyData([element("vertex", vcols), element("face", fcols)], comments=["written by tests/meshlab"]).write(path)
 
 
 def float_rounded(mesh: Mesh) -> Mesh:

@@ -15,10 +15,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from plyfile import PlyData
 
-from ml2020_support import (REPO, Mesh, PlyProperty, read_ply, write_ply, boundary_vertices, cli_arguments, float_rounded,
+from ml2020_support import (REPO, Mesh, boundary_vertices, cli_arguments, float_rounded,
                             integrated_curvature, load_mesh, mlx_parameters, run_meshlabserver,
                             run_quasidev, save_float_mesh, seam_vertices)
+from ply_columns import column, element, positions
 
 SAMPLES = REPO / "sample_meshes"
 
@@ -149,27 +151,28 @@ def test_log_names_the_developability_term(job):
 
 def test_texture_coordinates_and_face_colours_untouched(meshlab_prefix, tmp_path):
     """Per-wedge texture coordinates and face colours (absent from the samples) survive."""
-    ply = read_ply(SAMPLES / "selected.ply")
-    for prop in ply.elements["vertex"].properties:
-        if prop.name in ("x", "y", "z"):
-            prop.type = "float"  # what MeshLab 2020.09 stores, so the positions compare exactly
-    faces = ply.elements["face"]
+    ply = PlyData.read(SAMPLES / "selected.ply")
+    vertices, faces = ply["vertex"], ply["face"]
+    # float positions: what MeshLab 2020.09 stores, so the positions compare exactly
+    vcols = [(p.name, "f4" if p.name in "xyz" else vertices[p.name].dtype, vertices[p.name])
+             for p in vertices.properties]
     rng = np.random.default_rng(7)
     colours = rng.integers(0, 256, size=(faces.count, 3))
-    faces.properties += [PlyProperty(c, "uchar") for c in ("red", "green", "blue")]
-    faces.properties.append(PlyProperty("texcoord", "float", "uchar"))
-    for k, c in enumerate(("red", "green", "blue")):
-        faces.data[c] = [int(x) for x in colours[:, k]]
-    faces.data["texcoord"] = [tuple(float(x) for x in np.float32(rng.random(6))) for _ in range(faces.count)]
-    write_ply(tmp_path / "in.ply", ply)
+    texcoord = np.float32([rng.random(6) for _ in range(faces.count)])
+    fcols = [(p.name, ("u1", "i4") if p.name == "vertex_indices" else faces[p.name].dtype, faces[p.name])
+             for p in faces.properties]
+    fcols += [(c, "u1", colours[:, k]) for k, c in enumerate(("red", "green", "blue"))]
+    fcols.append(("texcoord", ("u1", "f4"), texcoord))
+    given = PlyData([element("vertex", vcols), element("face", fcols)], comments=ply.comments)
+    given.write(tmp_path / "in.ply")
     run = run_meshlabserver(meshlab_prefix, tmp_path / "in.ply", tmp_path / "out.ply", SAMPLES / "default.mlx",
                             saved=("vc", "vq", "vf", "fq", "fc", "wt"))
     assert run.returncode == 0, run.stdout[-3000:]
-    out = read_ply(tmp_path / "out.ply")
-    for c in ("red", "green", "blue"):
-        assert out.get("face", c) == faces.data[c], f"face colour channel {c} changed"
-    np.testing.assert_array_equal(np.array(out.get("face", "texcoord")), np.array(faces.data["texcoord"]))
-    moved = np.abs(np.array(out.vertices()) - np.float32(np.array(ply.vertices()))).max()
+    out = PlyData.read(tmp_path / "out.ply")
+    for k, c in enumerate(("red", "green", "blue")):
+        assert column(out, "face", c) == colours[:, k].tolist(), f"face colour channel {c} changed"
+    np.testing.assert_array_equal(np.array(column(out, "face", "texcoord")), texcoord)
+    moved = np.abs(positions(out) - np.float32(positions(ply))).max()
     assert moved > 0, "the filter did not run"
 
 

@@ -13,8 +13,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ml2020_support import (REPO, SELECTED, PlyProperty, read_ply, run_meshlabserver, write_mlx,
-                            write_ply)
+from plyfile import PlyData
+
+from ml2020_support import REPO, SELECTED, run_meshlabserver, write_mlx
+from ply_columns import column, element, faces, positions
 
 VERTEX_KEPT = ("flags", "red", "green", "blue", "alpha", "texture_u", "texture_v")
 FACE_KEPT = ("flags", "quality", "red", "green", "blue", "alpha", "texcoord")
@@ -36,29 +38,20 @@ ATTRIBUTE_TO_QUALITY = """ <filter name="Per Vertex Quality Function">
 
 def decorated_input(path) -> None:
     """selected.ply with float positions and every attribute above, from a fixed random seed."""
-    ply = read_ply(REPO / "sample_meshes" / "selected.ply")
+    ply = PlyData.read(REPO / "sample_meshes" / "selected.ply")
     rng = np.random.default_rng(6)
-    vertices, faces = ply.elements["vertex"], ply.elements["face"]
-    for prop in vertices.properties:
-        if prop.name in "xyz":
-            prop.type = "float"
-            vertices.data[prop.name] = [float(c) for c in np.float32(vertices.data[prop.name])]
+    vert, face = ply["vertex"], ply["face"]
     uchar = ("red", "green", "blue", "alpha")
-    vertices.properties += [PlyProperty(c, "uchar") for c in uchar]
-    vertices.properties += [PlyProperty(c, "float") for c in ("texture_u", "texture_v")]
-    for c in uchar:
-        vertices.data[c] = [int(x) for x in rng.integers(0, 256, vertices.count)]
-    for c in ("texture_u", "texture_v"):
-        vertices.data[c] = [float(x) for x in np.float32(rng.random(vertices.count))]
-    faces.properties.insert(1, PlyProperty("flags", "int"))
-    faces.data["flags"] = [SELECTED if k % 7 == 0 else 0 for k in range(faces.count)]
-    faces.properties += [PlyProperty(c, "uchar") for c in uchar]
-    faces.properties.append(PlyProperty("texcoord", "float", "uchar"))
-    for c in uchar:
-        faces.data[c] = [int(x) for x in rng.integers(0, 256, faces.count)]
-    corners = np.float32(rng.random((faces.count, 6)))
-    faces.data["texcoord"] = [tuple(float(x) for x in row) for row in corners]
-    write_ply(path, ply)
+    vcols = [(p.name, "f4" if p.name in "xyz" else vert[p.name].dtype, vert[p.name])
+             for p in vert.properties]
+    vcols += [(c, "u1", rng.integers(0, 256, vert.count)) for c in uchar]
+    vcols += [(c, "f4", rng.random(vert.count)) for c in ("texture_u", "texture_v")]
+    fcols = [("vertex_indices", ("u1", "i4"), face["vertex_indices"]),
+             ("flags", "i4", [SELECTED if k % 7 == 0 else 0 for k in range(face.count)]),
+             ("quality", "f4", face["quality"])]
+    fcols += [(c, "u1", rng.integers(0, 256, face.count)) for c in uchar]
+    fcols.append(("texcoord", ("u1", "f4"), rng.random((face.count, 6))))
+    PlyData([element("vertex", vcols), element("face", fcols)], comments=ply.comments).write(path)
 
 
 def test_every_attribute_the_filter_does_not_own_is_bit_identical(meshlab_prefix, tmp_path):
@@ -68,13 +61,13 @@ def test_every_attribute_the_filter_does_not_own_is_bit_identical(meshlab_prefix
     run = run_meshlabserver(meshlab_prefix, tmp_path / "in.ply", tmp_path / "out.ply", script,
                             saved=("vc", "vf", "vq", "vt", "fc", "ff", "fq", "wt"))
     assert run.returncode == 0, run.stdout[-3000:]
-    given, out = read_ply(tmp_path / "in.ply"), read_ply(tmp_path / "out.ply")
-    assert any(f & SELECTED for f in given.get("vertex", "flags"))
+    given, out = PlyData.read(tmp_path / "in.ply"), PlyData.read(tmp_path / "out.ply")
+    assert any(f & SELECTED for f in column(given, "vertex", "flags"))
     for prop in VERTEX_KEPT:
-        assert out.get("vertex", prop) == given.get("vertex", prop), f"vertex {prop} changed"
+        assert column(out, "vertex", prop) == column(given, "vertex", prop), f"vertex {prop} changed"
     for prop in FACE_KEPT:
-        assert out.get("face", prop) == given.get("face", prop), f"face {prop} changed"
-    assert out.faces() == given.faces()
-    assert out.get("vertex", "quality") == given.get("vertex", "x"), "the custom attribute changed"
-    moved = np.abs(np.array(out.vertices()) - np.array(given.vertices())).max()
+        assert column(out, "face", prop) == column(given, "face", prop), f"face {prop} changed"
+    assert faces(out) == faces(given)
+    assert column(out, "vertex", "quality") == column(given, "vertex", "x"), "the custom attribute changed"
+    moved = np.abs(positions(out) - positions(given)).max()
     assert moved > 1e-3, "the filter did not move the vertices"

@@ -4,7 +4,7 @@ happened, so a crash of pymeshlab or of the plugin shows as a signal to the call
 
 Usage: python bad_corpus_worker.py PLUGIN FILTER MESH.ply PARAMETERS_JSON {file|arrays}
   file   = load MESH.ply with pymeshlab's own importer;
-  arrays = read it with scripts/plyio.py and hand pymeshlab the raw vertex and face arrays
+  arrays = read it with plyfile and hand pymeshlab the raw vertex and face arrays
            (pymeshlab's importer drops non-finite vertices, so NaN/inf reach the filter only so).
 Output: {"stage": "load" | "filter" | "done", "message": str, "unchanged": bool,
          "faces_in": int, "faces_out": int, "finite": bool, "warnings": int (the filter's count),
@@ -19,9 +19,10 @@ from pathlib import Path
 
 import numpy as np
 import pymeshlab
+from plyfile import PlyData
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
-from plyio import read_ply  # noqa: E402
+from ply_columns import faces, positions  # noqa: E402
 
 
 def snapshot(mesh) -> list[np.ndarray]:
@@ -48,9 +49,9 @@ def main(plugin: str, filter_name: str, path: str, parameters: str, mode: str) -
         if mode == "file":
             ms.load_new_mesh(path)
         else:
-            ply = read_ply(path)
-            V = np.asarray(ply.vertices(), float).reshape(-1, 3)
-            F = np.asarray(ply.faces(), np.int32).reshape(-1, 3)
+            ply = PlyData.read(path)
+            V = positions(ply)
+            F = np.asarray(faces(ply), np.int32).reshape(-1, 3)
             ms.add_mesh(pymeshlab.Mesh(vertex_matrix=V, face_matrix=F))
     except pymeshlab.PyMeshLabException as e:
         return {"stage": "load", "message": str(e)}

@@ -1,5 +1,5 @@
-"""Tests of the generated sample meshes (scripts/make_samples.py), the PLY reader (scripts/plyio.py)
-and the renderer (scripts/render.py).
+"""Tests of the generated sample meshes (scripts/make_samples.py), the PLY conveniences
+(scripts/ply_columns.py) and the renderer (scripts/render.py).
 
 Input:  sample_meshes/*.ply + SOURCES.md as committed; the scripts.
 Output: pytest results. Run: .venv/bin/python -m pytest tests/samples
@@ -14,13 +14,16 @@ import sys
 from collections import defaultdict
 from pathlib import Path
 
+import numpy as np
 import pytest
+from plyfile import PlyData
 
 ROOT = Path(__file__).resolve().parents[2]
 SCRIPTS = ROOT / "scripts"
 SAMPLES = ROOT / "sample_meshes"
 sys.path.insert(0, str(SCRIPTS))
-import plyio  # noqa: E402
+import ply_columns  # noqa: E402
+from ply_columns import column, element, has, positions  # noqa: E402
 
 SINGLE = ["lampshade.ply", "bumpy_cylinder.ply", "bumpy_cone.ply"]
 MULTI = ["patches.ply", "selected.ply"]
@@ -28,8 +31,12 @@ ALL = SINGLE + MULTI
 SELECTED = 0x20
 
 
-def load(name: str) -> plyio.PlyData:
-    return plyio.read_ply(SAMPLES / name)
+def load(name: str) -> PlyData:
+    return PlyData.read(SAMPLES / name)
+
+
+def vertices(ply: PlyData) -> list[tuple[float, float, float]]:
+    return [tuple(p) for p in positions(ply).tolist()]
 
 
 def directed_edges(faces):
@@ -100,9 +107,8 @@ def mean_edge(pts, faces) -> float:
 # --- generator ---------------------------------------------------------------------------------
 
 def test_regenerating_gives_identical_bytes(tmp_path):
-    # -S: no site-packages, so this also proves the generator needs only the standard library.
     for run in ("a", "b"):
-        subprocess.run([sys.executable, "-S", str(SCRIPTS / "make_samples.py"), "--out", str(tmp_path / run)],
+        subprocess.run([sys.executable, str(SCRIPTS / "make_samples.py"), "--out", str(tmp_path / run)],
                        check=True, capture_output=True)
     for name in ALL + ["SOURCES.md"]:
         fresh = (tmp_path / "a" / name).read_bytes()
@@ -127,20 +133,18 @@ def test_sources_md_lists_every_file_with_licence_and_command():
 @pytest.mark.parametrize("name", ALL)
 def test_format_is_the_documented_one(name):
     ply = load(name)
-    assert ply.format == "binary_little_endian"
-    assert [(p.name, p.type) for p in ply.elements["vertex"].properties[:3]] == \
-        [("x", "double"), ("y", "double"), ("z", "double")]
-    fprops = {p.name: p for p in ply.elements["face"].properties}
-    assert (fprops["vertex_indices"].count_type, fprops["vertex_indices"].type) == ("uchar", "int")
-    assert fprops["quality"].type == "float"
+    assert not ply.text and ply.byte_order == "<"
+    assert [str(p) for p in ply["vertex"].properties[:3]] == [f"property double {c}" for c in "xyz"]
+    assert [str(p) for p in ply["face"].properties] == ["property list uchar int vertex_indices",
+                                                        "property float quality"]
     assert any(c.startswith(name[:-4] + ":") for c in ply.comments), "header comment says what it is"
-    assert 1000 <= ply.count("face") <= 10000
+    assert 1000 <= ply["face"].count <= 10000
 
 
 @pytest.mark.parametrize("name", ALL)
 def test_manifold_consistently_oriented_open_no_degenerate_faces(name):
     ply = load(name)
-    pts, faces = ply.vertices(), ply.faces()
+    pts, faces = vertices(ply), ply_columns.faces(ply)
     assert all(len(f) == 3 for f in faces)
     de = directed_edges(faces)
     assert max(de.values()) == 1, "a directed edge used twice: inconsistent orientation or non-manifold"
@@ -154,8 +158,8 @@ def test_manifold_consistently_oriented_open_no_degenerate_faces(name):
 @pytest.mark.parametrize("name", SINGLE)
 def test_surfaces_of_revolution_face_outwards_with_one_patch(name):
     ply = load(name)
-    pts, faces = ply.vertices(), ply.faces()
-    assert set(ply.get("face", "quality")) == {0.0}
+    pts, faces = vertices(ply), ply_columns.faces(ply)
+    assert set(column(ply, "face", "quality")) == {0.0}
     for f in faces:
         n = face_normal(pts, f)
         cx, cy = (sum(pts[v][0] for v in f) / 3, sum(pts[v][1] for v in f) / 3)
@@ -165,7 +169,7 @@ def test_surfaces_of_revolution_face_outwards_with_one_patch(name):
 @pytest.mark.parametrize("name", ["bumpy_cylinder.ply", "bumpy_cone.ply"])
 def test_recorded_bump_amplitude_matches_geometry(name):
     ply = load(name)
-    pts, faces = ply.vertices(), ply.faces()
+    pts, faces = vertices(ply), ply_columns.faces(ply)
     header = " ".join(ply.comments)
     m = re.search(r"amplitude a = ([0-9.]+) model units = ([0-9.]+) x average edge length \(([0-9.]+)\)", header)
     assert m, "header records the bump amplitude"
@@ -186,7 +190,7 @@ def test_recorded_bump_amplitude_matches_geometry(name):
 @pytest.mark.parametrize("name", MULTI)
 def test_four_patches_each_edge_connected_with_seams(name):
     ply = load(name)
-    faces, patch = ply.faces(), ply.get("face", "quality")
+    faces, patch = ply_columns.faces(ply), column(ply, "face", "quality")
     assert sorted(set(patch)) == [0.0, 1.0, 2.0, 3.0]
     by_edge = defaultdict(list)
     for fi, f in enumerate(faces):
@@ -211,14 +215,14 @@ def test_four_patches_each_edge_connected_with_seams(name):
 
 def test_selected_is_patches_plus_a_ring_of_selected_vertices():
     sel, base = load("selected.ply"), load("patches.ply")
-    assert sel.vertices() == base.vertices() and sel.faces() == base.faces()
-    assert sel.get("face", "quality") == base.get("face", "quality")
-    assert not base.has("vertex", "flags")
-    flags = sel.get("vertex", "flags")
+    assert vertices(sel) == vertices(base) and ply_columns.faces(sel) == ply_columns.faces(base)
+    assert column(sel, "face", "quality") == column(base, "face", "quality")
+    assert not has(base, "vertex", "flags")
+    flags = column(sel, "vertex", "flags")
     chosen = {v for v, fl in enumerate(flags) if fl & SELECTED}
     assert 8 <= len(chosen) < len(flags) // 4
     neighbours = defaultdict(set)
-    for a, b in directed_edges(sel.faces()):
+    for a, b in directed_edges(ply_columns.faces(sel)):
         if a in chosen and b in chosen:
             neighbours[a].add(b)
             neighbours[b].add(a)
@@ -248,56 +252,41 @@ def test_meshlab_2020_reads_selection_and_patch_ids(tmp_path):
     subprocess.run(["xvfb-run", "-a", "-s", "-screen 0 640x480x24", "meshlabserver", "-i", str(SAMPLES / "selected.ply"),
                     "-o", str(out), "-m", "fq", "-s", str(tmp_path / "del.mlx")],
                    check=True, capture_output=True, timeout=300)
-    sel, res = load("selected.ply"), plyio.read_ply(out)
-    nsel = sum(1 for fl in sel.get("vertex", "flags") if fl & SELECTED)
-    assert res.count("vertex") == sel.count("vertex") - nsel
-    assert sorted(set(res.get("face", "quality"))) == [0.0, 1.0, 2.0, 3.0]
+    sel, res = load("selected.ply"), PlyData.read(out)
+    nsel = sum(1 for fl in column(sel, "vertex", "flags") if fl & SELECTED)
+    assert res["vertex"].count == sel["vertex"].count - nsel
+    assert sorted(set(column(res, "face", "quality"))) == [0.0, 1.0, 2.0, 3.0]
 
 
 # --- PLY reader ------------------------------------------------------------------------------------
 
-def meshlab_style(ply: plyio.PlyData) -> plyio.PlyData:
-    """A copy like MeshLab 2020.09 writes it: float xyz, uchar rgba, float vertex quality, face list."""
-    pts = ply.vertices()
-    vprops = [plyio.PlyProperty(n, "float") for n in "xyz"] + \
-        [plyio.PlyProperty(n, "uchar") for n in ("red", "green", "blue", "alpha")] + \
-        [plyio.PlyProperty("quality", "float")]
-    vdata = {n: [p[k] for p in pts] for k, n in enumerate("xyz")}
-    zmid = 0.5 * (min(p[2] for p in pts) + max(p[2] for p in pts))
-    vdata.update(red=[255 if p[2] > zmid else 0 for p in pts], green=[90] * len(pts),
-                 blue=[200] * len(pts), alpha=[255] * len(pts), quality=[p[2] - zmid for p in pts])
-    face = plyio.PlyElement("face", ply.count("face"), [plyio.PlyProperty("vertex_indices", "int", "uchar"),
-                                                        plyio.PlyProperty("quality", "float")],
-                            {"vertex_indices": ply.faces(), "quality": ply.get("face", "quality")})
-    return plyio.PlyData("binary_little_endian", ["VCGLIB generated"],
-                         {"vertex": plyio.PlyElement("vertex", len(pts), vprops, vdata), "face": face})
+def meshlab_style(ply: PlyData, text: bool = False) -> PlyData:
+    """A copy like MeshLab 2020.09 writes it: float xyz, uchar rgba, float vertex quality, face
+    list, a camera element."""
+    pts = positions(ply)
+    zmid = 0.5 * (pts[:, 2].min() + pts[:, 2].max())
+    n = len(pts)
+    vertex = [(c, "f4", pts[:, k]) for k, c in enumerate("xyz")]
+    vertex += [("red", "u1", np.where(pts[:, 2] > zmid, 255, 0)), ("green", "u1", [90] * n),
+               ("blue", "u1", [200] * n), ("alpha", "u1", [255] * n), ("quality", "f4", pts[:, 2] - zmid)]
+    face = [("vertex_indices", ("u1", "i4"), ply_columns.faces(ply)), ("quality", "f4", ply["face"]["quality"])]
+    camera = [("view_px", "f4", [0.25]), ("view_py", "f4", [0.5])]
+    return PlyData([element("vertex", vertex), element("face", face), element("camera", camera)],
+                   text=text, comments=["VCGLIB generated"])
 
 
-@pytest.mark.parametrize("fmt", ["ascii", "binary_big_endian", "binary_little_endian"])
-def test_plyio_round_trip_in_every_format(tmp_path, fmt):
+@pytest.mark.parametrize("text, order", [(True, "="), (False, ">"), (False, "<")])
+def test_ply_columns_read_meshlab_style_in_every_format(tmp_path, text, order):
     ply = meshlab_style(load("bumpy_cone.ply"))
-    ply.format = fmt
-    ply.elements["camera"] = plyio.PlyElement("camera", 1, [plyio.PlyProperty("view_px", "double")],
-                                              {"view_px": [0.25]})
-    plyio.write_ply(tmp_path / "m.ply", ply)
-    back = plyio.read_ply(tmp_path / "m.ply")
-    assert back.format == fmt and list(back.elements) == ["vertex", "face", "camera"]
-    assert back.faces() == [tuple(f) for f in ply.faces()]
-    assert back.get("vertex", "red") == ply.get("vertex", "red")
-    for k in "xyz":
-        assert all(math.isclose(a, b, rel_tol=1e-6, abs_tol=1e-6)
-                   for a, b in zip(back.get("vertex", k), ply.get("vertex", k)))
-    assert back.get("camera", "view_px") == [0.25]
-
-
-def test_plyio_rejects_truncated_and_non_ply_files(tmp_path):
-    data = (SAMPLES / "lampshade.ply").read_bytes()
-    (tmp_path / "cut.ply").write_bytes(data[:-100])
-    with pytest.raises(plyio.PlyError, match="truncated"):
-        plyio.read_ply(tmp_path / "cut.ply")
-    (tmp_path / "no.ply").write_bytes(b"solid x\n")
-    with pytest.raises(plyio.PlyError, match="not a PLY"):
-        plyio.read_ply(tmp_path / "no.ply")
+    ply.text, ply.byte_order = text, order
+    ply.write(tmp_path / "m.ply")
+    back = PlyData.read(tmp_path / "m.ply")
+    assert [e.name for e in back.elements] == ["vertex", "face", "camera"]
+    assert ply_columns.faces(back) == ply_columns.faces(load("bumpy_cone.ply"))
+    assert column(back, "vertex", "red") == column(ply, "vertex", "red")
+    assert np.allclose(positions(back), positions(load("bumpy_cone.ply")), rtol=1e-6, atol=1e-6)
+    assert has(back, "camera", "view_px") and not has(back, "camera", "x")
+    assert column(back, "camera", "view_px") == [0.25]
 
 
 # --- renderer -----------------------------------------------------------------------------------
@@ -331,10 +320,8 @@ def test_render_before_after_is_not_blank(tmp_path):
 
 
 def test_render_reads_meshlab_style_and_ascii_plys_with_quality(tmp_path):
-    ply = meshlab_style(load("lampshade.ply"))
-    plyio.write_ply(tmp_path / "ml.ply", ply)
-    ply.format = "ascii"
-    plyio.write_ply(tmp_path / "ml_ascii.ply", ply)
+    meshlab_style(load("lampshade.ply")).write(tmp_path / "ml.ply")
+    meshlab_style(load("lampshade.ply"), text=True).write(tmp_path / "ml_ascii.ply")
     img = render(tmp_path, tmp_path / "ml.ply", tmp_path / "ml_ascii.ply", "--color", "quality", "--view", "30,20")
     assert drawn_fraction(img) > 0.05
     reds = sum(1 for r, g, b in pixels(img) if r > g + 60 and r > b + 60)

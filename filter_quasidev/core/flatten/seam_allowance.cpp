@@ -25,7 +25,8 @@ Eigen::Vector2d ray_exit(const Eigen::Vector2d& at, const Eigen::Vector2d& outwa
   double nearest = std::numeric_limits<double>::infinity();
   for (const Outline& loop : cut)
     for (size_t i = 0; i < loop.size(); ++i) {
-      const Eigen::Vector2d a = loop[i], edge = loop[(i + 1) % loop.size()] - a;
+      const Eigen::Vector2d& a = loop[i];
+      const Eigen::Vector2d edge = loop[(i + 1) % loop.size()] - a;
       const double denominator = cross(outward, edge);
       if (denominator == 0) continue;                         // parallel
       const double t = cross(a - at, edge) / denominator;     // along the ray
