@@ -149,7 +149,8 @@ void run(const Args& a) {
     unknowns = std::max(unknowns, g.unknowns);
     for (const qd::PatchReport& p : result.patches) {
       if (p.id != g.patch && g.patch >= 0) continue;
-      const int solves = p.iterations + (p.stop_reason.rfind("never-worse", 0) == 0 ? 1 : 0);
+      const bool refused = !p.stops.empty() && p.stops.back().reason == qd::PatchStop::NoStep;
+      const int solves = p.iterations + (refused ? 1 : 0);  // the refused step was solved too
       const int refactorizations = fixed_targets ? 0 : std::max(0, solves - 1);
       floor += g.factor_ms + refactorizations * g.refactor_ms + solves * g.solve_ms;
       if (g.patch < 0) break;  // one joint group: count it once

@@ -23,7 +23,7 @@ qd::Result sample_result() {
   qd::PatchReport p;
   p.id = 7;
   p.tolerance = 0.3;
-  p.developability = "defect";
+  p.developability = qd::Term::Defect;
   qd::IterationReport it;
   it.iteration = 1;
   it.ratio_abd = 2.0 / 3.0;

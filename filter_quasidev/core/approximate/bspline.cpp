@@ -35,7 +35,7 @@ void uniform_cubic_basis(double t, double N[4], double dN[4], double ddN[4]) {
 
 }  // namespace
 
-BSpline2::BSpline2(std::vector<Vec2> control, bool periodic, Vec2 period_shift)
+BSpline2::BSpline2(std::vector<Vec2> control, bool periodic, const Vec2& period_shift)
     : control_(std::move(control)), periodic_(periodic), shift_(period_shift) {
   const int n = control_count();
   if (n < kDegree + 1) throw Error("internal: a cubic B-spline needs at least 4 control points");
@@ -84,8 +84,8 @@ void BSpline2::basis(double u, int& first, double N[4], double dN[4], double ddN
                         safe_div(U[i + q + 1] - u, U[i + q + 1] - U[i + 1]) * value(q - 1, i + 1);
   // Derivative of a degree-q basis function from degree q-1 ones (P&T Eq. 2.9).
   auto derivative = [&](int q, int i, auto&& lower) {
-    return q * (safe_div(lower(i), U[i + q] - U[i]) -
-                safe_div(lower(i + 1), U[i + q + 1] - U[i + 1]));
+    return q *
+           (safe_div(lower(i), U[i + q] - U[i]) - safe_div(lower(i + 1), U[i + q + 1] - U[i + 1]));
   };
   auto value1 = [&](int i) { return value(1, i); };
   auto value2 = [&](int i) { return value(2, i); };
@@ -139,7 +139,7 @@ CurvePoint BSpline2::eval_from_basis(double u) const {
 }
 
 std::vector<double> chord_length_params(const std::vector<Vec2>& points, bool closed,
-                                        Vec2 period_shift) {
+                                        const Vec2& period_shift) {
   const size_t m = points.size();
   std::vector<double> t(m, 0.0);
   for (size_t j = 1; j < m; ++j) t[j] = t[j - 1] + (points[j] - points[j - 1]).norm();
@@ -151,7 +151,7 @@ std::vector<double> chord_length_params(const std::vector<Vec2>& points, bool cl
 }
 
 BSpline2 fit_bspline(const std::vector<Vec2>& points, const std::vector<double>& params,
-                     int control_count, double smoothing, bool periodic, Vec2 period_shift) {
+                     int control_count, double smoothing, bool periodic, const Vec2& period_shift) {
   const int n = control_count;
   if (n < kDegree + 1 || points.size() != params.size())
     throw Error("internal: bad B-spline fit request");

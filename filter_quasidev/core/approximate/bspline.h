@@ -23,7 +23,7 @@ class BSpline2 {
   // Periodic: uniform cubic on [0, 1) that repeats with period 1 up to the translation
   // `period_shift` (c(u + 1) = c(u) + period_shift); shift 0 is a plain closed curve, a shift of
   // (±2π, 0) is a curve that winds once around the θ-periodic domain of Eq. 9.
-  BSpline2(std::vector<Vec2> control, bool periodic, Vec2 period_shift = Vec2::Zero());
+  BSpline2(std::vector<Vec2> control, bool periodic, const Vec2& period_shift = Vec2::Zero());
 
   CurvePoint eval(double u) const;  // u outside the domain: clamped (open) or wrapped (periodic)
   bool periodic() const { return periodic_; }
@@ -55,7 +55,7 @@ class BSpline2 {
 // Normalised cumulative chord length of the points (closed: the closing chord counts too,
 // so the parameters lie in [0, 1) and the last point is not at 1).
 std::vector<double> chord_length_params(const std::vector<Vec2>& points, bool closed,
-                                        Vec2 period_shift = Vec2::Zero());
+                                        const Vec2& period_shift = Vec2::Zero());
 
 // Least-squares fit with `control_count` control points (>= 4) minimising
 //   Σ_j |c(u_j) − q_j|² + smoothing · Σ_i |P_{i−1} − 2 P_i + P_{i+1}|²   (P&T Eq. 9.63 + penalty).
@@ -63,6 +63,6 @@ std::vector<double> chord_length_params(const std::vector<Vec2>& points, bool cl
 // Throws qd::Error when the system is singular.
 BSpline2 fit_bspline(const std::vector<Vec2>& points, const std::vector<double>& params,
                      int control_count, double smoothing, bool periodic,
-                     Vec2 period_shift = Vec2::Zero());
+                     const Vec2& period_shift = Vec2::Zero());
 
 }  // namespace qd
