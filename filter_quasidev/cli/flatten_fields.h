@@ -9,9 +9,9 @@
 
 #include "flatten/flatten_problem.h"
 #include "flatten/flatten_result.h"
-#include "mesh_file.h"
+#include "io/mesh_file.h"
+#include "io/output_mesh.h"
 #include "options.h"
-#include "output_mesh.h"
 
 namespace qd::cli {
 

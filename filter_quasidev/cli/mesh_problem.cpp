@@ -4,7 +4,7 @@
 #include <string>
 
 #include "common/quality_range.h"
-#include "constraint_file.h"
+#include "io/constraint_file.h"
 #include "mesh_geometry.h"
 
 namespace qd::cli {
@@ -23,7 +23,7 @@ Problem make_problem(const meshio::MeshFile& mesh, const ApproximateOptions& o) 
   const double ae = average_edge_length(problem.V, problem.F);
   if (!(ae > 0) || !std::isfinite(ae))
     throw Error("the mesh's average edge length is " + std::to_string(ae) +
-                    " (all vertices coincide?); nothing to approximate");
+                " (all vertices coincide?); nothing to approximate");
   try {
     problem.params = params::engine_params(o.settings, ae, problem.patch);
   } catch (const params::ParamError& e) {
@@ -39,8 +39,8 @@ meshio::OutputFields output_fields(const Result& result, const ApproximateOption
                                      : result.displacement;
   if (static_cast<std::size_t>(result.V.rows()) != vertex_count || q.size() != vertex_count)
     throw Error("internal error: the engine returned " + std::to_string(result.V.rows()) +
-                    " positions and " + std::to_string(q.size()) + " quality values for " +
-                    std::to_string(vertex_count) + " vertices");
+                " positions and " + std::to_string(q.size()) + " quality values for " +
+                std::to_string(vertex_count) + " vertices");
   meshio::OutputFields fields;
   fields.positions.resize(vertex_count);
   for (std::size_t i = 0; i < vertex_count; ++i)

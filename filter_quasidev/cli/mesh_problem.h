@@ -11,9 +11,9 @@
 
 #include "approximate/problem.h"
 #include "approximate/result.h"
-#include "mesh_file.h"
+#include "io/mesh_file.h"
+#include "io/output_mesh.h"
 #include "options.h"
-#include "output_mesh.h"
 
 namespace qd::cli {
 

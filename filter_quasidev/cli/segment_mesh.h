@@ -6,9 +6,9 @@
 //   per patch (qd::patch_color). Throws qd::Error when the result has the wrong size.
 #pragma once
 
-#include "mesh_file.h"
+#include "io/mesh_file.h"
+#include "io/output_mesh.h"
 #include "options.h"
-#include "output_mesh.h"
 #include "segment/segment_problem.h"
 #include "segment/segment_result.h"
 
@@ -16,6 +16,7 @@ namespace qd::cli {
 
 SegmentProblem make_segment_problem(const meshio::MeshFile& mesh, const SegmentOptions& options);
 
-meshio::OutputFields segment_output_fields(const SegmentResult& result, const meshio::MeshFile& mesh);
+meshio::OutputFields segment_output_fields(const SegmentResult& result,
+                                           const meshio::MeshFile& mesh);
 
 }  // namespace qd::cli

@@ -7,14 +7,14 @@
 #include <filesystem>
 #include <fstream>
 
-#include "atomic_file.h"
 #include "common/error.h"
-#include "constraint_file.h"
-#include "mesh_reader.h"
-#include "output_mesh.h"
-#include "ply_reader.h"
+#include "io/atomic_file.h"
+#include "io/constraint_file.h"
+#include "io/mesh_reader.h"
+#include "io/output_mesh.h"
+#include "io/ply_reader.h"
+#include "io/ply_writer.h"
 #include "ply_test_util.h"
-#include "ply_writer.h"
 
 using namespace qd::meshio;
 using namespace qd::meshio::test;
@@ -24,23 +24,26 @@ namespace {
 OutputFields shifted(const MeshFile& m, bool colors) {
   OutputFields f;
   for (const auto& p : m.positions) f.positions.push_back({p[0], p[1], p[2] + 0.1});
-  for (std::size_t i = 0; i < m.positions.size(); ++i) f.quality.push_back(0.5 * static_cast<double>(i));
+  for (std::size_t i = 0; i < m.positions.size(); ++i)
+    f.quality.push_back(0.5 * static_cast<double>(i));
   if (colors) f.colors.assign(m.positions.size(), {10, 20, 30});
   return f;
 }
 
 TEST(OutputMesh, PassesThroughEverythingItDoesNotOwn) {
   PlyFile in = sample_ply();
-  in.elements[0].properties.push_back(scalar_property("quality", ScalarType::Float32, {9, 9, 9, 9, 9}));
+  in.elements[0].properties.push_back(
+      scalar_property("quality", ScalarType::Float32, {9, 9, 9, 9, 9}));
   in.elements[0].properties.push_back(scalar_property("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
   const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::BinaryBigEndian));
-  const PlyFile out = parse_ply(serialize_ply(output_ply(mesh, shifted(mesh, true)),
-                                              PlyFormat::BinaryLittleEndian));
+  const PlyFile out = parse_ply(
+      serialize_ply(output_ply(mesh, shifted(mesh, true)), PlyFormat::BinaryLittleEndian));
   const PlyElement& v = out.elements[0];
   ASSERT_EQ(v.name, "vertex");
   EXPECT_EQ(v.properties[0].type, ScalarType::Float64);
   EXPECT_EQ(v.properties[2].values[4], 0.25 + 0.1);
-  EXPECT_EQ(v.properties[v.find("temperature")].values, (std::vector<double>{-7, 3, 100, -32768, 32767}));
+  EXPECT_EQ(v.properties[v.find("temperature")].values,
+            (std::vector<double>{-7, 3, 100, -32768, 32767}));
   EXPECT_EQ(v.properties[v.find("flags")].values[4], 0x20);
   EXPECT_EQ(v.properties[v.find("quality")].values, (std::vector<double>{0, 0.5, 1, 1.5, 2}));
   EXPECT_EQ(v.properties[v.find("red")].values, std::vector<double>(5, 10));
@@ -106,9 +109,11 @@ TEST(OutputMesh, PerFaceFieldsReplaceTheirOwnAndKeepTheVertices) {
 
 TEST(OutputMesh, VertexNormalsAreRecomputed) {
   const std::string text =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+      "z\n"
       "property float nx\nproperty float ny\nproperty float nz\nelement face 1\n"
-      "property list uchar int vertex_indices\nend_header\n0 0 0 1 0 0\n1 0 0 1 0 0\n0 1 0 1 0 0\n3 0 1 2\n";
+      "property list uchar int vertex_indices\nend_header\n0 0 0 1 0 0\n1 0 0 1 0 0\n0 1 0 1 0 "
+      "0\n3 0 1 2\n";
   const MeshFile mesh = mesh_of(text);
   OutputFields f;
   f.positions = {{0, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // now in the x = 0 plane, normal +x
@@ -126,14 +131,16 @@ class TempDir : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("qd_cli_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           ("qd_cli_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
   std::string path(const char* name) const { return (dir_ / name).string(); }
-  static void write(const std::string& p, const std::string& content) { std::ofstream(p) << content; }
+  static void write(const std::string& p, const std::string& content) {
+    std::ofstream(p) << content;
+  }
   std::size_t entries() const {
     return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(dir_), {}));
   }
@@ -157,8 +164,9 @@ TEST_F(TempDir, PendingFileReplacesOnlyOnCommit) {
 }
 
 TEST_F(TempDir, PendingFileInMissingDirectoryFails) {
-  EXPECT_NE(error_of([&] { PendingFile p(path("no/such/dir/out.ply"), "x"); }).find("cannot create"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { PendingFile p(path("no/such/dir/out.ply"), "x"); }).find("cannot create"),
+      std::string::npos);
 }
 
 TEST_F(TempDir, ReadMeshDispatchesAndNamesTheFile) {
@@ -170,21 +178,28 @@ TEST_F(TempDir, ReadMeshDispatchesAndNamesTheFile) {
   EXPECT_EQ(read_mesh(path("m.obj")).triangles.size(), 1u);
   EXPECT_EQ(read_mesh(path("m.off")).triangles.size(), 1u);
   EXPECT_NE(error_of([&] { read_mesh(path("empty.ply")); }).find("is empty"), std::string::npos);
-  EXPECT_NE(error_of([&] { read_mesh(path("nofaces.obj")); }).find("has no faces"), std::string::npos);
-  EXPECT_NE(error_of([&] { read_mesh(path("m.stl")); }).find("unknown mesh format"), std::string::npos);
-  EXPECT_NE(error_of([&] { read_mesh(path("missing.ply")); }).find("cannot open"), std::string::npos);
-  EXPECT_NE(error_of([&] { read_mesh(dir_.string()); }).find("not a regular file"), std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(path("nofaces.obj")); }).find("has no faces"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(path("m.stl")); }).find("unknown mesh format"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(path("missing.ply")); }).find("cannot open"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(dir_.string()); }).find("not a regular file"),
+            std::string::npos);
 }
 
 TEST_F(TempDir, ConstraintFile) {
   write(path("c.txt"), "# selected\n3\n\n 0  # first\n3\n");
   EXPECT_EQ(read_constraint_file(path("c.txt"), 4), (std::vector<std::size_t>{3, 0, 3}));
   write(path("bad.txt"), "1\n4\n");
-  EXPECT_NE(error_of([&] { read_constraint_file(path("bad.txt"), 4); })
-                .find("line 2: vertex index 4 is out of range (the mesh has 4 vertices"),
+  EXPECT_NE(error_of([&] {
+              read_constraint_file(path("bad.txt"), 4);
+            }).find("line 2: vertex index 4 is out of range (the mesh has 4 vertices"),
             std::string::npos);
   write(path("word.txt"), "1 2\n");
-  EXPECT_NE(error_of([&] { read_constraint_file(path("word.txt"), 4); }).find("one vertex index per line"),
+  EXPECT_NE(error_of([&] {
+              read_constraint_file(path("word.txt"), 4);
+            }).find("one vertex index per line"),
             std::string::npos);
 }
 

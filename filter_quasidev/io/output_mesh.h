@@ -17,8 +17,8 @@
 #include <array>
 #include <vector>
 
-#include "mesh_file.h"
-#include "ply_file.h"
+#include "io/mesh_file.h"
+#include "io/ply_file.h"
 
 namespace qd::meshio {
 

@@ -1,4 +1,4 @@
-#include "output_mesh.h"
+#include "io/output_mesh.h"
 
 #include <cmath>
 #include <string>
