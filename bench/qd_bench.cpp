@@ -24,6 +24,8 @@
 #include "io/mesh_reader.h"
 #include "io/output_mesh.h"
 #include "io/ply_writer.h"
+#include "io/result_ply.h"
+#include "mesh_geometry.h"
 #include "mesh_problem.h"
 #include "options.h"
 
@@ -88,10 +90,9 @@ Args parse(int argc, char** argv) {
 
 // The mesh as the binary PLY the command writes.
 std::string serialize(const qd::meshio::MeshFile& mesh) {
-  qd::meshio::OutputFields fields;
-  fields.positions = mesh.positions;
-  return qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
-                                   qd::meshio::PlyFormat::BinaryLittleEndian);
+  qd::meshio::PlyFile ply = qd::meshio::output_ply(mesh);
+  qd::meshio::set_positions(ply, mesh, qd::cli::positions_of(mesh));
+  return qd::meshio::serialize_ply(ply, qd::meshio::PlyFormat::BinaryLittleEndian);
 }
 
 void run(const Args& a) {
@@ -136,11 +137,10 @@ void run(const Args& a) {
     metrics.push_back(result.times.metrics);
 
     t0 = Clock::now();
-    const qd::meshio::OutputFields fields =
-        qd::cli::output_fields(result, options, mesh.positions.size());
     qd::meshio::PendingFile file(
-        output, qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
-                                          qd::meshio::PlyFormat::BinaryLittleEndian));
+        output,
+        qd::meshio::serialize_ply(qd::meshio::approximated_ply(mesh, result, options.settings),
+                                  qd::meshio::PlyFormat::BinaryLittleEndian));
     file.commit();
     write_ms.push_back(ms_since(t0));
   }

@@ -1,5 +1,6 @@
 #include "io/output_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -9,28 +10,18 @@ namespace qd::meshio {
 
 namespace {
 
-bool is_color(const std::string& name) {
-  return name == "red" || name == "green" || name == "blue" || name == "alpha";
-}
-
-// True when the vertex has scalar nx, ny and nz (stale after the move: they are recomputed).
-bool has_normals(const std::vector<PlyProperty>& vertex_extra) {
-  int found = 0;
-  for (const PlyProperty& p : vertex_extra)
-    if (!p.is_list && (p.name == "nx" || p.name == "ny" || p.name == "nz")) ++found;
-  return found == 3;
-}
-
-// Area-weighted vertex normals of the new positions (unit length; zero where undefined).
-std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh,
-                                                  const std::vector<std::array<double, 3>>& V) {
-  std::vector<std::array<double, 3>> n(V.size(), {0, 0, 0});
+// Area-weighted vertex normals of the positions in columns x, y, z (unit length; zero where
+// undefined).
+std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh, const PlyElement& vertex) {
+  const std::vector<double>* xyz[3] = {&vertex.properties[0].values, &vertex.properties[1].values,
+                                       &vertex.properties[2].values};
+  const auto at = [&xyz](int v, std::size_t k) { return (*xyz[k])[static_cast<std::size_t>(v)]; };
+  std::vector<std::array<double, 3>> n(vertex.count, {0, 0, 0});
   for (const std::array<int, 3>& t : mesh.triangles) {
-    const auto& a = V[static_cast<std::size_t>(t[0])];
-    const auto& b = V[static_cast<std::size_t>(t[1])];
-    const auto& c = V[static_cast<std::size_t>(t[2])];
-    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double u[3] = {at(t[1], 0) - at(t[0], 0), at(t[1], 1) - at(t[0], 1),
+                         at(t[1], 2) - at(t[0], 2)};
+    const double v[3] = {at(t[2], 0) - at(t[0], 0), at(t[2], 1) - at(t[0], 1),
+                         at(t[2], 2) - at(t[0], 2)};
     const double cross[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
                              u[0] * v[1] - u[1] * v[0]};  // twice the area times the normal
     for (int corner : t)
@@ -44,16 +35,28 @@ std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh,
   return n;
 }
 
-// Appends `red green blue alpha` (uchar, alpha 255) holding `colors`.
-void add_colors(PlyElement& e, const std::vector<std::array<unsigned char, 3>>& colors) {
-  const char* names[] = {"red", "green", "blue"};
-  for (std::size_t k = 0; k < 3; ++k) {
-    std::vector<double> c(colors.size());
-    for (std::size_t i = 0; i < colors.size(); ++i) c[i] = colors[i][k];
-    e.properties.push_back(scalar_property(names[k], ScalarType::UInt8, c));
+// Columns of the scalar properties nx, ny, nz, or -1 when one is missing.
+std::array<int, 3> normal_columns(const PlyElement& vertex) {
+  std::array<int, 3> columns = {-1, -1, -1};
+  for (std::size_t i = 0; i < vertex.properties.size(); ++i) {
+    const PlyProperty& p = vertex.properties[i];
+    const int axis = p.name == "nx" ? 0 : p.name == "ny" ? 1 : p.name == "nz" ? 2 : -1;
+    if (axis >= 0 && !p.is_list) columns[static_cast<std::size_t>(axis)] = static_cast<int>(i);
   }
-  e.properties.push_back(
-      scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
+  return columns;
+}
+
+// Removes the element's properties whose name `matches`.
+template <typename Match>
+void remove_columns(PlyElement& e, Match matches) {
+  e.properties.erase(std::remove_if(e.properties.begin(), e.properties.end(),
+                                    [&matches](const PlyProperty& p) { return matches(p.name); }),
+                     e.properties.end());
+}
+
+void check_size(const PlyElement& e, std::size_t size) {
+  if (size != e.count)
+    throw Error("internal error: output fields do not have one value per " + e.name);
 }
 
 // A list property (uchar counts) of `type` with one list per row.
@@ -74,100 +77,96 @@ PlyProperty list_property(const std::string& name, ScalarType type,
   return p;
 }
 
-// True when `values` is empty (not written) or has one entry per element.
-template <typename T>
-bool fits(const std::vector<T>& values, std::size_t count) {
-  return values.empty() || values.size() == count;
-}
-
-// The input's extra properties, without those the fields replace: `quality` when quality is
-// written, the colour channels when colours are, `texcoord` when texture coordinates are.
-std::vector<PlyProperty> kept(const std::vector<PlyProperty>& extra, bool quality, bool colors,
-                              bool texcoords) {
-  std::vector<PlyProperty> out;
-  for (const PlyProperty& p : extra)
-    if (!(quality && p.name == "quality") && !(colors && is_color(p.name)) &&
-        !(texcoords && p.name == "texcoord"))
-      out.push_back(p);
-  return out;
-}
-
-PlyElement vertex_element(const MeshFile& mesh, const OutputFields& fields) {
-  const std::size_t nv = mesh.positions.size();
-  const bool moved = !fields.positions.empty();
-  if (!fits(fields.positions, nv) || !fits(fields.quality, nv) || !fits(fields.colors, nv))
-    throw Error("internal error: output fields do not have one value per vertex");
-  PlyElement e;
-  e.name = "vertex";
-  e.count = nv;
-  const std::vector<std::array<double, 3>>& positions = moved ? fields.positions : mesh.positions;
-  for (std::size_t k = 0; k < 3; ++k) {
-    std::vector<double> c(nv);
-    for (std::size_t i = 0; i < nv; ++i) c[i] = positions[i][k];
-    e.properties.push_back(scalar_property(
-        std::string(1, "xyz"[k]), moved ? ScalarType::Float64 : mesh.position_types[k], c));
-  }
-  const bool normals = moved && has_normals(mesh.vertex_extra);
-  std::vector<std::array<double, 3>> n;
-  for (const PlyProperty& p :
-       kept(mesh.vertex_extra, !fields.quality.empty(), !fields.colors.empty(), false)) {
-    e.properties.push_back(p);
-    const int axis = p.name == "nx" ? 0 : p.name == "ny" ? 1 : p.name == "nz" ? 2 : -1;
-    if (axis < 0 || p.is_list || !normals) continue;
-    if (n.empty()) n = vertex_normals(mesh, fields.positions);
-    for (std::size_t i = 0; i < nv; ++i)
-      e.properties.back().values[i] = n[i][static_cast<std::size_t>(axis)];
-  }
-  if (!fields.quality.empty())
-    e.properties.push_back(scalar_property("quality", ScalarType::Float64, fields.quality));
-  if (!fields.colors.empty()) add_colors(e, fields.colors);
-  return e;
-}
-
-// Index of the face property called `name` among the input's, or -1.
-int mesh_face_column(const MeshFile& mesh, const std::string& name) {
-  for (std::size_t i = 0; i < mesh.face_extra.size(); ++i)
-    if (mesh.face_extra[i].name == name) return static_cast<int>(i);
-  return -1;
-}
-
-PlyElement face_element(const MeshFile& mesh, const OutputFields& fields) {
-  const std::size_t nf = mesh.triangles.size();
-  if (!fits(fields.texcoords, nf) || !fits(fields.face_quality, nf) ||
-      !fits(fields.face_colors, nf))
-    throw Error("internal error: output fields do not have one value per face");
-  PlyElement e;
-  e.name = "face";
-  e.count = nf;
-  e.properties.push_back(list_property("vertex_indices", ScalarType::Int32, mesh.triangles));
-  const std::vector<PlyProperty> extra =
-      kept(mesh.face_extra, !fields.face_quality.empty(), !fields.face_colors.empty(),
-           !fields.texcoords.empty());
-  e.properties.insert(e.properties.end(), extra.begin(), extra.end());
-  // Patch ids that no face property holds (OBJ groups) are written as `patch`, so they survive.
-  if (!mesh.patch.empty() && mesh_face_column(mesh, "patch") < 0 &&
-      mesh_face_column(mesh, "quality") < 0)
-    e.properties.push_back(scalar_property(
-        "patch", ScalarType::Int32, std::vector<double>(mesh.patch.begin(), mesh.patch.end())));
-  if (!fields.texcoords.empty())
-    e.properties.push_back(list_property("texcoord", ScalarType::Float32, fields.texcoords));
-  if (!fields.face_quality.empty())
-    e.properties.push_back(scalar_property("quality", ScalarType::Float64, fields.face_quality));
-  if (!fields.face_colors.empty()) add_colors(e, fields.face_colors);
-  return e;
+bool has_face_column(const MeshFile& mesh, const std::string& name) {
+  return std::any_of(mesh.face_extra.begin(), mesh.face_extra.end(),
+                     [&name](const PlyProperty& p) { return p.name == name; });
 }
 
 }  // namespace
 
-PlyFile output_ply(const MeshFile& mesh, const OutputFields& fields) {
+PlyFile output_ply(const MeshFile& mesh) {
   PlyFile ply;
   ply.format = PlyFormat::BinaryLittleEndian;
   ply.comments = mesh.comments;
   ply.obj_info = mesh.obj_info;
-  ply.elements.push_back(vertex_element(mesh, fields));
-  ply.elements.push_back(face_element(mesh, fields));
+  PlyElement vertex;
+  vertex.name = "vertex";
+  vertex.count = mesh.positions.size();
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::vector<double> c(vertex.count);
+    for (std::size_t i = 0; i < vertex.count; ++i) c[i] = mesh.positions[i][k];
+    vertex.properties.push_back(
+        scalar_property(std::string(1, "xyz"[k]), mesh.position_types[k], c));
+  }
+  vertex.properties.insert(vertex.properties.end(), mesh.vertex_extra.begin(),
+                           mesh.vertex_extra.end());
+  PlyElement face;
+  face.name = "face";
+  face.count = mesh.triangles.size();
+  face.properties.push_back(list_property("vertex_indices", ScalarType::Int32, mesh.triangles));
+  face.properties.insert(face.properties.end(), mesh.face_extra.begin(), mesh.face_extra.end());
+  // Patch ids that no face property holds (OBJ groups) are written as `patch`, so they survive.
+  if (!mesh.patch.empty() && !has_face_column(mesh, "patch") && !has_face_column(mesh, "quality"))
+    face.properties.push_back(scalar_property(
+        "patch", ScalarType::Int32, std::vector<double>(mesh.patch.begin(), mesh.patch.end())));
+  ply.elements.push_back(std::move(vertex));
+  ply.elements.push_back(std::move(face));
   ply.elements.insert(ply.elements.end(), mesh.other_elements.begin(), mesh.other_elements.end());
   return ply;
+}
+
+PlyElement& output_element(PlyFile& ply, const char* name) {
+  for (PlyElement& e : ply.elements)
+    if (e.name == name) return e;
+  throw Error(std::string("internal error: the output has no element ") + name);
+}
+
+void set_positions(PlyFile& ply, const MeshFile& mesh, const Positions& V) {
+  PlyElement& vertex = output_element(ply, "vertex");
+  check_size(vertex, static_cast<std::size_t>(V.rows()));
+  for (std::size_t k = 0; k < 3; ++k) {
+    PlyProperty& column = vertex.properties[k];
+    column.type = ScalarType::Float64;
+    for (std::size_t i = 0; i < vertex.count; ++i)
+      column.values[i] = V(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
+  }
+  const std::array<int, 3> normals = normal_columns(vertex);
+  if (std::find(normals.begin(), normals.end(), -1) != normals.end()) return;
+  const std::vector<std::array<double, 3>> n = vertex_normals(mesh, vertex);
+  for (std::size_t k = 0; k < 3; ++k)
+    for (std::size_t i = 0; i < vertex.count; ++i)
+      vertex.properties[static_cast<std::size_t>(normals[k])].values[i] = n[i][k];
+}
+
+void set_quality(PlyElement& element, const std::vector<double>& quality) {
+  check_size(element, quality.size());
+  remove_columns(element, [](const std::string& name) { return name == "quality"; });
+  element.properties.push_back(scalar_property("quality", ScalarType::Float64, quality));
+}
+
+void set_colors(PlyElement& element, const std::vector<std::array<unsigned char, 3>>& colors) {
+  check_size(element, colors.size());
+  remove_columns(element, [](const std::string& name) {
+    return name == "red" || name == "green" || name == "blue" || name == "alpha";
+  });
+  const char* names[] = {"red", "green", "blue"};
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::vector<double> c(colors.size());
+    for (std::size_t i = 0; i < colors.size(); ++i) c[i] = colors[i][k];
+    element.properties.push_back(scalar_property(names[k], ScalarType::UInt8, c));
+  }
+  element.properties.push_back(
+      scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
+}
+
+void set_texcoords(PlyElement& face, const WedgeUV& uv) {
+  check_size(face, static_cast<std::size_t>(uv.rows()));
+  remove_columns(face, [](const std::string& name) { return name == "texcoord"; });
+  std::vector<std::array<double, 6>> rows(face.count);
+  for (std::size_t f = 0; f < face.count; ++f)
+    for (std::size_t k = 0; k < 6; ++k)
+      rows[f][k] = uv(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(k));
+  face.properties.push_back(list_property("texcoord", ScalarType::Float32, rows));
 }
 
 }  // namespace qd::meshio
