@@ -17,15 +17,17 @@
 #include <vector>
 
 #include "approximate/quasidev.h"
-#include "atomic_file.h"
 #include "bare_solver.h"
 #include "bench_mesh.h"
 #include "common/error.h"
+#include "io/atomic_file.h"
+#include "io/mesh_reader.h"
+#include "io/output_mesh.h"
+#include "io/ply_writer.h"
+#include "io/result_ply.h"
+#include "mesh_geometry.h"
 #include "mesh_problem.h"
-#include "mesh_reader.h"
 #include "options.h"
-#include "output_mesh.h"
-#include "ply_writer.h"
 
 namespace {
 
@@ -64,14 +66,22 @@ Args parse(int argc, char** argv) {
       if (i + 1 >= argc) throw qd::Error(s + " needs a value");
       return argv[++i];
     };
-    if (s == "--grid") a.grid = std::stol(next());
-    else if (s == "--patches") a.patches = std::stoi(next());
-    else if (s == "--tube") a.tube = std::stol(next());
-    else if (s == "--mesh") a.mesh = next();
-    else if (s == "--runs") a.runs = std::max(1, std::stoi(next()));
-    else if (s == "--save") a.save = next();
-    else if (s == "--") a.quasidev.assign(argv + i + 1, argv + argc), i = argc;
-    else throw qd::Error("unknown argument " + s);
+    if (s == "--grid")
+      a.grid = std::stol(next());
+    else if (s == "--patches")
+      a.patches = std::stoi(next());
+    else if (s == "--tube")
+      a.tube = std::stol(next());
+    else if (s == "--mesh")
+      a.mesh = next();
+    else if (s == "--runs")
+      a.runs = std::max(1, std::stoi(next()));
+    else if (s == "--save")
+      a.save = next();
+    else if (s == "--")
+      a.quasidev.assign(argv + i + 1, argv + argc), i = argc;
+    else
+      throw qd::Error("unknown argument " + s);
   }
   if (a.grid <= 0 && a.tube <= 0 && a.mesh.empty())
     throw qd::Error("give --grid TRIANGLES, --tube TRIANGLES or --mesh FILE");
@@ -80,15 +90,16 @@ Args parse(int argc, char** argv) {
 
 // The mesh as the binary PLY the command writes.
 std::string serialize(const qd::meshio::MeshFile& mesh) {
-  qd::meshio::OutputFields fields;
-  fields.positions = mesh.positions;
-  return qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
-                                   qd::meshio::PlyFormat::BinaryLittleEndian);
+  qd::meshio::PlyFile ply = qd::meshio::output_ply(mesh);
+  qd::meshio::set_positions(ply, mesh, qd::cli::positions_of(mesh));
+  return qd::meshio::serialize_ply(ply, qd::meshio::PlyFormat::BinaryLittleEndian);
 }
 
 void run(const Args& a) {
   const std::string scratch = "/tmp/qd_bench_" + std::to_string(getpid());
-  const std::string input = !a.mesh.empty() ? a.mesh : !a.save.empty() ? a.save : scratch + "_in.ply";
+  const std::string input = !a.mesh.empty()   ? a.mesh
+                            : !a.save.empty() ? a.save
+                                              : scratch + "_in.ply";
   const std::string output = scratch + "_out.ply";
   if (a.mesh.empty()) {
     qd::meshio::MeshFile generated =
@@ -126,9 +137,10 @@ void run(const Args& a) {
     metrics.push_back(result.times.metrics);
 
     t0 = Clock::now();
-    const qd::meshio::OutputFields fields = qd::cli::output_fields(result, options, mesh.positions.size());
-    qd::meshio::PendingFile file(output, qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
-                                                                   qd::meshio::PlyFormat::BinaryLittleEndian));
+    qd::meshio::PendingFile file(
+        output,
+        qd::meshio::serialize_ply(qd::meshio::approximated_ply(mesh, result, options.settings),
+                                  qd::meshio::PlyFormat::BinaryLittleEndian));
     file.commit();
     write_ms.push_back(ms_since(t0));
   }
@@ -159,14 +171,17 @@ void run(const Args& a) {
   const int solves = std::max(1, result.times.solves);
   const double engine = median(wall_ms), io = median(read_ms) + median(write_ms);
   const double per_iteration_solve = median(solve) / solves;
-  const double mean_bare_solve = bare.empty() ? 0 : bare_solve_sum / static_cast<double>(bare.size());
+  const double mean_bare_solve =
+      bare.empty() ? 0 : bare_solve_sum / static_cast<double>(bare.size());
 
   std::printf(
       "{\"mesh\": \"%s\", \"faces\": %ld, \"vertices\": %ld, \"patches\": %zu, \"runs\": %d, "
       "\"iterations\": %d, \"solves\": %d, \"factorizations\": %d, \"cg_iterations\": %d, "
       "\"largest_unknowns\": %ld, "
-      "\"ms\": {\"read\": %.3f, \"setup\": %.3f, \"step1\": %.3f, \"assembly\": %.3f, \"factorization\": %.3f, "
-      "\"solve\": %.3f, \"metrics\": %.3f, \"engine\": %.3f, \"write\": %.3f, \"end_to_end\": %.3f}, "
+      "\"ms\": {\"read\": %.3f, \"setup\": %.3f, \"step1\": %.3f, \"assembly\": %.3f, "
+      "\"factorization\": %.3f, "
+      "\"solve\": %.3f, \"metrics\": %.3f, \"engine\": %.3f, \"write\": %.3f, \"end_to_end\": "
+      "%.3f}, "
       "\"bare_ms\": {\"factorization\": %.3f, \"refactorization\": %.3f, \"solve\": %.3f, "
       "\"floor\": %.3f}, "
       "\"overhead\": %.3f, \"solve_ratio\": %.3f, \"peak_mb\": %.1f, "
@@ -175,15 +190,16 @@ void run(const Args& a) {
       : a.tube > 0    ? ("tube" + std::to_string(a.tube)).c_str()
                       : ("grid" + std::to_string(a.grid) + "x" + std::to_string(a.patches)).c_str(),
       static_cast<long>(mesh.triangles.size()), static_cast<long>(mesh.positions.size()),
-      result.patches.size(), a.runs, [&] {
+      result.patches.size(), a.runs,
+      [&] {
         int it = 0;
         for (const auto& p : result.patches) it = std::max(it, p.iterations);
         return it;
       }(),
       result.times.solves, result.times.factorizations, result.times.cg_iterations, unknowns,
-      median(read_ms), median(setup), median(step1), median(assembly), median(factor), median(solve),
-      median(metrics), engine, median(write_ms), engine + io, bare_factor, bare_refactor,
-      mean_bare_solve, floor, engine / std::max(1e-9, floor),
+      median(read_ms), median(setup), median(step1), median(assembly), median(factor),
+      median(solve), median(metrics), engine, median(write_ms), engine + io, bare_factor,
+      bare_refactor, mean_bare_solve, floor, engine / std::max(1e-9, floor),
       mean_bare_solve > 0 ? per_iteration_solve / mean_bare_solve : 0.0, peak_mb,
       result.abd_reduction, progress_calls);
   std::remove(output.c_str());

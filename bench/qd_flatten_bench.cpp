@@ -20,9 +20,9 @@
 #include "common/error.h"
 #include "flatten/flatten.h"
 #include "io/dxf_writer.h"
+#include "io/mesh_reader.h"
 #include "io/svg_writer.h"
 #include "mesh_geometry.h"
-#include "mesh_reader.h"
 
 namespace {
 
@@ -38,17 +38,28 @@ Args parse(int argc, char** argv) {
   Args a;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--grid") a.grid = std::stol(value);
-    else if (key == "--patches") a.patches = std::stoi(value);
-    else if (key == "--mesh") a.mesh = value;
-    else if (key == "--runs") a.runs = std::stoi(value);
-    else if (key == "--threads") a.params.threads = std::stoi(value);
-    else if (key == "--arap-max-iter") a.params.max_iterations = std::stoi(value);
-    else if (key == "--arap-tolerance") a.params.tolerance = std::stod(value);
-    else if (key == "--svg-file") a.svg = value;
-    else if (key == "--dxf-file") a.dxf = value;
-    else if (key == "--unit") a.unit = value;
-    else throw qd::Error("unknown option " + key);
+    if (key == "--grid")
+      a.grid = std::stol(value);
+    else if (key == "--patches")
+      a.patches = std::stoi(value);
+    else if (key == "--mesh")
+      a.mesh = value;
+    else if (key == "--runs")
+      a.runs = std::stoi(value);
+    else if (key == "--threads")
+      a.params.threads = std::stoi(value);
+    else if (key == "--arap-max-iter")
+      a.params.max_iterations = std::stoi(value);
+    else if (key == "--arap-tolerance")
+      a.params.tolerance = std::stod(value);
+    else if (key == "--svg-file")
+      a.svg = value;
+    else if (key == "--dxf-file")
+      a.dxf = value;
+    else if (key == "--unit")
+      a.unit = value;
+    else
+      throw qd::Error("unknown option " + key);
   }
   if ((a.grid > 0) == !a.mesh.empty()) throw qd::Error("give --grid TRIANGLES or --mesh FILE");
   return a;
@@ -62,14 +73,17 @@ qd::FlattenProblem problem_of(const qd::meshio::MeshFile& mesh) {
 
 // Largest |l_pattern − l_reference| / l_reference over every face edge; `reference` per face
 // corner (u, v) or, when empty, the 3D edges.
-double max_edge_error(const qd::FlattenProblem& p, const qd::WedgeUV& uv, const qd::WedgeUV& reference) {
+double max_edge_error(const qd::FlattenProblem& p, const qd::WedgeUV& uv,
+                      const qd::WedgeUV& reference) {
   double worst = 0;
   for (int f = 0; f < p.F.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int l = (k + 1) % 3;
       const double ours = (uv.block<1, 2>(f, 2 * k) - uv.block<1, 2>(f, 2 * l)).norm();
-      const double ref = reference.rows() > 0 ? (reference.block<1, 2>(f, 2 * k) - reference.block<1, 2>(f, 2 * l)).norm()
-                                              : (p.V.row(p.F(f, k)) - p.V.row(p.F(f, l))).norm();
+      const double ref =
+          reference.rows() > 0
+              ? (reference.block<1, 2>(f, 2 * k) - reference.block<1, 2>(f, 2 * l)).norm()
+              : (p.V.row(p.F(f, k)) - p.V.row(p.F(f, l))).norm();
       worst = std::max(worst, std::abs(ours - ref) / ref);
     }
   return worst;
@@ -82,7 +96,8 @@ qd::WedgeUV file_texcoords(const qd::meshio::MeshFile& mesh) {
     qd::WedgeUV uv(static_cast<Eigen::Index>(mesh.triangles.size()), 6);
     for (size_t f = 0; f < mesh.triangles.size(); ++f) {
       if (prop.list_size(f) != 6) return {};
-      for (int k = 0; k < 6; ++k) uv(static_cast<Eigen::Index>(f), k) = prop.values[prop.offsets[f] + static_cast<size_t>(k)];
+      for (int k = 0; k < 6; ++k)
+        uv(static_cast<Eigen::Index>(f), k) = prop.values[prop.offsets[f] + static_cast<size_t>(k)];
     }
     return uv;
   }
@@ -94,7 +109,8 @@ qd::WedgeUV file_texcoords(const qd::meshio::MeshFile& mesh) {
 int main(int argc, char** argv) {
   try {
     const Args a = parse(argc, argv);
-    const qd::meshio::MeshFile mesh = a.grid > 0 ? qd::bench::curved_sheet(a.grid, a.patches) : qd::meshio::read_mesh(a.mesh);
+    const qd::meshio::MeshFile mesh =
+        a.grid > 0 ? qd::bench::curved_sheet(a.grid, a.patches) : qd::meshio::read_mesh(a.mesh);
     qd::FlattenProblem problem = problem_of(mesh);
     problem.params = a.params;
     std::vector<double> ms;
@@ -102,17 +118,21 @@ int main(int argc, char** argv) {
     for (int run = 0; run < a.runs; ++run) {
       const auto t0 = std::chrono::steady_clock::now();
       r = qd::flatten(problem);
-      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      ms.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
     std::sort(ms.begin(), ms.end());
     const qd::WedgeUV truth = file_texcoords(mesh);
-    std::printf("{\"triangles\": %ld, \"pieces\": %zu, \"median_ms\": %.1f, \"max_edge_error_vs_3d\": %.3e",
-                static_cast<long>(problem.F.rows()), r.pieces.size(), ms[ms.size() / 2], max_edge_error(problem, r.uv, {}));
+    std::printf(
+        "{\"triangles\": %ld, \"pieces\": %zu, \"median_ms\": %.1f, \"max_edge_error_vs_3d\": %.3e",
+        static_cast<long>(problem.F.rows()), r.pieces.size(), ms[ms.size() / 2],
+        max_edge_error(problem, r.uv, {}));
     if (truth.rows() > 0)
       std::printf(", \"max_edge_error_vs_texcoord\": %.3e, \"texcoord_edge_error_vs_3d\": %.3e",
                   max_edge_error(problem, r.uv, truth), max_edge_error(problem, truth, {}));
     std::printf(", \"log\": [\n");
-    for (size_t i = 0; i < r.log.size(); ++i) std::printf("  \"%s\"%s\n", r.log[i].c_str(), i + 1 < r.log.size() ? "," : "");
+    for (size_t i = 0; i < r.log.size(); ++i)
+      std::printf("  \"%s\"%s\n", r.log[i].c_str(), i + 1 < r.log.size() ? "," : "");
     std::printf("]}\n");
     if (!a.svg.empty()) {
       std::ofstream out(a.svg);

@@ -22,13 +22,13 @@
 #include <string>
 #include <vector>
 
+#include "approximate/quasidev.h"
 #include "bench_mesh.h"
 #include "common/error.h"
+#include "io/mesh_reader.h"
 #include "mesh_geometry.h"
 #include "mesh_problem.h"
-#include "mesh_reader.h"
 #include "options.h"
-#include "approximate/quasidev.h"
 #include "segment/segment.h"
 
 namespace {
@@ -135,10 +135,12 @@ void run(const Args& a, const std::string& name) {
     for (int r = 0; r < a.runs; ++r) {
       const auto t0 = std::chrono::steady_clock::now();
       qd::SegmentResult result = qd::segment(problem);
-      ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                       .count());
-      if (first.patch.empty()) first = std::move(result);
-      else same = same && result.patch == first.patch;
+      ms.push_back(
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
+      if (first.patch.empty())
+        first = std::move(result);
+      else
+        same = same && result.patch == first.patch;
     }
     times += (times.empty() ? "" : ", ") + ("\"" + std::to_string(threads) + "\": ") +
              std::to_string(median(ms));
@@ -150,14 +152,15 @@ void run(const Args& a, const std::string& name) {
     over += s.over_limit != qd::OverLimit::No;
     worst = std::max(worst, s.max_error_deg);
   }
-  std::printf("{\"mesh\": \"%s\", \"faces\": %zu, \"max_error_limit\": %g, \"min_faces\": %d, "
-              "\"patches\": %zu, \"disks\": %d, \"over_limit\": %d, \"max_error_deg\": %.3f, "
-              "\"rounds\": %d, \"ms_by_threads\": {%s}, \"same_for_all_threads\": %s, "
-              "\"peak_mb\": %.1f%s}\n",
-              name.c_str(), mesh.triangles.size(), a.params.max_error_deg, a.params.min_faces,
-              first.patches.size(), disks, over, worst, first.rounds, times.c_str(),
-              same ? "true" : "false", peak_rss_mb(),
-              a.approximate ? approximate(mesh, first.patch, a.quasidev).c_str() : "");
+  std::printf(
+      "{\"mesh\": \"%s\", \"faces\": %zu, \"max_error_limit\": %g, \"min_faces\": %d, "
+      "\"patches\": %zu, \"disks\": %d, \"over_limit\": %d, \"max_error_deg\": %.3f, "
+      "\"rounds\": %d, \"ms_by_threads\": {%s}, \"same_for_all_threads\": %s, "
+      "\"peak_mb\": %.1f%s}\n",
+      name.c_str(), mesh.triangles.size(), a.params.max_error_deg, a.params.min_faces,
+      first.patches.size(), disks, over, worst, first.rounds, times.c_str(),
+      same ? "true" : "false", peak_rss_mb(),
+      a.approximate ? approximate(mesh, first.patch, a.quasidev).c_str() : "");
   std::fflush(stdout);
 }
 

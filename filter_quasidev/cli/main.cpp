@@ -23,19 +23,19 @@
 
 #include "approximate/quasidev.h"
 #include "approximate_params.h"
-#include "atomic_file.h"
 #include "cut_marker.h"
 #include "flatten/flatten.h"
-#include "flatten_fields.h"
+#include "flatten_mesh.h"
 #include "flatten_report_json.h"
+#include "io/atomic_file.h"
+#include "io/mesh_reader.h"
 #include "io/pattern_files.h"
+#include "io/ply_writer.h"
+#include "io/result_ply.h"
 #include "marker_dxf.h"
 #include "marker_svg.h"
 #include "mesh_problem.h"
-#include "mesh_reader.h"
 #include "options.h"
-#include "output_mesh.h"
-#include "ply_writer.h"
 #include "printable_pdf.h"
 #include "report_json.h"
 #include "segment/segment.h"
@@ -114,9 +114,8 @@ void write_files(const std::vector<std::pair<std::string, std::string>>& files) 
   for (const auto& file : pending) file->commit();
 }
 
-std::string ply_bytes(const qd::meshio::MeshFile& mesh, const qd::meshio::OutputFields& fields) {
-  return qd::meshio::serialize_ply(qd::meshio::output_ply(mesh, fields),
-                                   qd::meshio::PlyFormat::BinaryLittleEndian);
+std::string ply_bytes(const qd::meshio::PlyFile& ply) {
+  return qd::meshio::serialize_ply(ply, qd::meshio::PlyFormat::BinaryLittleEndian);
 }
 
 // True when a log line is one of the warnings (the engines log each one, bare or after
@@ -173,7 +172,7 @@ void approximate(const qd::cli::ApproximateOptions& o) {
         return qd::approximate(p, progress, option_setting);
       });
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(mesh, qd::cli::output_fields(result, o, mesh.positions.size()))}};
+      {o.output, ply_bytes(qd::meshio::approximated_ply(mesh, result, o.settings))}};
   if (!o.report.empty()) {
     const qd::cli::ReportContext context{o,
                                          static_cast<int>(mesh.positions.size()),
@@ -194,7 +193,7 @@ void segment(const qd::cli::SegmentOptions& o) {
         return qd::segment(p, progress);
       });
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(mesh, qd::cli::segment_output_fields(result, mesh))}};
+      {o.output, ply_bytes(qd::meshio::segmented_ply(mesh, result))}};
   if (!o.report.empty()) {
     const qd::cli::SegmentReportContext context{o,
                                                 static_cast<int>(mesh.positions.size()),
@@ -237,7 +236,7 @@ void flatten(const qd::cli::FlattenOptions& o) {
   const qd::params::FlattenSettings& s = o.settings;
   std::vector<std::string> log = result.log;
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(mesh, qd::cli::flatten_output_fields(result, mesh.triangles.size()))}};
+      {o.output, ply_bytes(qd::meshio::flattened_ply(mesh, result))}};
   for (auto& file : qd::pattern_files(s, result.pattern)) files.push_back(std::move(file));
   if (!s.pdf_file.empty()) {
     auto pdf = qd::pdf::printable_pdf(result.pattern, s.paper, s.unit);

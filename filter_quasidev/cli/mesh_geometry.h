@@ -3,7 +3,7 @@
 #pragma once
 
 #include "common/mesh.h"
-#include "mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace qd::cli {
 

@@ -3,7 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 
-#include "text_scan.h"
+#include "io/text_scan.h"
 
 namespace qd::cli {
 
@@ -46,12 +46,15 @@ void add_job_options(CLI::App& job, JobOptions& o, const std::string& input_help
   job.add_option("INPUT", o.input, input_help)->required()->type_name("");
   job.add_option("OUTPUT", o.output, output_help)->required()->type_name("");
   valued(job, "--report", "FILE.json", report_help, [&o](const std::string& v) { o.report = v; });
-  flag(job, "--overwrite-input", "allow OUTPUT to be the INPUT file", [&o] { o.overwrite_input = true; });
+  flag(job, "--overwrite-input", "allow OUTPUT to be the INPUT file",
+       [&o] { o.overwrite_input = true; });
   flag(job, "--progress",
        "show a progress line on stderr (default: when stderr is a\nterminal and not --quiet)",
        [&o] { o.progress = ProgressMode::On; });
-  flag(job, "--no-progress", "never show the progress line", [&o] { o.progress = ProgressMode::Off; });
-  flag(job, "--quiet", "print neither the log (stdout) nor notes (stderr)", [&o] { o.quiet = true; });
+  flag(job, "--no-progress", "never show the progress line",
+       [&o] { o.progress = ProgressMode::Off; });
+  flag(job, "--quiet", "print neither the log (stdout) nor notes (stderr)",
+       [&o] { o.quiet = true; });
 }
 
 }  // namespace qd::cli

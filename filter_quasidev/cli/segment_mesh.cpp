@@ -1,10 +1,7 @@
 #include "segment_mesh.h"
 
-#include <string>
-
+#include "io/ply_mesh.h"
 #include "mesh_geometry.h"
-#include "ply_mesh.h"
-#include "segment/patch_color.h"
 
 namespace qd::cli {
 
@@ -17,7 +14,8 @@ std::vector<char> selected_faces(const meshio::MeshFile& mesh) {
     std::vector<char> selected(mesh.triangles.size(), 0);
     bool any = false;
     for (std::size_t f = 0; f < selected.size(); ++f)
-      any |= (selected[f] = (static_cast<long long>(p.values[f]) & meshio::kSelectedFlag) != 0) != 0;
+      any |=
+          (selected[f] = (static_cast<long long>(p.values[f]) & meshio::kSelectedFlag) != 0) != 0;
     if (any) return selected;
   }
   return {};
@@ -32,17 +30,6 @@ SegmentProblem make_segment_problem(const meshio::MeshFile& mesh, const SegmentO
   if (o.settings.selection_border) problem.selected = selected_faces(mesh);
   problem.params = o.settings.engine;
   return problem;
-}
-
-meshio::OutputFields segment_output_fields(const SegmentResult& result, const meshio::MeshFile& mesh) {
-  if (result.patch.size() != mesh.triangles.size())
-    throw Error("internal error: the segmentation returned " + std::to_string(result.patch.size()) +
-                " patch ids for " + std::to_string(mesh.triangles.size()) + " faces");
-  meshio::OutputFields fields;
-  fields.face_quality.assign(result.patch.begin(), result.patch.end());
-  fields.face_colors.reserve(result.patch.size());
-  for (int id : result.patch) fields.face_colors.push_back(patch_color(id));
-  return fields;
 }
 
 }  // namespace qd::cli

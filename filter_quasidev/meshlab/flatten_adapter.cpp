@@ -4,13 +4,13 @@
 #include <stdexcept>
 #include <utility>
 
-#include "atomic_file.h"
 #include "declared_parameters.h"
 #include "engine_mesh.h"
 #include "flatten/flatten.h"
 #include "flatten/stretch_ramp.h"
 #include "flatten_figures.h"
 #include "flatten_params.h"
+#include "io/atomic_file.h"
 #include "io/pattern_files.h"
 #include "jobs.h"
 
@@ -24,7 +24,8 @@ namespace {
 void write_back(CMeshO& m, const EngineMesh& e, const qd::FlattenResult& r) {
   using Quality = CMeshO::FaceType::QualityType;
   using TexScalar = CMeshO::FaceType::TexCoordType::ScalarType;
-  if (static_cast<std::size_t>(r.uv.rows()) != e.face_slot.size() || r.stretch.size() != e.face_slot.size())
+  if (static_cast<std::size_t>(r.uv.rows()) != e.face_slot.size() ||
+      r.stretch.size() != e.face_slot.size())
     throw std::logic_error("the flattening returned a result of the wrong size");
   if (!m.face.IsWedgeTexCoordEnabled()) m.face.EnableWedgeTexCoord();
   if (!m.face.IsQualityEnabled()) m.face.EnableQuality();

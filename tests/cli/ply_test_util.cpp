@@ -1,7 +1,7 @@
 #include "ply_test_util.h"
 
-#include "ply_mesh.h"
-#include "ply_reader.h"
+#include "io/ply_mesh.h"
+#include "io/ply_reader.h"
 
 namespace qd::meshio::test {
 
@@ -36,7 +36,8 @@ PlyFile sample_ply() {
   f.name = "face";
   f.count = 3;
   f.properties = {
-      list("vertex_indices", ScalarType::UInt8, ScalarType::Int32, {{0, 1, 2}, {0, 2, 3}, {1, 4, 2, 0}}),
+      list("vertex_indices", ScalarType::UInt8, ScalarType::Int32,
+           {{0, 1, 2}, {0, 2, 3}, {1, 4, 2, 0}}),
       list("texcoord", ScalarType::UInt8, ScalarType::Float32,
            {{0, 0, 1, 0, 1, 1}, {0, 0, 1, 1, 0, 1}, {0.5f, 0.25f, 0.75f, 0.125f, 1, 0.5f, 0, 0}}),
       scalar_property("quality", ScalarType::Float32, {1, 1, 2.2f})};

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "mesh_file.h"
-#include "ply_file.h"
+#include "io/mesh_file.h"
+#include "io/ply_file.h"
 
 namespace qd::meshio::test {
 

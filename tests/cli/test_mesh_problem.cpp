@@ -1,5 +1,4 @@
-// The bridge between mesh tables and the engine: AE-unit tolerances, patches, constraints,
-// and the output fields taken from a Result.
+// The bridge between mesh tables and the engine: AE-unit tolerances, patches, constraints.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -65,26 +64,6 @@ TEST(MeshProblem, DegenerateMeshIsRefused) {
   const cli::ApproximateOptions o = options({"a.ply", "b.ply"});
   EXPECT_NE(error_of([&] { cli::make_problem(m, o); }).find("average edge length is 0"),
             std::string::npos);
-}
-
-TEST(MeshProblem, OutputFieldsFollowTheQualityChoice) {
-  Result r;
-  r.V = Positions::Zero(3, 3);
-  r.V(2, 1) = 7;
-  r.k_after = {-1, 0, 1};
-  r.displacement = {0, 0.5, 2};
-  cli::ApproximateOptions o = options({"a.ply", "b.ply"});
-  meshio::OutputFields f = cli::output_fields(r, o, 3);
-  EXPECT_EQ(f.quality, r.k_after);
-  EXPECT_EQ(f.positions[2][1], 7);
-  ASSERT_EQ(f.colors.size(), 3u);
-  EXPECT_EQ(f.colors[0], (std::array<unsigned char, 3>{255, 0, 0}));   // lowest K: red
-  EXPECT_EQ(f.colors[2], (std::array<unsigned char, 3>{0, 0, 255}));   // highest K: blue
-  o = options({"a.ply", "b.ply", "--output-quality", "displacement", "--no-colorize"});
-  f = cli::output_fields(r, o, 3);
-  EXPECT_EQ(f.quality, r.displacement);
-  EXPECT_TRUE(f.colors.empty());
-  EXPECT_NE(error_of([&] { cli::output_fields(r, o, 4); }).find("internal error"), std::string::npos);
 }
 
 }  // namespace

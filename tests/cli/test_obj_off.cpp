@@ -2,8 +2,8 @@
 // and their error messages.
 #include <gtest/gtest.h>
 
-#include "obj_reader.h"
-#include "off_reader.h"
+#include "io/obj_reader.h"
+#include "io/off_reader.h"
 #include "ply_test_util.h"
 
 using namespace qd::meshio;
@@ -41,7 +41,8 @@ TEST(ObjReader, CornersGroupsAndTexcoords) {
 }
 
 TEST(ObjReader, NoGroupsNoPatchesMixedUvDroppedPolygonSplit) {
-  const MeshFile m = parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1 2 3 4\nf 1//1 3//1 4//1\n");
+  const MeshFile m =
+      parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1 2 3 4\nf 1//1 3//1 4//1\n");
   EXPECT_TRUE(m.patch.empty());
   EXPECT_TRUE(m.face_extra.empty());
   EXPECT_EQ(m.triangles.size(), 3u);
@@ -58,7 +59,8 @@ TEST(ObjReader, Errors) {
       {"v 0 0\n", "OBJ line 1: a vertex needs 3 coordinates"},
       {"v 0 0 x\n", "OBJ line 1: vertex coordinate 'x' is not a finite number"},
       {"v 0 0 nan\n", "is not a finite number"},
-      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "OBJ line 4: vertex index 4 is out of range (3 defined so far)"},
+      {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n",
+       "OBJ line 4: vertex index 4 is out of range (3 defined so far)"},
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "'0' is not a valid vertex index"},
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 1 2\n", "vertex index -4 is out of range"},
       {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2 2/1 3/1\n", "texture index 2 is out of range"},
@@ -71,11 +73,13 @@ TEST(ObjReader, Errors) {
 }
 
 TEST(OffReader, ReadsCountsOnTheirOwnLineAndPolygons) {
-  const MeshFile m = parse_off("OFF\n# comment\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 255 0 0\n");
+  const MeshFile m =
+      parse_off("OFF\n# comment\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 255 0 0\n");
   EXPECT_EQ(m.positions.size(), 4u);
   EXPECT_EQ(m.triangles.size(), 2u);
   EXPECT_TRUE(m.patch.empty());
-  const MeshFile c = parse_off("COFF 3 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n0 1 0 1 1 1 1\n3 0 1 2\n");
+  const MeshFile c =
+      parse_off("COFF 3 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n0 1 0 1 1 1 1\n3 0 1 2\n");
   EXPECT_EQ(c.triangles.size(), 1u);
 }
 
@@ -84,9 +88,11 @@ TEST(OffReader, Errors) {
       {"", "OFF: the file is empty"},
       {"PLY\n", "not an OFF file"},
       {"OFF\n", "the counts line is missing"},
-      {"OFF\n1000000000 1 0\n0 0 0\n", "declares 1000000000 vertices and 1 faces, but only 1 data lines"},
+      {"OFF\n1000000000 1 0\n0 0 0\n",
+       "declares 1000000000 vertices and 1 faces, but only 1 data lines"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "face 0 uses vertex index 5, out of range"},
-      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n", "OFF line 6: the face lists 3 indices but says it has 4"},
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n",
+       "OFF line 6: the face lists 3 indices but says it has 4"},
       {"OFF\n3 1 0\n0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", "OFF line 4: vertex coordinate 'inf'"},
       {"OFF\n-3 1 0\n", "vertex count '-3' is not a non-negative integer"},
   };

@@ -7,40 +7,50 @@
 #include <filesystem>
 #include <fstream>
 
-#include "atomic_file.h"
 #include "common/error.h"
-#include "constraint_file.h"
-#include "mesh_reader.h"
-#include "output_mesh.h"
-#include "ply_reader.h"
+#include "io/atomic_file.h"
+#include "io/constraint_file.h"
+#include "io/mesh_reader.h"
+#include "io/output_mesh.h"
+#include "io/ply_reader.h"
+#include "io/ply_writer.h"
 #include "ply_test_util.h"
-#include "ply_writer.h"
 
 using namespace qd::meshio;
 using namespace qd::meshio::test;
 
 namespace {
 
-OutputFields shifted(const MeshFile& m, bool colors) {
-  OutputFields f;
-  for (const auto& p : m.positions) f.positions.push_back({p[0], p[1], p[2] + 0.1});
-  for (std::size_t i = 0; i < m.positions.size(); ++i) f.quality.push_back(0.5 * static_cast<double>(i));
-  if (colors) f.colors.assign(m.positions.size(), {10, 20, 30});
-  return f;
+// The output of `m` moved up by 0.1, with vertex quality 0.5 i and, if asked, colours.
+PlyFile shifted(const MeshFile& m, bool colors) {
+  PlyFile out = output_ply(m);
+  qd::Positions V(static_cast<Eigen::Index>(m.positions.size()), 3);
+  std::vector<double> quality;
+  for (std::size_t i = 0; i < m.positions.size(); ++i) {
+    const auto& p = m.positions[i];
+    V.row(static_cast<Eigen::Index>(i)) << p[0], p[1], p[2] + 0.1;
+    quality.push_back(0.5 * static_cast<double>(i));
+  }
+  set_positions(out, m, V);
+  PlyElement& vertex = output_element(out, "vertex");
+  set_quality(vertex, quality);
+  if (colors) set_colors(vertex, std::vector<std::array<unsigned char, 3>>(V.rows(), {10, 20, 30}));
+  return out;
 }
 
 TEST(OutputMesh, PassesThroughEverythingItDoesNotOwn) {
   PlyFile in = sample_ply();
-  in.elements[0].properties.push_back(scalar_property("quality", ScalarType::Float32, {9, 9, 9, 9, 9}));
+  in.elements[0].properties.push_back(
+      scalar_property("quality", ScalarType::Float32, {9, 9, 9, 9, 9}));
   in.elements[0].properties.push_back(scalar_property("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
   const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::BinaryBigEndian));
-  const PlyFile out = parse_ply(serialize_ply(output_ply(mesh, shifted(mesh, true)),
-                                              PlyFormat::BinaryLittleEndian));
+  const PlyFile out = parse_ply(serialize_ply(shifted(mesh, true), PlyFormat::BinaryLittleEndian));
   const PlyElement& v = out.elements[0];
   ASSERT_EQ(v.name, "vertex");
   EXPECT_EQ(v.properties[0].type, ScalarType::Float64);
   EXPECT_EQ(v.properties[2].values[4], 0.25 + 0.1);
-  EXPECT_EQ(v.properties[v.find("temperature")].values, (std::vector<double>{-7, 3, 100, -32768, 32767}));
+  EXPECT_EQ(v.properties[v.find("temperature")].values,
+            (std::vector<double>{-7, 3, 100, -32768, 32767}));
   EXPECT_EQ(v.properties[v.find("flags")].values[4], 0x20);
   EXPECT_EQ(v.properties[v.find("quality")].values, (std::vector<double>{0, 0.5, 1, 1.5, 2}));
   EXPECT_EQ(v.properties[v.find("red")].values, std::vector<double>(5, 10));
@@ -61,7 +71,7 @@ TEST(OutputMesh, WithoutColoursTheInputColoursStay) {
   PlyFile in = sample_ply();
   in.elements[0].properties.push_back(scalar_property("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
   const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::Ascii));
-  const PlyFile out = output_ply(mesh, shifted(mesh, false));
+  const PlyFile out = shifted(mesh, false);
   const PlyElement& v = out.elements[0];
   EXPECT_EQ(v.properties[v.find("red")].values, (std::vector<double>{1, 2, 3, 4, 5}));
   EXPECT_LT(v.find("alpha"), 0);
@@ -71,11 +81,15 @@ TEST(OutputMesh, PerFaceFieldsReplaceTheirOwnAndKeepTheVertices) {
   PlyFile in = sample_ply();
   in.elements[0].properties[0].type = ScalarType::Float32;  // x stays float when not moved
   const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::BinaryLittleEndian));
-  OutputFields f;
-  f.texcoords.assign(mesh.triangles.size(), {0.5, 1, 1.5, 2, 2.5, 3});
-  f.face_quality.assign(mesh.triangles.size(), -0.25);
-  f.face_colors.assign(mesh.triangles.size(), {1, 2, 3});
-  const PlyFile out = parse_ply(serialize_ply(output_ply(mesh, f), PlyFormat::BinaryLittleEndian));
+  const std::size_t nf = mesh.triangles.size();
+  PlyFile written = output_ply(mesh);
+  PlyElement& written_face = output_element(written, "face");
+  qd::WedgeUV uv(static_cast<Eigen::Index>(nf), 6);
+  uv.rowwise() = Eigen::Matrix<double, 1, 6>(0.5, 1, 1.5, 2, 2.5, 3);
+  set_texcoords(written_face, uv);
+  set_quality(written_face, std::vector<double>(nf, -0.25));
+  set_colors(written_face, std::vector<std::array<unsigned char, 3>>(nf, {1, 2, 3}));
+  const PlyFile out = parse_ply(serialize_ply(written, PlyFormat::BinaryLittleEndian));
   const PlyElement& v = out.elements[0];
   EXPECT_EQ(v.properties[0].type, ScalarType::Float32);
   EXPECT_EQ(v.properties[1].type, in.elements[0].properties[1].type);
@@ -90,34 +104,36 @@ TEST(OutputMesh, PerFaceFieldsReplaceTheirOwnAndKeepTheVertices) {
   }
   EXPECT_EQ(texcoords, 1);
   EXPECT_EQ(qualities, 1);
-  const PlyProperty& uv = face.properties[face.find("texcoord")];
-  EXPECT_EQ(uv.type, ScalarType::Float32);
-  EXPECT_EQ(uv.count_type, ScalarType::UInt8);
-  EXPECT_EQ(std::vector<double>(uv.values.begin(), uv.values.begin() + 6),
+  const PlyProperty& texcoord = face.properties[face.find("texcoord")];
+  EXPECT_EQ(texcoord.type, ScalarType::Float32);
+  EXPECT_EQ(texcoord.count_type, ScalarType::UInt8);
+  EXPECT_EQ(std::vector<double>(texcoord.values.begin(), texcoord.values.begin() + 6),
             (std::vector<double>{0.5, 1, 1.5, 2, 2.5, 3}));
   EXPECT_EQ(face.properties[face.find("quality")].type, ScalarType::Float64);
   EXPECT_EQ(face.properties[face.find("quality")].values, std::vector<double>(4, -0.25));
   EXPECT_EQ(face.properties[face.find("green")].values, std::vector<double>(4, 2));
   EXPECT_EQ(face.properties[face.find("alpha")].values, std::vector<double>(4, 255));
-  OutputFields wrong;
-  wrong.face_quality = {1.0};
-  EXPECT_THROW(output_ply(mesh, wrong), qd::Error);
+  EXPECT_THROW(set_quality(written_face, {1.0}), qd::Error);
 }
 
 TEST(OutputMesh, VertexNormalsAreRecomputed) {
   const std::string text =
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float "
+      "z\n"
       "property float nx\nproperty float ny\nproperty float nz\nelement face 1\n"
-      "property list uchar int vertex_indices\nend_header\n0 0 0 1 0 0\n1 0 0 1 0 0\n0 1 0 1 0 0\n3 0 1 2\n";
+      "property list uchar int vertex_indices\nend_header\n0 0 0 1 0 0\n1 0 0 1 0 0\n0 1 0 1 0 "
+      "0\n3 0 1 2\n";
   const MeshFile mesh = mesh_of(text);
-  OutputFields f;
-  f.positions = {{0, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // now in the x = 0 plane, normal +x
-  const PlyFile out = output_ply(mesh, f);
+  PlyFile out = output_ply(mesh);
+  qd::Positions V(3, 3);
+  V << 0, 0, 0, 0, 1, 0, 0, 0, 1;  // now in the x = 0 plane, normal +x
+  set_positions(out, mesh, V);
   const PlyElement& v = out.elements[0];
   EXPECT_DOUBLE_EQ(v.properties[v.find("nx")].values[0], 1.0);
   EXPECT_DOUBLE_EQ(v.properties[v.find("nz")].values[2], 0.0);
-  f.positions = mesh.positions;  // back in z = 0: normal +z
-  const PlyFile again = output_ply(mesh, f);
+  V << 0, 0, 0, 1, 0, 0, 0, 1, 0;  // back in z = 0: normal +z
+  PlyFile again = output_ply(mesh);
+  set_positions(again, mesh, V);
   const PlyElement& w = again.elements[0];
   EXPECT_DOUBLE_EQ(w.properties[w.find("nz")].values[1], 1.0);
 }
@@ -126,14 +142,16 @@ class TempDir : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = std::filesystem::temp_directory_path() /
-           ("qd_cli_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+           ("qd_cli_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
   std::string path(const char* name) const { return (dir_ / name).string(); }
-  static void write(const std::string& p, const std::string& content) { std::ofstream(p) << content; }
+  static void write(const std::string& p, const std::string& content) {
+    std::ofstream(p) << content;
+  }
   std::size_t entries() const {
     return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(dir_), {}));
   }
@@ -157,8 +175,9 @@ TEST_F(TempDir, PendingFileReplacesOnlyOnCommit) {
 }
 
 TEST_F(TempDir, PendingFileInMissingDirectoryFails) {
-  EXPECT_NE(error_of([&] { PendingFile p(path("no/such/dir/out.ply"), "x"); }).find("cannot create"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of([&] { PendingFile p(path("no/such/dir/out.ply"), "x"); }).find("cannot create"),
+      std::string::npos);
 }
 
 TEST_F(TempDir, ReadMeshDispatchesAndNamesTheFile) {
@@ -170,21 +189,28 @@ TEST_F(TempDir, ReadMeshDispatchesAndNamesTheFile) {
   EXPECT_EQ(read_mesh(path("m.obj")).triangles.size(), 1u);
   EXPECT_EQ(read_mesh(path("m.off")).triangles.size(), 1u);
   EXPECT_NE(error_of([&] { read_mesh(path("empty.ply")); }).find("is empty"), std::string::npos);
-  EXPECT_NE(error_of([&] { read_mesh(path("nofaces.obj")); }).find("has no faces"), std::string::npos);
-  EXPECT_NE(error_of([&] { read_mesh(path("m.stl")); }).find("unknown mesh format"), std::string::npos);
-  EXPECT_NE(error_of([&] { read_mesh(path("missing.ply")); }).find("cannot open"), std::string::npos);
-  EXPECT_NE(error_of([&] { read_mesh(dir_.string()); }).find("not a regular file"), std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(path("nofaces.obj")); }).find("has no faces"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(path("m.stl")); }).find("unknown mesh format"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(path("missing.ply")); }).find("cannot open"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { read_mesh(dir_.string()); }).find("not a regular file"),
+            std::string::npos);
 }
 
 TEST_F(TempDir, ConstraintFile) {
   write(path("c.txt"), "# selected\n3\n\n 0  # first\n3\n");
   EXPECT_EQ(read_constraint_file(path("c.txt"), 4), (std::vector<std::size_t>{3, 0, 3}));
   write(path("bad.txt"), "1\n4\n");
-  EXPECT_NE(error_of([&] { read_constraint_file(path("bad.txt"), 4); })
-                .find("line 2: vertex index 4 is out of range (the mesh has 4 vertices"),
+  EXPECT_NE(error_of([&] {
+              read_constraint_file(path("bad.txt"), 4);
+            }).find("line 2: vertex index 4 is out of range (the mesh has 4 vertices"),
             std::string::npos);
   write(path("word.txt"), "1 2\n");
-  EXPECT_NE(error_of([&] { read_constraint_file(path("word.txt"), 4); }).find("one vertex index per line"),
+  EXPECT_NE(error_of([&] {
+              read_constraint_file(path("word.txt"), 4);
+            }).find("one vertex index per line"),
             std::string::npos);
 }
 

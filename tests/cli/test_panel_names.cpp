@@ -1,9 +1,9 @@
 // Panel names: OBJ groups' names and PLY "comment patch <id> <name…>" lines name the patches.
 #include <gtest/gtest.h>
 
-#include "obj_reader.h"
-#include "ply_mesh.h"
-#include "ply_reader.h"
+#include "io/obj_reader.h"
+#include "io/ply_mesh.h"
+#include "io/ply_reader.h"
 
 using namespace qd::meshio;
 

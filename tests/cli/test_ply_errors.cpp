@@ -5,9 +5,9 @@
 #include <random>
 
 #include "common/error.h"
-#include "ply_reader.h"
+#include "io/ply_reader.h"
+#include "io/ply_writer.h"
 #include "ply_test_util.h"
-#include "ply_writer.h"
 
 using namespace qd::meshio;
 using namespace qd::meshio::test;
@@ -36,12 +36,14 @@ std::vector<BadCase> bad_cases() {
   return {
       {"empty", "", "does not start with 'ply'"},
       {"not_ply", "solid cube\n", "does not start with 'ply'"},
-      {"header_only", "ply\nformat ascii 1.0\nelement vertex 3\n", "not terminated by 'end_header'"},
+      {"header_only", "ply\nformat ascii 1.0\nelement vertex 3\n",
+       "not terminated by 'end_header'"},
       {"no_format", "ply\nelement vertex 0\nend_header\n", "end_header before the format line"},
       {"bad_format", "ply\nformat binary_middle_endian 1.0\nend_header\n", "unknown format"},
       {"bad_type", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n",
        "header line 4: unknown property type 'quad'"},
-      {"float_count", "ply\nformat ascii 1.0\nelement face 1\nproperty list float int v\nend_header\n",
+      {"float_count",
+       "ply\nformat ascii 1.0\nelement face 1\nproperty list float int v\nend_header\n",
        "list count type must be an integer type"},
       {"property_first", "ply\nformat ascii 1.0\nproperty float x\nend_header\n",
        "property before any element"},
@@ -52,10 +54,12 @@ std::vector<BadCase> bad_cases() {
       {"unknown_keyword", "ply\nformat ascii 1.0\nelemnt vertex 0\nend_header\n",
        "unknown keyword 'elemnt'"},
       {"huge_count_binary",
-       binary_header("element vertex 1000000000000\nproperty float x\nproperty float y\nproperty float z\n") +
+       binary_header(
+           "element vertex 1000000000000\nproperty float x\nproperty float y\nproperty float z\n") +
            std::string(40, '\0'),
        "declares 1000000000000 'vertex' elements, but only 40 bytes"},
-      {"huge_count_ascii", "ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\nend_header\n1\n",
+      {"huge_count_ascii",
+       "ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\nend_header\n1\n",
        "declares 99999999999 'vertex' elements"},
       {"truncated_fixed_size", tri.substr(0, tri.size() - 7),
        "the header declares 2 'edge' elements, but only 17 bytes of data remain"},
@@ -70,15 +74,19 @@ std::vector<BadCase> bad_cases() {
        "line 14: unexpected data after the last element"},
       {"bad_number", kHeader + "0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n",
        "line 11: 'zero' is not a valid float for property 'y' of vertex 1 (of 3)"},
-      {"uchar_overflow", kHeader + "0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n", "'300' is not a valid uchar"},
-      {"fractional_index", kHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n", "'1.5' is not a valid int"},
+      {"uchar_overflow", kHeader + "0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n",
+       "'300' is not a valid uchar"},
+      {"fractional_index", kHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 1.5 2\n",
+       "'1.5' is not a valid int"},
       {"negative_list",
-       binary_header("element face 1\nproperty list char int vertex_indices\n") + std::string("\xff", 1),
+       binary_header("element face 1\nproperty list char int vertex_indices\n") +
+           std::string("\xff", 1),
        "negative list length of property 'vertex_indices' of face 0"},
       {"list_past_end",
        binary_header("element face 1\nproperty list uint int vertex_indices\n") +
            std::string("\x00\x00\x00\x10", 4) + std::string(8, '\0'),
-       "list length 268435456 of property 'vertex_indices' of face 0 (of 1) exceeds the remaining data"},
+       "list length 268435456 of property 'vertex_indices' of face 0 (of 1) exceeds the remaining "
+       "data"},
   };
 }
 
@@ -104,16 +112,21 @@ TEST(PlyErrors, UnusableMeshesGiveTheirMessage) {
       {"negative_index", kHeader + "0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n", "uses vertex index -1"},
       {"two_corners", kHeader + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", "face 0 has 2 vertices"},
       {"nan", kHeader + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "vertex 1 has a non-finite coordinate"},
-      {"inf", kHeader + "0 0 0\n1 0 0\n0 1 -inf\n3 0 1 2\n", "vertex 2 has a non-finite coordinate"},
-      {"no_faces", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-                   "property float z\nend_header\n0 0 0\n",
+      {"inf", kHeader + "0 0 0\n1 0 0\n0 1 -inf\n3 0 1 2\n",
+       "vertex 2 has a non-finite coordinate"},
+      {"no_faces",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+       "property float z\nend_header\n0 0 0\n",
        "no 'face' element"},
-      {"no_z", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
-               "element face 0\nproperty list uchar int vertex_indices\nend_header\n0 0\n",
+      {"no_z",
+       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+       "element face 0\nproperty list uchar int vertex_indices\nend_header\n0 0\n",
        "the 'vertex' element has no 'z' property"},
       {"huge_quality",
-       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-       "element face 1\nproperty list uchar int vertex_indices\nproperty float quality\nend_header\n"
+       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty "
+       "float z\n"
+       "element face 1\nproperty list uchar int vertex_indices\nproperty float "
+       "quality\nend_header\n"
        "0 0 0\n1 0 0\n0 1 0\n3 0 1 2 1e20\n",
        "face 0 has quality"},
   };
@@ -126,7 +139,8 @@ TEST(PlyErrors, UnusableMeshesGiveTheirMessage) {
 
 // Every prefix and many random corruptions of a valid file either parse or throw qd::Error.
 TEST(PlyErrors, TruncationAndCorruptionNeverCrash) {
-  for (PlyFormat format : {PlyFormat::Ascii, PlyFormat::BinaryLittleEndian, PlyFormat::BinaryBigEndian}) {
+  for (PlyFormat format :
+       {PlyFormat::Ascii, PlyFormat::BinaryLittleEndian, PlyFormat::BinaryBigEndian}) {
     const std::string good = serialize_ply(sample_ply(), format);
     int failures = 0;
     for (std::size_t n = 0; n < good.size(); ++n) {

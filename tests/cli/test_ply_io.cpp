@@ -1,10 +1,10 @@
 // PLY reader/writer: round trips in the three formats, pass-through, and mesh extraction.
 #include <gtest/gtest.h>
 
-#include "ply_mesh.h"
-#include "ply_reader.h"
+#include "io/ply_mesh.h"
+#include "io/ply_reader.h"
+#include "io/ply_writer.h"
 #include "ply_test_util.h"
-#include "ply_writer.h"
 
 using namespace qd::meshio;
 using namespace qd::meshio::test;
@@ -123,9 +123,11 @@ TEST(PlyMesh, IntegerPatchPropertyIsUsedWithoutQuality) {
 
 TEST(PlyReader, AcceptsCrLfHeadersSignsAndSkipsBlankHeaderLines) {
   const std::string text =
-      "ply\r\nformat ascii 1.0\r\ncomment  two  spaces\r\n\r\nelement vertex 3\r\nproperty double x\r\n"
+      "ply\r\nformat ascii 1.0\r\ncomment  two  spaces\r\n\r\nelement vertex 3\r\nproperty double "
+      "x\r\n"
       "property double y\r\nproperty double z\r\nelement face 1\r\n"
-      "property list uchar uint vertex_indices\r\nend_header\r\n+1 -2 3e2\r\n0 0 0\r\n1 1 1\r\n3 0 1 2\r\n";
+      "property list uchar uint vertex_indices\r\nend_header\r\n+1 -2 3e2\r\n0 0 0\r\n1 1 1\r\n3 0 "
+      "1 2\r\n";
   const PlyFile ply = parse_ply(text);
   EXPECT_EQ(ply.comments, (std::vector<std::string>{" two  spaces"}));
   EXPECT_EQ(ply.elements[0].properties[2].values[0], 300.0);

@@ -6,10 +6,10 @@
 #include <string_view>
 
 #include "common/error.h"
-#include "obj_reader.h"
-#include "off_reader.h"
-#include "ply_mesh.h"
-#include "ply_reader.h"
+#include "io/obj_reader.h"
+#include "io/off_reader.h"
+#include "io/ply_mesh.h"
+#include "io/ply_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);

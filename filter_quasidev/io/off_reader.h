@@ -6,7 +6,7 @@
 
 #include <string_view>
 
-#include "mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace qd::meshio {
 

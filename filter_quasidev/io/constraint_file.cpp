@@ -1,8 +1,8 @@
-#include "constraint_file.h"
+#include "io/constraint_file.h"
 
 #include "common/error.h"
-#include "mesh_reader.h"
-#include "text_scan.h"
+#include "io/mesh_reader.h"
+#include "io/text_scan.h"
 
 namespace qd::meshio {
 

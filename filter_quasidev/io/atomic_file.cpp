@@ -1,4 +1,4 @@
-#include "atomic_file.h"
+#include "io/atomic_file.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -38,8 +38,7 @@ bool write_all(int fd, const std::string& content) {
 
 }  // namespace
 
-PendingFile::PendingFile(const std::string& target, const std::string& content)
-    : target_(target) {
+PendingFile::PendingFile(const std::string& target, const std::string& content) : target_(target) {
   std::vector<char> name(target.begin(), target.end());
   const std::string suffix = ".quasidev-tmp-XXXXXX";
   name.insert(name.end(), suffix.begin(), suffix.end());

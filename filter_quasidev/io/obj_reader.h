@@ -4,13 +4,14 @@
 // polygons fan-triangulated), per-corner `texcoord` (2 floats per corner, from `vt`) when every
 // face has texture coordinates, and patch ids from `g` / `o` groups numbered 0, 1, ... in order
 // of first appearance (faces before any group form their own group), each named by its group's
-// name (the words after `g` / `o`; the unnamed group has none). No patch ids without groups. Normals, materials, lines and points are ignored (a note says so).
-// Throws qd::Error "OBJ line N: ..." on malformed or out-of-range data.
+// name (the words after `g` / `o`; the unnamed group has none). No patch ids without groups.
+// Normals, materials, lines and points are ignored (a note says so). Throws qd::Error "OBJ line N:
+// ..." on malformed or out-of-range data.
 #pragma once
 
 #include <string_view>
 
-#include "mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace qd::meshio {
 

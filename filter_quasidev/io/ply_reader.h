@@ -7,7 +7,7 @@
 
 #include <string_view>
 
-#include "ply_file.h"
+#include "io/ply_file.h"
 
 namespace qd::meshio {
 

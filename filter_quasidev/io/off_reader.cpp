@@ -1,11 +1,11 @@
-#include "off_reader.h"
+#include "io/off_reader.h"
 
 #include <cmath>
 #include <string>
 
 #include "common/error.h"
-#include "text_scan.h"
-#include "triangulate.h"
+#include "io/text_scan.h"
+#include "io/triangulate.h"
 
 namespace qd::meshio {
 
@@ -39,7 +39,8 @@ OffLines significant_lines(std::string_view bytes) {
 std::size_t parse_count(std::string_view token, int line, const char* what) {
   long long n = 0;
   if (!parse_integer(token, n) || n < 0)
-    fail(line, std::string(what) + " count '" + std::string(token) + "' is not a non-negative integer");
+    fail(line,
+         std::string(what) + " count '" + std::string(token) + "' is not a non-negative integer");
   return static_cast<std::size_t>(n);
 }
 
@@ -75,7 +76,8 @@ MeshFile parse_off(std::string_view bytes) {
     if (w.size() < 3) fail(lines.number[next], "a vertex needs 3 coordinates");
     for (std::size_t k = 0; k < 3; ++k)
       if (!parse_number(w[k], mesh.positions[i][k]) || !std::isfinite(mesh.positions[i][k]))
-        fail(lines.number[next], "vertex coordinate '" + std::string(w[k]) + "' is not a finite number");
+        fail(lines.number[next],
+             "vertex coordinate '" + std::string(w[k]) + "' is not a finite number");
   }
   PlyProperty corners;
   corners.is_list = true;

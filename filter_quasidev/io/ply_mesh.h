@@ -8,8 +8,8 @@
 // Throws qd::Error when the vertex or face element or a coordinate is missing or unusable.
 #pragma once
 
-#include "mesh_file.h"
-#include "ply_file.h"
+#include "io/mesh_file.h"
+#include "io/ply_file.h"
 
 namespace qd::meshio {
 

@@ -4,7 +4,7 @@
 // types on the way; and a malformed, truncated or hostile file must give one clear error, never
 // an abort, while plylib checks much of its input with assert (162 in plylib.cpp). Fuzzed with
 // the other readers (tests/cli/fuzz).
-#include "ply_reader.h"
+#include "io/ply_reader.h"
 
 #include <charconv>
 #include <cstdint>
@@ -12,8 +12,8 @@
 #include <limits>
 
 #include "common/error.h"
-#include "scalar_value.h"
-#include "text_scan.h"
+#include "io/scalar_value.h"
+#include "io/text_scan.h"
 
 namespace qd::meshio {
 
@@ -74,8 +74,7 @@ void parse_element_line(const std::vector<std::string_view>& w, int line_no, Ply
   const auto [end, ec] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), count);
   if (ec != std::errc() || end != w[2].data() + w[2].size())
     fail(at + "element count '" + std::string(w[2]) + "' is not a non-negative integer");
-  if (ply.find(std::string(w[1])))
-    fail(at + "element '" + std::string(w[1]) + "' appears twice");
+  if (ply.find(std::string(w[1]))) fail(at + "element '" + std::string(w[1]) + "' appears twice");
   PlyElement e;
   e.name = std::string(w[1]);
   e.count = static_cast<std::size_t>(count);
@@ -104,10 +103,14 @@ std::size_t parse_header(std::string_view bytes, PlyFile& ply) {
       ply.obj_info.push_back(rest_of_line(line, "obj_info"));
     } else if (w[0] == "format") {
       if (w.size() != 3 || w[2] != "1.0") fail(at + "expected 'format KIND 1.0'");
-      if (w[1] == "ascii") ply.format = PlyFormat::Ascii;
-      else if (w[1] == "binary_little_endian") ply.format = PlyFormat::BinaryLittleEndian;
-      else if (w[1] == "binary_big_endian") ply.format = PlyFormat::BinaryBigEndian;
-      else fail(at + "unknown format '" + std::string(w[1]) + "'");
+      if (w[1] == "ascii")
+        ply.format = PlyFormat::Ascii;
+      else if (w[1] == "binary_little_endian")
+        ply.format = PlyFormat::BinaryLittleEndian;
+      else if (w[1] == "binary_big_endian")
+        ply.format = PlyFormat::BinaryBigEndian;
+      else
+        fail(at + "unknown format '" + std::string(w[1]) + "'");
       have_format = true;
     } else if (w[0] == "element") {
       parse_element_line(w, line_no, ply);
@@ -208,8 +211,9 @@ class BinarySource {
 
   void expect_end() const {
     if (pos_ < bytes_.size())
-      fail(std::to_string(bytes_.size() - pos_) + " unexpected bytes after the last element at byte " +
-           std::to_string(pos_) + " (do the header's element counts match the data?)");
+      fail(std::to_string(bytes_.size() - pos_) +
+           " unexpected bytes after the last element at byte " + std::to_string(pos_) +
+           " (do the header's element counts match the data?)");
   }
 
  private:
@@ -222,14 +226,22 @@ class BinarySource {
 
   static double decode(ScalarType type, const unsigned char* raw) {
     switch (type) {
-      case ScalarType::Int8: return as<std::int8_t>(raw);
-      case ScalarType::UInt8: return as<std::uint8_t>(raw);
-      case ScalarType::Int16: return as<std::int16_t>(raw);
-      case ScalarType::UInt16: return as<std::uint16_t>(raw);
-      case ScalarType::Int32: return as<std::int32_t>(raw);
-      case ScalarType::UInt32: return as<std::uint32_t>(raw);
-      case ScalarType::Float32: return as<float>(raw);
-      case ScalarType::Float64: return as<double>(raw);
+      case ScalarType::Int8:
+        return as<std::int8_t>(raw);
+      case ScalarType::UInt8:
+        return as<std::uint8_t>(raw);
+      case ScalarType::Int16:
+        return as<std::int16_t>(raw);
+      case ScalarType::UInt16:
+        return as<std::uint16_t>(raw);
+      case ScalarType::Int32:
+        return as<std::int32_t>(raw);
+      case ScalarType::UInt32:
+        return as<std::uint32_t>(raw);
+      case ScalarType::Float32:
+        return as<float>(raw);
+      case ScalarType::Float64:
+        return as<double>(raw);
     }
     return 0;
   }

@@ -10,7 +10,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace qd::meshio {
 

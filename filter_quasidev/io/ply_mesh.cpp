@@ -1,4 +1,4 @@
-#include "ply_mesh.h"
+#include "io/ply_mesh.h"
 
 #include <climits>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <string>
 
 #include "common/error.h"
-#include "text_scan.h"
-#include "triangulate.h"
+#include "io/text_scan.h"
+#include "io/triangulate.h"
 
 namespace qd::meshio {
 

@@ -1,4 +1,4 @@
-#include "mesh_reader.h"
+#include "io/mesh_reader.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,10 +9,10 @@
 #include <sstream>
 
 #include "common/error.h"
-#include "obj_reader.h"
-#include "off_reader.h"
-#include "ply_mesh.h"
-#include "ply_reader.h"
+#include "io/obj_reader.h"
+#include "io/off_reader.h"
+#include "io/ply_mesh.h"
+#include "io/ply_reader.h"
 
 namespace qd::meshio {
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "ply_file.h"
+#include "io/ply_file.h"
 
 namespace qd::meshio {
 

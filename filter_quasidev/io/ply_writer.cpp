@@ -1,11 +1,11 @@
-#include "ply_writer.h"
+#include "io/ply_writer.h"
 
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
 
 #include "common/error.h"
-#include "scalar_value.h"
+#include "io/scalar_value.h"
 
 namespace qd::meshio {
 
@@ -13,9 +13,12 @@ namespace {
 
 const char* format_name(PlyFormat format) {
   switch (format) {
-    case PlyFormat::Ascii: return "ascii";
-    case PlyFormat::BinaryLittleEndian: return "binary_little_endian";
-    case PlyFormat::BinaryBigEndian: return "binary_big_endian";
+    case PlyFormat::Ascii:
+      return "ascii";
+    case PlyFormat::BinaryLittleEndian:
+      return "binary_little_endian";
+    case PlyFormat::BinaryBigEndian:
+      return "binary_big_endian";
   }
   return "?";
 }
@@ -28,8 +31,7 @@ std::string header(const PlyFile& ply, PlyFormat format) {
     h += "element " + e.name + " " + std::to_string(e.count) + "\n";
     for (const PlyProperty& p : e.properties) {
       h += "property ";
-      if (p.is_list)
-        h += std::string("list ") + scalar_type_name(p.count_type) + " ";
+      if (p.is_list) h += std::string("list ") + scalar_type_name(p.count_type) + " ";
       h += std::string(scalar_type_name(p.type)) + " " + p.name + "\n";
     }
   }
@@ -47,14 +49,22 @@ void append_raw(T v, bool big_endian, std::string& out) {
 
 void append_binary(ScalarType type, double v, bool big_endian, std::string& out) {
   switch (type) {
-    case ScalarType::Int8: return append_raw(static_cast<std::int8_t>(v), big_endian, out);
-    case ScalarType::UInt8: return append_raw(static_cast<std::uint8_t>(v), big_endian, out);
-    case ScalarType::Int16: return append_raw(static_cast<std::int16_t>(v), big_endian, out);
-    case ScalarType::UInt16: return append_raw(static_cast<std::uint16_t>(v), big_endian, out);
-    case ScalarType::Int32: return append_raw(static_cast<std::int32_t>(v), big_endian, out);
-    case ScalarType::UInt32: return append_raw(static_cast<std::uint32_t>(v), big_endian, out);
-    case ScalarType::Float32: return append_raw(static_cast<float>(v), big_endian, out);
-    case ScalarType::Float64: return append_raw(v, big_endian, out);
+    case ScalarType::Int8:
+      return append_raw(static_cast<std::int8_t>(v), big_endian, out);
+    case ScalarType::UInt8:
+      return append_raw(static_cast<std::uint8_t>(v), big_endian, out);
+    case ScalarType::Int16:
+      return append_raw(static_cast<std::int16_t>(v), big_endian, out);
+    case ScalarType::UInt16:
+      return append_raw(static_cast<std::uint16_t>(v), big_endian, out);
+    case ScalarType::Int32:
+      return append_raw(static_cast<std::int32_t>(v), big_endian, out);
+    case ScalarType::UInt32:
+      return append_raw(static_cast<std::uint32_t>(v), big_endian, out);
+    case ScalarType::Float32:
+      return append_raw(static_cast<float>(v), big_endian, out);
+    case ScalarType::Float64:
+      return append_raw(v, big_endian, out);
   }
 }
 

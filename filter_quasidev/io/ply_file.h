@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace qd::meshio {
 

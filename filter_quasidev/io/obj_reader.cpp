@@ -5,15 +5,15 @@
 // pkg-config file lacks TINYOBJLOADER_USE_DOUBLE (coordinates then come back as garbage). Keeping
 // "every bad line named with its number, nothing silently changed" on top of it would mean
 // re-checking all it parsed, which is most of this file.
-#include "obj_reader.h"
+#include "io/obj_reader.h"
 
 #include <cmath>
 #include <map>
 #include <string>
 
 #include "common/error.h"
-#include "text_scan.h"
-#include "triangulate.h"
+#include "io/text_scan.h"
+#include "io/triangulate.h"
 
 namespace qd::meshio {
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "mesh_file.h"
+#include "io/mesh_file.h"
 
 namespace qd::meshio {
 

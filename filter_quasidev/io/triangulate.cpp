@@ -1,4 +1,4 @@
-#include "triangulate.h"
+#include "io/triangulate.h"
 
 #include <cmath>
 #include <string>
@@ -27,8 +27,8 @@ void check_face(const PlyProperty& indices, std::size_t f, std::size_t vertex_co
 }
 
 // Appends face f's value of `column` for the triangle with corners (0, c1, c2) of an n-gon.
-void append_triangle_value(const PlyProperty& column, std::size_t f, std::size_t n,
-                           std::size_t c1, std::size_t c2, PlyProperty& out) {
+void append_triangle_value(const PlyProperty& column, std::size_t f, std::size_t n, std::size_t c1,
+                           std::size_t c2, PlyProperty& out) {
   if (!column.is_list) {
     out.values.push_back(column.values[f]);
     return;
