@@ -2,12 +2,16 @@
 // disconnected grids), their Laplacians, and random quasi-definite systems.
 #pragma once
 
+#include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <numeric>
 #include <random>
 #include <utility>
 #include <vector>
+
+#include "common/block_pattern.h"
+#include "common/mesh.h"
 
 namespace qd::test {
 
@@ -82,6 +86,35 @@ inline Eigen::SparseMatrix<double> random_quasi_definite(int a, int c, int per_c
   Eigen::SparseMatrix<double> K(n, n);
   K.setFromTriplets(t.begin(), t.end());
   return K;
+}
+
+// M's lower triangle in the BlockPattern layout: block (r, k) = a_rk·N + b_rk·(I − N) + c·S,
+// with a and b the grid's shifted Laplacians, N = ννᵀ and S a fixed symmetric coupling.
+inline Eigen::SparseMatrix<double> block_matrix(const BlockPattern& p, const Edges& edges,
+                                                const Vec3& nu, double stiff, double shift,
+                                                double coupling) {
+  const int n = p.blocks();
+  const Eigen::SparseMatrix<double> L = laplacian_lower(n, edges, shift);
+  const Eigen::Matrix3d N = nu.normalized() * nu.normalized().transpose();
+  Eigen::Matrix3d S;
+  S << 0, 1, 0, 1, 0, 1, 0, 1, 0;
+  const auto block = [&](double l) -> Eigen::Matrix3d {
+    return stiff * l * N + l * (Eigen::Matrix3d::Identity() - N) + coupling * l * S;
+  };
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Matrix3d D = block(L.coeff(k, k));
+    for (int j = 0; j < 3; ++j)
+      for (int i = j; i < 3; ++i) t.emplace_back(3 * k + i, 3 * k + j, D(i, j));
+    for (int s = p.begin(k); s < p.end(k); ++s) {
+      const Eigen::Matrix3d B = block(L.coeff(p.row(s), k));
+      for (int j = 0; j < 3; ++j)
+        for (int i = 0; i < 3; ++i) t.emplace_back(3 * p.row(s) + i, 3 * k + j, B(i, j));
+    }
+  }
+  Eigen::SparseMatrix<double> M(3 * n, 3 * n);
+  M.setFromTriplets(t.begin(), t.end());
+  return M;
 }
 
 }  // namespace qd::test

@@ -13,35 +13,6 @@
 namespace qd {
 namespace {
 
-// M's lower triangle in the BlockPattern layout: block (r, k) = a_rk·N + b_rk·(I − N) + c·S,
-// with a and b the grid's shifted Laplacians, N = ννᵀ and S a fixed symmetric coupling.
-Eigen::SparseMatrix<double> block_matrix(const BlockPattern& p, const test::Edges& edges,
-                                         const Vec3& nu, double stiff, double shift,
-                                         double coupling) {
-  const int n = p.blocks();
-  const Eigen::SparseMatrix<double> L = test::laplacian_lower(n, edges, shift);
-  const Eigen::Matrix3d N = nu.normalized() * nu.normalized().transpose();
-  Eigen::Matrix3d S;
-  S << 0, 1, 0, 1, 0, 1, 0, 1, 0;
-  const auto block = [&](double l) -> Eigen::Matrix3d {
-    return stiff * l * N + l * (Eigen::Matrix3d::Identity() - N) + coupling * l * S;
-  };
-  std::vector<Eigen::Triplet<double>> t;
-  for (int k = 0; k < n; ++k) {
-    const Eigen::Matrix3d D = block(L.coeff(k, k));
-    for (int j = 0; j < 3; ++j)
-      for (int i = j; i < 3; ++i) t.emplace_back(3 * k + i, 3 * k + j, D(i, j));
-    for (int s = p.begin(k); s < p.end(k); ++s) {
-      const Eigen::Matrix3d B = block(L.coeff(p.row(s), k));
-      for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i) t.emplace_back(3 * p.row(s) + i, 3 * k + j, B(i, j));
-    }
-  }
-  Eigen::SparseMatrix<double> M(3 * n, 3 * n);
-  M.setFromTriplets(t.begin(), t.end());
-  return M;
-}
-
 struct Grid {
   test::Edges edges = test::grid_edges(8, 7);
   BlockPattern pattern = lower_pattern(56, edges);
@@ -50,7 +21,7 @@ struct Grid {
 TEST(FramePreconditioner, IsExactWhenMSplitsAlongTheNormals) {
   const Grid g;
   const Vec3 nu(0.3, -0.2, 0.9);
-  const Eigen::SparseMatrix<double> M = block_matrix(g.pattern, g.edges, nu, 100.0, 0.5, 0.0);
+  const Eigen::SparseMatrix<double> M = test::block_matrix(g.pattern, g.edges, nu, 100.0, 0.5, 0.0);
   for (const SolverKind kind : {SolverKind::Cholmod, SolverKind::EigenLDLT}) {
     FramePreconditioner P(g.pattern, kind, 2);
     P.build(M, std::vector<Vec3>(56, 2.0 * nu));
@@ -64,7 +35,7 @@ TEST(FramePreconditioner, IsExactWhenMSplitsAlongTheNormals) {
 TEST(FramePreconditioner, LetsCgSolveACoupledSystem) {
   const Grid g;
   const Eigen::SparseMatrix<double> M =
-      block_matrix(g.pattern, g.edges, Vec3(0, 0, 1), 50.0, 0.2, 0.1);
+      test::block_matrix(g.pattern, g.edges, Vec3(0, 0, 1), 50.0, 0.2, 0.1);
   std::vector<Vec3> normals(56);  // normals off M's own, and one zero (any frame)
   for (size_t k = 0; k < normals.size(); ++k)
     normals[k] = Vec3(0.1 * std::sin(k), 0.1 * std::cos(k), 1.0);
@@ -90,7 +61,7 @@ TEST(FramePreconditioner, LetsCgSolveACoupledSystem) {
 TEST(FramePreconditioner, ReportsAnIndefiniteSystem) {
   const Grid g;
   const Eigen::SparseMatrix<double> M =
-      block_matrix(g.pattern, g.edges, Vec3(0, 0, 1), 1.0, -0.5, 0.0);
+      test::block_matrix(g.pattern, g.edges, Vec3(0, 0, 1), 1.0, -0.5, 0.0);
   FramePreconditioner P(g.pattern, SolverKind::Auto, 1);
   EXPECT_THROW(P.build(M, std::vector<Vec3>(56, Vec3(0, 0, 1))), Error);
 }
