@@ -11,7 +11,7 @@
 #include "common/error.h"
 #include "common/mesh.h"
 #include "common/metrics.h"
-#include "common/sparse_cholesky.h"
+#include "common/positive_definite_factor.h"
 
 namespace qd::bench {
 namespace {
@@ -67,7 +67,7 @@ std::vector<BareGroup> bare_solver_times(const Problem& problem, int runs) {
     if (bare.unknowns == 0) continue;
     std::vector<double> factor, refactor, solve;
     for (int r = 0; r < runs; ++r) {
-      SparseCholesky cholesky(params.solver);
+      PositiveDefiniteFactor cholesky(params.solver);
       factor.push_back(time_ms([&] { cholesky.factorize(system.matrix()); }));
       refactor.push_back(time_ms([&] { cholesky.factorize(system.matrix()); }));
       Eigen::VectorXd x;

@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "approximate/deformation_system.h"
-#include "common/sparse_cholesky.h"
+#include "common/solver_kind.h"
 #include "declare.h"
 
 namespace qd::params {

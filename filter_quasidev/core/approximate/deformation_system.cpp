@@ -4,7 +4,6 @@
 #include <algorithm>
 
 #include "approximate/anchor_weights.h"
-#include "common/conjugate_gradients.h"
 #include "common/parallel_for.h"
 #include "common/stage_timer.h"
 #include "common/vertex_order.h"
@@ -32,11 +31,13 @@ constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 
 DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& params, double ae,
                                      const std::vector<char>& defect_rows)
-    : g_(group), w_(params.weight), incident_(group.F, group.V0.rows()),
-      defects_(defect_rows.empty() ? DefectStars{}
-                                   : defect_stars(g_, incident_, defect_rows, params.defect_weight)),
-      solver_(params.solver), threads_(params.threads), cholesky_(params.solver),
-      augmented_(params.solver, false, Definiteness::Quasi) {
+    : g_(group),
+      w_(params.weight),
+      incident_(group.F, group.V0.rows()),
+      defects_(defect_rows.empty()
+                   ? DefectStars{}
+                   : defect_stars(g_, incident_, defect_rows, params.defect_weight)),
+      threads_(params.threads) {
   const size_t n = g_.fixed.size();
   std::vector<int> free_index(n, -1);
   int free_count = 0;
@@ -58,12 +59,7 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
       block_vertex_[static_cast<size_t>(unknown_[v])] = static_cast<int>(v);
     }
   blocks_ = free_count;
-  // Angle-defect rows are always factorised, in K: the frames fit them so poorly that CG gave
-  // up on the 40k tee's two big panels after 34 iterations, and on the bumpy cone and draped
-  // panels it cost 5–30 % more than factorising.
-  iterative_ = defects_.empty() &&
-               (params.method == SolveMethod::Iterative ||
-                (params.method == SolveMethod::Auto && 3L * blocks_ >= kIterativeFromUnknowns));
+  strategy_.emplace(params, 3L * blocks_, !defects_.empty(), pattern_, times_);
   const std::vector<double> mls = mls_weights(g_.V0, g_.fixed, ae, threads_);
   anchor2_.resize(static_cast<size_t>(blocks_));
   for (size_t v = 0; v < n; ++v)
@@ -88,9 +84,10 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
       const int b = unknown_[static_cast<size_t>(g_.F(f, kPairs[e][1]))];
       if (a < 0 || b < 0 || a == b) continue;
       const auto rows = pattern_.block_row.begin();
-      face_slot_[static_cast<size_t>(3 * f + e)] = static_cast<int>(
-          std::lower_bound(rows + pattern_.begin(std::min(a, b)), rows + pattern_.end(std::min(a, b)),
-                           std::max(a, b)) - rows);
+      face_slot_[static_cast<size_t>(3 * f + e)] =
+          static_cast<int>(std::lower_bound(rows + pattern_.begin(std::min(a, b)),
+                                            rows + pattern_.end(std::min(a, b)), std::max(a, b)) -
+                           rows);
     }
 
   const Eigen::Index size = 3 * static_cast<Eigen::Index>(blocks_);
@@ -112,7 +109,7 @@ void DeformationSystem::build_pattern(const std::vector<std::pair<int, int>>& ed
 void DeformationSystem::scale_developability(double factor) {
   w_ *= factor;
   for (double& s : defects_.weight) s *= factor;
-  preconditioner_stale_ = true;  // its scalar factors were of the stronger rows
+  strategy_->weights_changed();
 }
 
 // Each block column is summed by the thread that owns it, from the corners of its vertex: its
@@ -127,47 +124,52 @@ void DeformationSystem::set_rows(const std::vector<Vec3>& targets,
   const int* outer = M_.outerIndexPtr();
   parallel_ranges(static_cast<size_t>(blocks_), static_cast<size_t>(threads_), kRangeChunk,
                   [&](size_t first, size_t last) {
-    for (int k = static_cast<int>(first); k < static_cast<int>(last); ++k) {
-      std::fill(value + outer[3 * k], value + outer[3 * k + 3], 0.0);
-      Eigen::Matrix3d diagonal = anchor2_[static_cast<size_t>(k)] * Eigen::Matrix3d::Identity();
-      const int v = block_vertex_[static_cast<size_t>(k)];
-      for (int c = incident_.start[static_cast<size_t>(v)]; c < incident_.start[static_cast<size_t>(v) + 1]; ++c) {
-        const int f = incident_.faces[static_cast<size_t>(c)];
-        if (f >= g_.solve_faces) continue;  // a ring face: measured, not solved
-        const int p = g_.F(f, 0) == v ? 0 : g_.F(f, 1) == v ? 1 : 2;
-        const Vec3& n = targets_[static_cast<size_t>(f)];
-        const Eigen::Matrix3d N = w_ * w_ * n * n.transpose();
-        diagonal += corner_block(L, N, p, p);
-        for (int e = 0; e < 3; ++e) {
-          const int a = kPairs[e][0], b = kPairs[e][1];
-          const int s = face_slot_[static_cast<size_t>(3 * f + e)];
-          if (s < 0 || (a != p && b != p)) continue;
-          const int other = unknown_[static_cast<size_t>(g_.F(f, a == p ? b : a))];
-          if (other < k) continue;  // that block belongs to the other vertex's column
-          const Eigen::Matrix3d B = corner_block(L, N, a, b);  // symmetric
-          for (int j = 0; j < 3; ++j)
-            for (int i = 0; i < 3; ++i) value[block_entry(outer, pattern_, k, s, i, j)] += B(i, j);
-        }
-      }
-      for (int j = 0; j < 3; ++j)
-        for (int i = j; i < 3; ++i) value[diagonal_entry(outer, k, i, j)] = diagonal(i, j);
-    }
-  });
+                    for (int k = static_cast<int>(first); k < static_cast<int>(last); ++k) {
+                      std::fill(value + outer[3 * k], value + outer[3 * k + 3], 0.0);
+                      Eigen::Matrix3d diagonal =
+                          anchor2_[static_cast<size_t>(k)] * Eigen::Matrix3d::Identity();
+                      const int v = block_vertex_[static_cast<size_t>(k)];
+                      for (int c = incident_.start[static_cast<size_t>(v)];
+                           c < incident_.start[static_cast<size_t>(v) + 1]; ++c) {
+                        const int f = incident_.faces[static_cast<size_t>(c)];
+                        if (f >= g_.solve_faces) continue;  // a ring face: measured, not solved
+                        const int p = g_.F(f, 0) == v ? 0 : g_.F(f, 1) == v ? 1 : 2;
+                        const Vec3& n = targets_[static_cast<size_t>(f)];
+                        const Eigen::Matrix3d N = w_ * w_ * n * n.transpose();
+                        diagonal += corner_block(L, N, p, p);
+                        for (int e = 0; e < 3; ++e) {
+                          const int a = kPairs[e][0], b = kPairs[e][1];
+                          const int s = face_slot_[static_cast<size_t>(3 * f + e)];
+                          if (s < 0 || (a != p && b != p)) continue;
+                          const int other = unknown_[static_cast<size_t>(g_.F(f, a == p ? b : a))];
+                          if (other < k)
+                            continue;  // that block belongs to the other vertex's column
+                          const Eigen::Matrix3d B = corner_block(L, N, a, b);  // symmetric
+                          for (int j = 0; j < 3; ++j)
+                            for (int i = 0; i < 3; ++i)
+                              value[block_entry(outer, pattern_, k, s, i, j)] += B(i, j);
+                        }
+                      }
+                      for (int j = 0; j < 3; ++j)
+                        for (int i = j; i < 3; ++i)
+                          value[diagonal_entry(outer, k, i, j)] = diagonal(i, j);
+                    }
+                  });
   if (!defects_.empty()) set_augmented_values();
-  factor_current_ = false;
+  strategy_->values_changed();
 }
 
 // K's unknowns follow M's fill-reducing block order, each row's multiplier right after its
 // vertex's three coordinates. With a vertex's unknowns merged, K's graph is the vertex graph M
-// was ordered on (a row couples its vertex's star), so K needs no order of its own: AMD on the
-// merged graph costs the tee's big panel 0.63 GFlop, METIS 0.53 but 60 ms more per run, and AMD
-// on K's unknowns one by one 2.06. The pattern is built once by Eigen from the entries' places,
+// was ordered on (a row couples its vertex's star), so K needs no order of its own (the
+// alternatives measured: docs/solvers.md). The pattern is built once by Eigen from the entries' places,
 // each entry's value being its source's number, which then tells where each source goes.
 void DeformationSystem::build_augmented_pattern() {
   const size_t rows = defects_.vertex.size(), blocks = static_cast<size_t>(blocks_);
   entry_row_.resize(defects_.star.size());
   for (size_t r = 0; r < rows; ++r)
-    std::fill(entry_row_.begin() + defects_.start[r], entry_row_.begin() + defects_.start[r + 1], static_cast<int>(r));
+    std::fill(entry_row_.begin() + defects_.start[r], entry_row_.begin() + defects_.start[r + 1],
+              static_cast<int>(r));
   std::vector<int> block_row(blocks, -1);
   for (size_t r = 0; r < rows; ++r) {
     const int k = unknown_[static_cast<size_t>(defects_.vertex[r])];
@@ -197,7 +199,8 @@ void DeformationSystem::build_augmented_pattern() {
     const int k = unknown_[static_cast<size_t>(defects_.star[i])];
     if (k < 0) continue;
     for (int j = 0; j < 3; ++j)
-      add(first[static_cast<size_t>(k)] + j, multiplier_[static_cast<size_t>(entry_row_[i])], m_entries + 3 * i + static_cast<size_t>(j));
+      add(first[static_cast<size_t>(k)] + j, multiplier_[static_cast<size_t>(entry_row_[i])],
+          m_entries + 3 * i + static_cast<size_t>(j));
   }
   const size_t diagonal = m_entries + 3 * defects_.star.size();
   for (size_t r = 0; r < rows; ++r) add(multiplier_[r], multiplier_[r], diagonal + r);
@@ -216,7 +219,9 @@ void DeformationSystem::set_augmented_values() {
   for (size_t i = 0; i < defects_.star.size(); ++i) {
     if (unknown_[static_cast<size_t>(defects_.star[i])] < 0) continue;
     const double s = defects_.weight[static_cast<size_t>(entry_row_[i])];
-    for (size_t j = 0; j < 3; ++j) value[slot_[m_entries + 3 * i + j]] = s * linearised_.gradient[i][static_cast<Eigen::Index>(j)];
+    for (size_t j = 0; j < 3; ++j)
+      value[slot_[m_entries + 3 * i + j]] =
+          s * linearised_.gradient[i][static_cast<Eigen::Index>(j)];
   }
   const size_t diagonal = m_entries + 3 * defects_.star.size();
   for (size_t r = 0; r < defects_.vertex.size(); ++r) value[slot_[diagonal + r]] = -1.0;
@@ -244,11 +249,11 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
   for (Eigen::Index f = 0; f < g_.solve_faces; ++f) {
     Vec3 x[3];
     for (int c = 0; c < 3; ++c) x[c] = ref.row(g_.F(f, c)).transpose();
-    const Vec3 e12 = x[1] - x[0], e13 = x[2] - x[0];  // c of Eq. (13): reference edges
+    const Vec3 e12 = x[1] - x[0], e13 = x[2] - x[0];   // c of Eq. (13): reference edges
     const Vec3 centroid = (x[0] + x[1] + x[2]) / 3.0;  // and centroid
     const Vec3 atc[3] = {-e12 - e13 + centroid / 3.0, e12 + centroid / 3.0, e13 + centroid / 3.0};
-    const Eigen::Matrix3d N = w_ * w_ * targets_[static_cast<size_t>(f)] *
-                              targets_[static_cast<size_t>(f)].transpose();
+    const Eigen::Matrix3d N =
+        w_ * w_ * targets_[static_cast<size_t>(f)] * targets_[static_cast<size_t>(f)].transpose();
     for (int p = 0; p < 3; ++p) {
       const int bp = unknown_[static_cast<size_t>(g_.F(f, p))];
       if (bp < 0) continue;
@@ -261,37 +266,27 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
   }
   for (size_t v = 0; v < unknown_.size(); ++v)
     if (unknown_[v] >= 0)
-      b.segment<3>(3 * unknown_[v]) +=
-          anchor2_[static_cast<size_t>(unknown_[v])] * g_.V0.row(static_cast<Eigen::Index>(v)).transpose();
+      b.segment<3>(3 * unknown_[v]) += anchor2_[static_cast<size_t>(unknown_[v])] *
+                                       g_.V0.row(static_cast<Eigen::Index>(v)).transpose();
   return b;
 }
 
 Eigen::VectorXd DeformationSystem::unknowns_of(const Positions& X) const {
   Eigen::VectorXd x(3 * static_cast<Eigen::Index>(blocks_));
   for (size_t v = 0; v < unknown_.size(); ++v)
-    if (unknown_[v] >= 0) x.segment<3>(3 * unknown_[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
+    if (unknown_[v] >= 0)
+      x.segment<3>(3 * unknown_[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
   return x;
 }
 
-void DeformationSystem::factorize() {
-  StageTimer timer(times_.factorization);
-  if (defects_.empty())
-    cholesky_.factorize(M_);
-  else
-    augmented_.factorize(K_);
-  factor_current_ = true;
-}
-
 // With defect rows C, K [x; y] = [b; d] gives (M + CᵀC) x = b + Cᵀd, y = Cx − d.
-Eigen::VectorXd DeformationSystem::solve_directly(const Eigen::VectorXd& b, const Positions& ref) {
-  if (!factor_current_) factorize();  // new targets: a numeric factorisation (analysis reused)
-  StageTimer timer(times_.solve);
-  if (defects_.empty()) return cholesky_.solve(b);
+Eigen::VectorXd DeformationSystem::solve_augmented(const Eigen::VectorXd& b, const Positions& ref) {
   Eigen::VectorXd bd(K_.rows());
   const Eigen::VectorXd d = defect_rhs(ref);
   for (size_t m = 0; m < place_.size(); ++m) bd[place_[m]] = b[static_cast<Eigen::Index>(m)];
-  for (size_t r = 0; r < multiplier_.size(); ++r) bd[multiplier_[r]] = d[static_cast<Eigen::Index>(r)];
-  const Eigen::VectorXd xy = augmented_.solve(bd);
+  for (size_t r = 0; r < multiplier_.size(); ++r)
+    bd[multiplier_[r]] = d[static_cast<Eigen::Index>(r)];
+  const Eigen::VectorXd xy = strategy_->solve_quasi_definite(K_, bd);
   Eigen::VectorXd x(b.size());
   for (size_t m = 0; m < place_.size(); ++m) x[static_cast<Eigen::Index>(m)] = xy[place_[m]];
   return x;
@@ -299,39 +294,17 @@ Eigen::VectorXd DeformationSystem::solve_directly(const Eigen::VectorXd& b, cons
 
 // The frames follow the targets: ν of a vertex is the mean target of its solved faces (the
 // face's normal where it has no target, as in a defect patch).
-void DeformationSystem::build_preconditioner() {
-  StageTimer timer(times_.factorization);
+std::vector<Vec3> DeformationSystem::frame_normals() const {
   std::vector<Vec3> normals(static_cast<size_t>(blocks_), Vec3::Zero());
   for (Eigen::Index f = 0; f < g_.solve_faces; ++f)
     for (int c = 0; c < 3; ++c) {
       const int k = unknown_[static_cast<size_t>(g_.F(f, c))];
       const Vec3& t = targets_[static_cast<size_t>(f)];
-      if (k >= 0) normals[static_cast<size_t>(k)] += t.isZero() ? face_normal(g_.V0, g_.F, static_cast<int>(f)) : t;
+      if (k >= 0)
+        normals[static_cast<size_t>(k)] +=
+            t.isZero() ? face_normal(g_.V0, g_.F, static_cast<int>(f)) : t;
     }
-  if (!preconditioner_) preconditioner_ = std::make_unique<FramePreconditioner>(pattern_, solver_, threads_);
-  preconditioner_->build(M_, normals);
-  scalar_factorizations_ = preconditioner_->factorizations();
-}
-
-Eigen::VectorXd DeformationSystem::solve_iteratively(const Eigen::VectorXd& b, const Positions& ref) {
-  Eigen::VectorXd x = unknowns_of(ref);  // the correction starts at zero
-  const auto multiply = [this](const Eigen::VectorXd& p) -> Eigen::VectorXd {
-    return M_.selfadjointView<Eigen::Lower>() * p;
-  };
-  const auto precondition = [this](const Eigen::VectorXd& r) { return preconditioner_->apply(r); };
-  if (!preconditioner_ || preconditioner_stale_) build_preconditioner();
-  preconditioner_stale_ = false;
-  CgOutcome cg;
-  {
-    StageTimer timer(times_.solve);
-    cg = conjugate_gradients(multiply, precondition, b, x, kCgTolerance, kCgIterations, &last_solution_);
-  }
-  last_solution_ = x;
-  times_.cg_iterations += cg.iterations;
-  if (cg.converged) return x;
-  iterative_ = false;  // the frames do not fit this group's targets: factorise M from now on
-  preconditioner_.reset();
-  return solve_directly(b, ref);
+  return normals;
 }
 
 Positions DeformationSystem::solve(const Positions& ref) {
@@ -341,12 +314,16 @@ Positions DeformationSystem::solve(const Positions& ref) {
     StageTimer timer(times_.assembly);
     b = rhs(ref);
   }
-  const Eigen::VectorXd x = iterative_ ? solve_iteratively(b, ref) : solve_directly(b, ref);
+  const Eigen::VectorXd x = defects_.empty() ? strategy_->solve(
+                                                   M_, b, [&] { return unknowns_of(ref); },
+                                                   [this] { return frame_normals(); })
+                                             : solve_augmented(b, ref);
   ++times_.solves;
-  times_.factorizations = cholesky_.factorizations() + augmented_.factorizations() + scalar_factorizations_;
+  times_.factorizations = strategy_->factorizations();
   Positions out = ref;
   for (size_t v = 0; v < unknown_.size(); ++v)
-    if (unknown_[v] >= 0) out.row(static_cast<Eigen::Index>(v)) = x.segment<3>(3 * unknown_[v]).transpose();
+    if (unknown_[v] >= 0)
+      out.row(static_cast<Eigen::Index>(v)) = x.segment<3>(3 * unknown_[v]).transpose();
   return out;
 }
 

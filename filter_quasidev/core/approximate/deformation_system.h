@@ -14,48 +14,29 @@
 //
 // The normal matrix M = AᵀA + anchors (Eq. 17) depends only on the targets and weights. Its
 // unknowns are numbered in 3×3 vertex blocks in a fill-reducing order of the vertex graph, and
-// it is assembled in place into a sparsity pattern built once. With fixed targets it is
-// factorised once and every iteration is one back substitution (Algorithm 1, steps 2.3–2.4);
-// re-projected or re-fitted targets change M, which is then factorised again numerically (the
-// analysis is reused). Conjugate gradients preconditioned by the previous factor were measured
-// as the alternative and cost more instructions at every size tried (docs/performance.md).
-//
-// Large groups are solved without factorising M at all (SolveMethod::Iterative, issue 5):
-// conjugate gradients preconditioned by the frame split of frame_preconditioner.h, whose two
-// scalar factors cost a fraction of M's. Each solve stops when the correction's error in M's
-// energy norm is below kCgTolerance of the correction, so the result is the least-squares
-// solution to that tolerance. The preconditioner is built once and kept while the targets
-// move; each solve after the first starts from the one before's solution when that is closer
-// (the 1M noisy tube: 27 → 19 CG iterations). CG converges in about 2 iterations per solve on a
-// smooth 1M-triangle sheet and 9 on a 10k one; where the targets stray far from the surface's
-// normals (draped garments with the curve targets) it is slower than factorising, so a solve that
-// CG gives up on (conjugate_gradients.h: too slow after kCgPatience iterations, or not done in
-// kCgIterations) factorises M instead, and so do the group's later solves.
+// it is assembled in place into a sparsity pattern built once; re-projected or re-fitted targets
+// change its values only. How it is solved (factorised, or by conjugate gradients) is
+// solve_strategy.h's part.
 //
 // Angle-defect rows C (angle_defect.h; beyond the paper) would add CᵀC to M, which couples every
-// pair of vertices of a star: on the 40k tee's big panels that Cholesky factor costs 2.1 GFlop.
+// pair of vertices of a star and makes M's factor about three times dearer (docs/solvers.md).
 // They are kept apart instead, one multiplier y per row, in the quasi-definite system
 //   K [x; y] = [[M, Cᵀ], [C, −I]] [x; y] = [b; d],  so that (M + CᵀC) x = b + Cᵀd,
-// the same least-squares solution; numbered in M's vertex order, K's LDLᵀ costs 0.63 GFlop there
-// (quasi_definite_ldlt.h). Such groups are always factorised.
+// the same least-squares solution, numbered in M's vertex order and factorised by LDLᵀ
+// (quasi_definite_factor.h).
 #pragma once
 
 #include <Eigen/SparseCore>
-#include <memory>
+#include <optional>
 #include <vector>
 
 #include "approximate/angle_defect.h"
-#include "approximate/frame_preconditioner.h"
 #include "approximate/group_mesh.h"
 #include "approximate/result.h"
+#include "approximate/solve_strategy.h"
 #include "common/block_pattern.h"
-#include "common/sparse_cholesky.h"
 
 namespace qd {
-
-constexpr long kIterativeFromUnknowns = 10000;  // SolveMethod::Auto: CG from here on (measured)
-constexpr double kCgTolerance = 1e-2;  // cut by the step limit anyway; 1e-4 bought nothing (docs/performance.md)
-constexpr int kCgIterations = 40;
 
 class DeformationSystem {
  public:
@@ -92,47 +73,39 @@ class DeformationSystem {
   // Unknown block of each local vertex (-1 when fixed).
   const std::vector<int>& unknown() const { return unknown_; }
   const StageTimes& times() const { return times_; }
+  // The factor runs on another back end than params.solver (eigen-llt cannot factorise K).
+  bool solver_substituted() const { return strategy_->substituted(); }
 
  private:
   void build_pattern(const std::vector<std::pair<int, int>>& edges);
   void build_augmented_pattern();
   void set_augmented_values();
   Eigen::VectorXd defect_rhs(const Positions& ref) const;
-  void factorize();
-  Eigen::VectorXd solve_directly(const Eigen::VectorXd& b, const Positions& ref);
-  Eigen::VectorXd solve_iteratively(const Eigen::VectorXd& b, const Positions& ref);
-  void build_preconditioner();
+  Eigen::VectorXd solve_augmented(const Eigen::VectorXd& b, const Positions& ref);
+  std::vector<Vec3> frame_normals() const;
   Eigen::VectorXd unknowns_of(const Positions& X) const;
 
   const GroupMesh& g_;
   double w_;
-  VertexFaces incident_;            // faces of each local vertex, ascending
-  std::vector<int> block_vertex_;   // local vertex of each unknown block
-  std::vector<double> anchor2_;  // α²·w(v)² per unknown block
+  VertexFaces incident_;           // faces of each local vertex, ascending
+  std::vector<int> block_vertex_;  // local vertex of each unknown block
+  std::vector<double> anchor2_;    // α²·w(v)² per unknown block
   std::vector<int> unknown_;
   int blocks_ = 0;
   BlockPattern pattern_;
-  std::vector<int> face_slot_;     // per face and corner pair (0,1),(0,2),(1,2): off-diag block
+  std::vector<int> face_slot_;  // per face and corner pair (0,1),(0,2),(1,2): off-diag block
   std::vector<Vec3> targets_;
   DefectStars defects_;
   DefectLinearisation linearised_;
-  std::vector<int> entry_row_;     // row of each defect star entry
+  std::vector<int> entry_row_;  // row of each defect star entry
   Eigen::SparseMatrix<double> M_;
-  SolverKind solver_;
   int threads_;
-  bool iterative_ = false;
-  SparseCholesky cholesky_;
   Eigen::SparseMatrix<double> K_;  // lower triangle of [[M, Cᵀ], [C, −I]] (defect rows C)
   std::vector<int> place_;         // K's unknown of each unknown of M
   std::vector<int> multiplier_;    // K's unknown of each defect row's multiplier
   std::vector<int> slot_;          // place in K's values of each source (build_augmented_pattern)
-  SparseCholesky augmented_;       // K's LDLᵀ
-  bool factor_current_ = false;  // the factor belongs to the current M
-  std::unique_ptr<FramePreconditioner> preconditioner_;  // built at the first iterative solve
-  bool preconditioner_stale_ = false;                    // the weights changed since
-  int scalar_factorizations_ = 0;                        // the preconditioner's
-  Eigen::VectorXd last_solution_;  // of the last iterative solve: the next one's warm start
   StageTimes times_;
+  std::optional<SolveStrategy> strategy_;  // chosen once the system's size is known
 };
 
 }  // namespace qd

@@ -6,9 +6,14 @@
 
 namespace qd {
 
-FramePreconditioner::FramePreconditioner(const BlockPattern& pattern, SolverKind solver, int threads)
-    : pattern_(pattern), threads_(static_cast<size_t>(threads)), K_n_(scalar_lower(pattern)), K_t_(K_n_),
-      normal_(solver, true), tangent_(solver, true) {}
+FramePreconditioner::FramePreconditioner(const BlockPattern& pattern, SolverKind solver,
+                                         int threads)
+    : pattern_(pattern),
+      threads_(static_cast<size_t>(threads)),
+      K_n_(scalar_lower(pattern)),
+      K_t_(K_n_),
+      normal_(solver, true),
+      tangent_(solver, true) {}
 
 void FramePreconditioner::set_frames(const std::vector<Vec3>& normals) {
   frame_.resize(normals.size());
@@ -30,31 +35,39 @@ void FramePreconditioner::restrict_to_frames(const Eigen::SparseMatrix<double>& 
   double* kt = K_t_.valuePtr();
   // a_rᵀ B a_k and ½ Σ t_rᵀ B t_k for block B between blocks r and k.
   const auto restrict = [&](const Eigen::Matrix3d& B, int r, int k, int at) {
-    const Eigen::Matrix3d R = frame_[static_cast<size_t>(r)] * B * frame_[static_cast<size_t>(k)].transpose();
+    const Eigen::Matrix3d R =
+        frame_[static_cast<size_t>(r)] * B * frame_[static_cast<size_t>(k)].transpose();
     kn[at] = R(0, 0);
     kt[at] = 0.5 * (R(1, 1) + R(2, 2));
   };
-  parallel_ranges(static_cast<size_t>(pattern_.blocks()), threads_, kRangeChunk, [&](size_t first, size_t last) {
-    for (int k = static_cast<int>(first); k < static_cast<int>(last); ++k) {
-      Eigen::Matrix3d B;
-      for (int j = 0; j < 3; ++j)
-        for (int i = j; i < 3; ++i) B(i, j) = B(j, i) = value[diagonal_entry(outer, k, i, j)];
-      restrict(B, k, k, K_n_.outerIndexPtr()[k]);
-      for (int s = pattern_.begin(k); s < pattern_.end(k); ++s) {
-        for (int j = 0; j < 3; ++j)
-          for (int i = 0; i < 3; ++i) B(i, j) = value[block_entry(outer, pattern_, k, s, i, j)];
-        restrict(B, pattern_.row(s), k, K_n_.outerIndexPtr()[k] + 1 + s - pattern_.begin(k));
-      }
-    }
-  });
+  parallel_ranges(static_cast<size_t>(pattern_.blocks()), threads_, kRangeChunk,
+                  [&](size_t first, size_t last) {
+                    for (int k = static_cast<int>(first); k < static_cast<int>(last); ++k) {
+                      Eigen::Matrix3d B;
+                      for (int j = 0; j < 3; ++j)
+                        for (int i = j; i < 3; ++i)
+                          B(i, j) = B(j, i) = value[diagonal_entry(outer, k, i, j)];
+                      restrict(B, k, k, K_n_.outerIndexPtr()[k]);
+                      for (int s = pattern_.begin(k); s < pattern_.end(k); ++s) {
+                        for (int j = 0; j < 3; ++j)
+                          for (int i = 0; i < 3; ++i)
+                            B(i, j) = value[block_entry(outer, pattern_, k, s, i, j)];
+                        restrict(B, pattern_.row(s), k,
+                                 K_n_.outerIndexPtr()[k] + 1 + s - pattern_.begin(k));
+                      }
+                    }
+                  });
 }
 
-void FramePreconditioner::build(const Eigen::SparseMatrix<double>& M, const std::vector<Vec3>& normals) {
+void FramePreconditioner::build(const Eigen::SparseMatrix<double>& M,
+                                const std::vector<Vec3>& normals) {
   set_frames(normals);
   restrict_to_frames(M);
   parallel_for(2, threads_, [&](size_t i) {
-    if (i == 0) normal_.factorize(K_n_);
-    else tangent_.factorize(K_t_);
+    if (i == 0)
+      normal_.factorize(K_n_);
+    else
+      tangent_.factorize(K_t_);
   });
 }
 
@@ -71,12 +84,15 @@ Eigen::VectorXd FramePreconditioner::apply(const Eigen::VectorXd& r) const {
   Eigen::VectorXd zn;
   Eigen::MatrixXd zt;
   parallel_for(2, threads_, [&](size_t i) {
-    if (i == 0) zn = normal_.solve(normal);
-    else zt = tangent_.solve(tangent);
+    if (i == 0)
+      zn = normal_.solve(normal);
+    else
+      zt = tangent_.solve(tangent);
   });
   Eigen::VectorXd z(r.size());
   for (Eigen::Index k = 0; k < n; ++k)
-    z.segment<3>(3 * k) = frame_[static_cast<size_t>(k)].transpose() * Vec3(zn[k], zt(k, 0), zt(k, 1));
+    z.segment<3>(3 * k) =
+        frame_[static_cast<size_t>(k)].transpose() * Vec3(zn[k], zt(k, 0), zt(k, 1));
   return z;
 }
 

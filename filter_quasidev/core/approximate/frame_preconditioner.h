@@ -14,7 +14,7 @@
 
 #include "common/block_pattern.h"
 #include "common/mesh.h"
-#include "common/sparse_cholesky.h"
+#include "common/positive_definite_factor.h"
 
 namespace qd {
 
@@ -40,7 +40,7 @@ class FramePreconditioner {
   size_t threads_;
   std::vector<Eigen::Matrix3d> frame_;  // per block, rows ν, t₁, t₂
   Eigen::SparseMatrix<double> K_n_, K_t_;
-  SparseCholesky normal_, tangent_;
+  PositiveDefiniteFactor normal_, tangent_;
 };
 
 }  // namespace qd

@@ -4,7 +4,7 @@
 
 #include <map>
 
-#include "common/sparse_cholesky.h"
+#include "common/solver_kind.h"
 
 namespace qd {
 
@@ -42,7 +42,7 @@ struct Params {
   StopRule stop_rule = StopRule::Plateau;
   double stop_abd = 1.0;                     // δ_ABD, percent (Eq. 19)
   double stop_obd = 1.0;                     // δ_OBD, percent (Eq. 20)
-  SolverKind solver = SolverKind::Auto;      // Auto: by size, as measured (sparse_cholesky.h)
+  SolverKind solver = SolverKind::Auto;      // Auto: by size, as measured (positive_definite_factor.h)
   SolveMethod method = SolveMethod::Auto;    // Auto: by size, as measured (deformation_system.h)
   int threads = 0;                           // patches solved at once (a lone patch uses them
                                              // inside); 0 = all cores

@@ -8,22 +8,23 @@
 #include "common/error.h"
 
 extern "C" {
-void dgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k, const double* alpha,
-            const double* a, const int* lda, const double* b, const int* ldb, const double* beta, double* c,
-            const int* ldc);
-void dtrsm_(const char* side, const char* uplo, const char* ta, const char* diag, const int* m, const int* n,
-            const double* alpha, const double* a, const int* lda, double* b, const int* ldb);
+void dgemm_(const char* ta, const char* tb, const int* m, const int* n, const int* k,
+            const double* alpha, const double* a, const int* lda, const double* b, const int* ldb,
+            const double* beta, double* c, const int* ldc);
+void dtrsm_(const char* side, const char* uplo, const char* ta, const char* diag, const int* m,
+            const int* n, const double* alpha, const double* a, const int* lda, double* b,
+            const int* ldb);
 }
 
 namespace qd {
 namespace {
 
-constexpr int kUnblocked = 32;     // dense blocks up to this size are factorised by plain loops
-constexpr int kUpdateColumns = 256;  // widest block of an update computed at once
+constexpr int kUnblocked = QuasiDefiniteLdlt::kUnblocked;
+constexpr int kUpdateColumns = QuasiDefiniteLdlt::kUpdateColumns;
 
 // C(m×n) = beta·C − A(m×k)·B(n×k)ᵀ, column major.
-void subtract_product(int m, int n, int k, const double* A, int lda, const double* B, int ldb, double beta,
-                      double* C, int ldc) {
+void subtract_product(int m, int n, int k, const double* A, int lda, const double* B, int ldb,
+                      double beta, double* C, int ldc) {
   const double minus_one = -1.0;
   dgemm_("N", "T", &m, &n, &k, &minus_one, A, &lda, B, &ldb, &beta, C, &ldc);
 }
@@ -36,7 +37,8 @@ void solve_right_unit_lower_transposed(int m, int n, const double* L, int ldl, d
 
 // Given B(m×n) = L21·D, with D on the diagonal of the factored block above it (leading
 // dimension ld): W(m×n, leading dimension m) := L21·D and B := L21.
-void split_off_diagonal(int m, int n, const double* factored, int ld, double* B, int ldb, std::vector<double>& W) {
+void split_off_diagonal(int m, int n, const double* factored, int ld, double* B, int ldb,
+                        std::vector<double>& W) {
   W.resize(static_cast<size_t>(m) * static_cast<size_t>(n));
   for (int j = 0; j < n; ++j) {
     const double inverse = 1.0 / factored[j + static_cast<long>(j) * ld];
@@ -133,12 +135,15 @@ QuasiDefiniteLdlt::QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower)
 void QuasiDefiniteLdlt::place_entries(const Eigen::SparseMatrix<double>& lower) {
   std::vector<int> inverse(static_cast<size_t>(n_));
   for (int k = 0; k < n_; ++k) inverse[static_cast<size_t>(perm_[static_cast<size_t>(k)])] = k;
-  std::vector<int> start(static_cast<size_t>(n_) + 1, 0), entry(static_cast<size_t>(lower.nonZeros()));
+  std::vector<int> start(static_cast<size_t>(n_) + 1, 0),
+      entry(static_cast<size_t>(lower.nonZeros()));
   const auto column_of = [&](int j, int e) {
-    return std::min(inverse[static_cast<size_t>(j)], inverse[static_cast<size_t>(lower.innerIndexPtr()[e])]);
+    return std::min(inverse[static_cast<size_t>(j)],
+                    inverse[static_cast<size_t>(lower.innerIndexPtr()[e])]);
   };
   for (int j = 0; j < n_; ++j)
-    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e) ++start[static_cast<size_t>(column_of(j, e)) + 1];
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
+      ++start[static_cast<size_t>(column_of(j, e)) + 1];
   for (size_t k = 0; k < static_cast<size_t>(n_); ++k) start[k + 1] += start[k];
   std::vector<int> next(start.begin(), start.end() - 1);
   for (int j = 0; j < n_; ++j)
@@ -146,18 +151,22 @@ void QuasiDefiniteLdlt::place_entries(const Eigen::SparseMatrix<double>& lower) 
       entry[static_cast<size_t>(next[static_cast<size_t>(column_of(j, e))]++)] = e;
   std::vector<int> column_of_entry(entry.size());
   for (int j = 0; j < n_; ++j)
-    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e) column_of_entry[static_cast<size_t>(e)] = j;
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
+      column_of_entry[static_cast<size_t>(e)] = j;
   slot_.resize(entry.size());
   std::vector<int> map(static_cast<size_t>(n_));
   for (size_t t = 0; t + 1 < super_.size(); ++t) {
     const int height = row_start_[t + 1] - row_start_[t];
-    for (int p = 0; p < height; ++p) map[static_cast<size_t>(rows_[static_cast<size_t>(row_start_[t] + p)])] = p;
+    for (int p = 0; p < height; ++p)
+      map[static_cast<size_t>(rows_[static_cast<size_t>(row_start_[t] + p)])] = p;
     for (int k = super_[t]; k < super_[t + 1]; ++k)
       for (int q = start[static_cast<size_t>(k)]; q < start[static_cast<size_t>(k) + 1]; ++q) {
         const int e = entry[static_cast<size_t>(q)];
         const int a = inverse[static_cast<size_t>(lower.innerIndexPtr()[e])];
         const int b = inverse[static_cast<size_t>(column_of_entry[static_cast<size_t>(e)])];
-        slot_[static_cast<size_t>(e)] = value_start_[t] + static_cast<long>(k - super_[t]) * height + map[static_cast<size_t>(std::max(a, b))];
+        slot_[static_cast<size_t>(e)] = value_start_[t] +
+                                        static_cast<long>(k - super_[t]) * height +
+                                        map[static_cast<size_t>(std::max(a, b))];
       }
   }
 }
@@ -175,7 +184,8 @@ bool QuasiDefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& lower) {
 
 // Supernode s, all of whose updates have arrived: LDLᵀ of its diagonal block, then its rows
 // below (L21 = A21·L11⁻ᵀ·D⁻¹), then its update L21·D·L21ᵀ to the supernodes above.
-bool QuasiDefiniteLdlt::factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map) {
+bool QuasiDefiniteLdlt::factorize_supernode(int s, std::vector<double>& work,
+                                            std::vector<int>& map) {
   const auto su = static_cast<size_t>(s);
   const int columns = super_[su + 1] - super_[su];
   const int height = row_start_[su + 1] - row_start_[su];
@@ -207,21 +217,24 @@ void QuasiDefiniteLdlt::update_ancestors(int s, const double* W, std::vector<dou
   for (int i = 0; i < below;) {
     const int t = owner_[static_cast<size_t>(row[i])];
     int last = i;
-    while (last < below && owner_[static_cast<size_t>(row[last])] == t && last - i < kUpdateColumns) ++last;
+    while (last < below && owner_[static_cast<size_t>(row[last])] == t && last - i < kUpdateColumns)
+      ++last;
     const auto tu = static_cast<size_t>(t);
     const int t_height = row_start_[tu + 1] - row_start_[tu];
     if (mapped != t) {
-      for (int p = 0; p < t_height; ++p) map[static_cast<size_t>(rows_[static_cast<size_t>(row_start_[tu] + p)])] = p;
+      for (int p = 0; p < t_height; ++p)
+        map[static_cast<size_t>(rows_[static_cast<size_t>(row_start_[tu] + p)])] = p;
       mapped = t;
     }
     const int m = below - i, width = last - i;
     work.resize(static_cast<size_t>(m) * static_cast<size_t>(width));
     subtract_product(m, width, columns, W + i, below, L21 + i, height, 0.0, work.data(), m);  // −U
     place.resize(static_cast<size_t>(m));
-    for (int k = 0; k < m; ++k) place[static_cast<size_t>(k)] = map[static_cast<size_t>(row[i + k])];
+    for (int k = 0; k < m; ++k)
+      place[static_cast<size_t>(k)] = map[static_cast<size_t>(row[i + k])];
     for (int j = 0; j < width; ++j) {  // t's own rows come first: a row's place is its column
-      double* target =
-          values_.data() + value_start_[tu] + static_cast<long>(place[static_cast<size_t>(j)]) * t_height;
+      double* target = values_.data() + value_start_[tu] +
+                       static_cast<long>(place[static_cast<size_t>(j)]) * t_height;
       const double* u = work.data() + static_cast<long>(j) * m;
       for (int k = j; k < m; ++k) target[place[static_cast<size_t>(k)]] += u[k];
     }
@@ -266,10 +279,17 @@ Eigen::VectorXd QuasiDefiniteLdlt::solve(const Eigen::VectorXd& b) const {
   return out;
 }
 
+int QuasiDefiniteLdlt::widest_supernode() const {
+  int widest = 0;
+  for (size_t s = 0; s + 1 < super_.size(); ++s)
+    widest = std::max(widest, super_[s + 1] - super_[s]);
+  return widest;
+}
+
 QuasiDefiniteLdlt::Panel QuasiDefiniteLdlt::panel(int s) const {
   const auto su = static_cast<size_t>(s);
-  return {super_[su + 1] - super_[su], row_start_[su + 1] - row_start_[su], rows_.data() + row_start_[su],
-          values_.data() + value_start_[su]};
+  return {super_[su + 1] - super_[su], row_start_[su + 1] - row_start_[su],
+          rows_.data() + row_start_[su], values_.data() + value_start_[su]};
 }
 
 }  // namespace qd

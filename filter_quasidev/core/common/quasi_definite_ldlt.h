@@ -3,13 +3,11 @@
 // to H. Every symmetric permutation of such a K has an LDLᵀ factorisation without pivoting
 // (Vanderbei, SIAM J. Optim. 5, 1995), so the whole matrix can be ordered for fill alone.
 //
-// Why: the angle-defect rows (angle_defect.h) couple every pair of vertices of a vertex star, and
-// the normal matrix H + CᵀC of the 40k-face tee's big panels costs 2.1 GFlop per Cholesky
-// factorisation. Kept apart, with one multiplier per defect row, the same system costs 0.63 GFlop
-// (deformation_system.h). CHOLMOD's supernodal factorisation is LLᵀ only, so this class takes
-// CHOLMOD's symbolic analysis (postorder, relaxed supernodes) and does the numeric LDLᵀ itself,
-// supernode by supernode with dense BLAS kernels, and the solves. SparseCholesky
-// (Definiteness::Quasi) is how the engine uses it.
+// CHOLMOD's supernodal factorisation is LLᵀ only, so this class takes CHOLMOD's symbolic
+// analysis (postorder, relaxed supernodes) and does the numeric LDLᵀ itself, supernode by
+// supernode with dense BLAS kernels, and the solves: kept apart from the normal matrix, the
+// angle-defect rows make a factor about three times cheaper than their CᵀC (docs/solvers.md).
+// QuasiDefiniteFactor (quasi_definite_factor.h) is how the engine uses it.
 #pragma once
 
 #include <Eigen/Core>
@@ -20,6 +18,9 @@ namespace qd {
 
 class QuasiDefiniteLdlt {
  public:
+  static constexpr int kUnblocked = 32;       // dense diagonal blocks up to this size: plain loops
+  static constexpr int kUpdateColumns = 256;  // widest block of an update computed at once
+
   // Analyses the pattern of `lower`, the lower triangle of K (column major, sorted), already
   // in a fill-reducing order (CHOLMOD only postorders it).
   explicit QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower);
@@ -29,6 +30,8 @@ class QuasiDefiniteLdlt {
   bool factorize(const Eigen::SparseMatrix<double>& lower);
   // Solves K x = b with the current factor.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // Columns of the widest supernode (the widest dense diagonal block).
+  int widest_supernode() const;
 
  private:
   struct Panel {  // supernode s: its columns, rows (own columns first) and dense values
@@ -42,14 +45,14 @@ class QuasiDefiniteLdlt {
   void update_ancestors(int s, const double* W, std::vector<double>& work, std::vector<int>& map);
 
   int n_ = 0;
-  std::vector<int> perm_;         // row k of the factor is row perm_[k] of K
-  std::vector<int> super_;        // supernode s holds columns super_[s] .. super_[s+1]
-  std::vector<int> row_start_;    // its row indices rows_[row_start_[s] .. row_start_[s+1])
-  std::vector<int> rows_;         //   (its own columns first, then the rows below)
-  std::vector<long> value_start_; // its dense column-major panel at values_[value_start_[s]]
-  std::vector<int> owner_;        // supernode of each column
-  std::vector<long> slot_;        // place in values_ of each stored entry of `lower`
-  std::vector<double> values_;    // unit-lower L (diagonal entries hold D)
+  std::vector<int> perm_;          // row k of the factor is row perm_[k] of K
+  std::vector<int> super_;         // supernode s holds columns super_[s] .. super_[s+1]
+  std::vector<int> row_start_;     // its row indices rows_[row_start_[s] .. row_start_[s+1])
+  std::vector<int> rows_;          //   (its own columns first, then the rows below)
+  std::vector<long> value_start_;  // its dense column-major panel at values_[value_start_[s]]
+  std::vector<int> owner_;         // supernode of each column
+  std::vector<long> slot_;         // place in values_ of each stored entry of `lower`
+  std::vector<double> values_;     // unit-lower L (diagonal entries hold D)
 };
 
 }  // namespace qd

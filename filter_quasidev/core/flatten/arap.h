@@ -14,7 +14,7 @@
 #include <string>
 
 #include "flatten/flat_triangles.h"
-#include "common/sparse_cholesky.h"
+#include "common/solver_kind.h"
 
 namespace qd {
 

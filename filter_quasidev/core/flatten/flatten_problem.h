@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "common/mesh.h"
-#include "common/sparse_cholesky.h"
+#include "common/solver_kind.h"
 
 namespace qd {
 
@@ -24,7 +24,7 @@ struct FlattenParams {
       Eigen::Vector3d::UnitY();   // 3D direction the grainlines follow (grainline.h)
   double symmetry_tolerance = 1;  // percent of a piece's size: congruent or mirror pieces within
                                   // it are cut from one (symmetric_pieces.h); 0 = never grouped
-  SolverKind solver = SolverKind::Auto;  // sparse Cholesky back end (sparse_cholesky.h)
+  SolverKind solver = SolverKind::Auto;  // sparse Cholesky back end (positive_definite_factor.h)
   int threads = 0;                       // pieces flattened at once; 0 = all cores
 };
 

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "flatten/flat_triangles.h"
-#include "common/sparse_cholesky.h"
+#include "common/solver_kind.h"
 
 namespace qd {
 

@@ -7,7 +7,8 @@
 
 namespace qd {
 
-OrderedCholesky::OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKind kind, bool many_solves)
+OrderedCholesky::OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKind kind,
+                                 bool many_solves)
     : order_(M.rows()), cholesky_(kind, many_solves) {
   std::vector<std::pair<int, int>> edges;
   for (int c = 0; c < M.outerSize(); ++c)

@@ -1,0 +1,84 @@
+#include "approximate/solve_strategy.h"
+
+#include "common/conjugate_gradients.h"
+#include "common/stage_timer.h"
+
+namespace qd {
+
+SolveStrategy::SolveStrategy(const Params& params, long unknowns, bool quasi_definite,
+                             const BlockPattern& pattern, StageTimes& times)
+    : solver_(params.solver),
+      threads_(params.threads),
+      iterative_(!quasi_definite &&
+                 (params.method == SolveMethod::Iterative ||
+                  (params.method == SolveMethod::Auto && unknowns >= kIterativeFromUnknowns))),
+      pattern_(pattern),
+      times_(times),
+      positive_(params.solver),
+      quasi_(params.solver) {}
+
+int SolveStrategy::factorizations() const {
+  return positive_.factorizations() + quasi_.factorizations() + scalar_factorizations_;
+}
+
+Eigen::VectorXd SolveStrategy::solve(const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& b,
+                                     const std::function<Eigen::VectorXd()>& start,
+                                     const std::function<std::vector<Vec3>()>& normals) {
+  return iterative_ ? solve_iteratively(M, b, start, normals) : solve_directly(M, b);
+}
+
+Eigen::VectorXd SolveStrategy::solve_directly(const Eigen::SparseMatrix<double>& M,
+                                              const Eigen::VectorXd& b) {
+  if (!factor_current_) {  // new targets: a numeric factorisation (analysis reused)
+    StageTimer timer(times_.factorization);
+    positive_.factorize(M);
+    factor_current_ = true;
+  }
+  StageTimer timer(times_.solve);
+  return positive_.solve(b);
+}
+
+Eigen::VectorXd SolveStrategy::solve_quasi_definite(const Eigen::SparseMatrix<double>& K,
+                                                    const Eigen::VectorXd& c) {
+  if (!factor_current_) {
+    StageTimer timer(times_.factorization);
+    quasi_.factorize(K);
+    factor_current_ = true;
+  }
+  StageTimer timer(times_.solve);
+  return quasi_.solve(c);
+}
+
+Eigen::VectorXd SolveStrategy::solve_iteratively(
+    const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& b,
+    const std::function<Eigen::VectorXd()>& start,
+    const std::function<std::vector<Vec3>()>& normals) {
+  Eigen::VectorXd x = start();  // the correction starts at zero
+  const auto multiply = [&M](const Eigen::VectorXd& p) -> Eigen::VectorXd {
+    return M.selfadjointView<Eigen::Lower>() * p;
+  };
+  const auto precondition = [this](const Eigen::VectorXd& r) { return preconditioner_->apply(r); };
+  if (!preconditioner_ || preconditioner_stale_) {
+    StageTimer timer(times_.factorization);
+    const std::vector<Vec3> frame_normals = normals();
+    if (!preconditioner_)
+      preconditioner_ = std::make_unique<FramePreconditioner>(pattern_, solver_, threads_);
+    preconditioner_->build(M, frame_normals);
+    scalar_factorizations_ = preconditioner_->factorizations();
+  }
+  preconditioner_stale_ = false;
+  CgOutcome cg;
+  {
+    StageTimer timer(times_.solve);
+    cg = conjugate_gradients(multiply, precondition, b, x, kCgTolerance, kCgIterations,
+                             &last_solution_);
+  }
+  last_solution_ = x;
+  times_.cg_iterations += cg.iterations;
+  if (cg.converged) return x;
+  iterative_ = false;  // the frames do not fit this group's targets: factorise M from now on
+  preconditioner_.reset();
+  return solve_directly(M, b);
+}
+
+}  // namespace qd

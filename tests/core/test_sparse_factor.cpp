@@ -1,0 +1,90 @@
+// The positive-definite and quasi-definite factors: every back end solves small systems to
+// tolerance, a matrix of the wrong class is reported as a failure, and a back end that cannot
+// factorise the matrix's class is substituted openly.
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "common/error.h"
+#include "common/positive_definite_factor.h"
+#include "common/quasi_definite_factor.h"
+#include "solver_matrices.h"
+
+namespace qd {
+namespace {
+
+constexpr SolverKind kEverySolver[] = {SolverKind::Auto, SolverKind::Cholmod, SolverKind::EigenLLT,
+                                       SolverKind::EigenLDLT};
+
+double relative_residual(const Eigen::SparseMatrix<double>& lower, const Eigen::MatrixXd& x,
+                         const Eigen::MatrixXd& b) {
+  return (b - lower.selfadjointView<Eigen::Lower>() * x).norm() / b.norm();
+}
+
+TEST(PositiveDefiniteFactor, EveryBackEndSolvesAnSpdSystem) {
+  const Eigen::SparseMatrix<double> L = test::laplacian_lower(12 * 9, test::grid_edges(12, 9), 0.1);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(L.rows(), 2);
+  for (const SolverKind kind : kEverySolver)
+    for (const bool many_solves : {false, true}) {
+      PositiveDefiniteFactor factor(kind, many_solves);
+      factor.factorize(L);
+      factor.factorize(L);  // again, on the analysis of the first
+      EXPECT_EQ(factor.factorizations(), 2);
+      EXPECT_FALSE(factor.substituted());
+      EXPECT_LT(relative_residual(L, factor.solve(b), b), 1e-10);
+    }
+}
+
+TEST(PositiveDefiniteFactor, AutoTakesCholmodFromItsThreshold) {
+  PositiveDefiniteFactor small(SolverKind::Auto), large(SolverKind::Auto);
+  small.factorize(test::laplacian_lower(100, test::path_edges(100), 1.0));
+  const int n = static_cast<int>(kCholmodFromUnknowns);
+  large.factorize(test::laplacian_lower(n, test::path_edges(n), 1.0));
+  EXPECT_EQ(small.backend(), FactorBackend::EigenLdlt);
+  EXPECT_EQ(large.backend(), FactorBackend::CholmodLlt);
+}
+
+TEST(PositiveDefiniteFactor, ReportsAnIndefiniteMatrix) {
+  // A Laplacian shifted by −0.5: its smallest eigenvalue is −0.5.
+  const Eigen::SparseMatrix<double> L = test::laplacian_lower(40, test::path_edges(40), -0.5);
+  for (const SolverKind kind : kEverySolver) {
+    PositiveDefiniteFactor factor(kind);
+    EXPECT_THROW(factor.factorize(L), Error);
+  }
+}
+
+TEST(QuasiDefiniteFactor, EveryBackEndSolvesAQuasiDefiniteSystem) {
+  const Eigen::SparseMatrix<double> K = test::random_quasi_definite(60, 20, 2, 3);
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(K.rows(), 3);
+  for (const SolverKind kind : kEverySolver) {
+    QuasiDefiniteFactor factor(kind);
+    factor.factorize(K);
+    factor.factorize(K);
+    EXPECT_EQ(factor.factorizations(), 2);
+    EXPECT_LT(relative_residual(K, factor.solve(b), b), 1e-10);
+  }
+}
+
+TEST(QuasiDefiniteFactor, SubstitutesLdltForLltOpenly) {
+  const Eigen::SparseMatrix<double> K = test::random_quasi_definite(20, 5, 2, 4);
+  QuasiDefiniteFactor llt(SolverKind::EigenLLT), cholmod(SolverKind::Cholmod);
+  llt.factorize(K);
+  cholmod.factorize(K);
+  EXPECT_TRUE(llt.substituted());
+  EXPECT_EQ(llt.backend(), FactorBackend::EigenLdlt);
+  EXPECT_FALSE(cholmod.substituted());
+  EXPECT_EQ(cholmod.backend(), FactorBackend::SupernodalLdlt);
+}
+
+TEST(QuasiDefiniteFactor, ReportsAVanishingPivot) {
+  Eigen::SparseMatrix<double> K(3, 3);
+  K.insert(0, 0) = 1, K.insert(1, 0) = 1, K.insert(1, 1) = 1, K.insert(2, 2) = -1;
+  K.makeCompressed();
+  for (const SolverKind kind : kEverySolver) {
+    QuasiDefiniteFactor factor(kind);
+    EXPECT_THROW(factor.factorize(K), Error);
+  }
+}
+
+}  // namespace
+}  // namespace qd
