@@ -10,24 +10,32 @@ namespace qd::cli {
 namespace {
 
 Json figures(const Figures& f) {
-  return {{"g_abd", f.g_abd},       {"angle_defect", f.angle_defect}, {"max_abs_k", f.max_abs_k},
-          {"obd", f.obd},           {"shape", f.shape},               {"max_disp", f.max_disp},
+  return {{"g_abd", f.g_abd},         {"angle_defect", f.angle_defect},
+          {"max_abs_k", f.max_abs_k}, {"obd", f.obd},
+          {"shape", f.shape},         {"max_disp", f.max_disp},
           {"mean_disp", f.mean_disp}};
 }
 
 Json iteration(const IterationReport& it) {
-  return {{"iteration", it.iteration}, {"figures", figures(it.figures)},
-          {"ratio_abd", it.ratio_abd}, {"ratio_obd", it.ratio_obd},
-          {"step_scale", it.step_scale}, {"weight_scale", it.weight_scale},
+  return {{"iteration", it.iteration},
+          {"figures", figures(it.figures)},
+          {"ratio_abd", it.ratio_abd},
+          {"ratio_obd", it.ratio_obd},
+          {"step_scale", it.step_scale},
+          {"weight_scale", it.weight_scale},
           {"note", it.note}};
 }
 
 // Milliseconds per stage, summed over patches and threads (time_ms is the wall clock).
 Json stage_times(const StageTimes& t) {
-  return {{"setup", t.setup},           {"step1", t.step1},
-          {"assembly", t.assembly},     {"factorization", t.factorization},
-          {"solve", t.solve},           {"metrics", t.metrics},
-          {"factorizations", t.factorizations}, {"solves", t.solves},
+  return {{"setup", t.setup},
+          {"step1", t.step1},
+          {"assembly", t.assembly},
+          {"factorization", t.factorization},
+          {"solve", t.solve},
+          {"metrics", t.metrics},
+          {"factorizations", t.factorizations},
+          {"solves", t.solves},
           {"cg_iterations", t.cg_iterations}};
 }
 
@@ -51,7 +59,7 @@ Json patch(const PatchReport& p, double average_edge) {
           {"free_vertices", p.free_vertices},
           {"tolerance_model", p.tolerance},
           {"tolerance_ae", average_edge > 0 ? p.tolerance / average_edge : 0.0},
-          {"target_kind", p.target_kind},
+          {"target_kind", target_kind_name(p.target_kind)},
           {"developability", term_name(p.developability)},
           {"developability_reason", term_choice_text(p)},
           {"candidates", candidates},

@@ -1,9 +1,8 @@
 // Properties of the whole engine (qd::approximate) on generated meshes.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
 #include <Eigen/Geometry>
+#include <algorithm>
 
 #include "approximate/deformation_system.h"
 #include "approximate/quasidev.h"
@@ -72,7 +71,8 @@ TEST(Approximate, PatchesMostlyOnSeamsAreSolvedWithTheirNeighbour) {
     ASSERT_EQ(r.patches.size(), 3u);
     bool scrap_moved = false;
     for (int f : {600, 601})
-      for (int c = 0; c < 3; ++c) scrap_moved = scrap_moved || r.V.row(p.F(f, c)) != p.V.row(p.F(f, c));
+      for (int c = 0; c < 3; ++c)
+        scrap_moved = scrap_moved || r.V.row(p.F(f, c)) != p.V.row(p.F(f, c));
     EXPECT_TRUE(scrap_moved);
     EXPECT_GT(r.abd_reduction, 10.0);
   }
@@ -90,9 +90,10 @@ TEST(Approximate, SmallPatchesThatCannotJoinANeighbourStayUnchanged) {
   const Result r = approximate(p);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_NE(r.warnings[0].find("1 patch has fewer than 4 faces (first: patch 9, 2 faces)"),
-            std::string::npos) << r.warnings[0];
+            std::string::npos)
+      << r.warnings[0];
   ASSERT_EQ(r.patches.size(), 3u);
-  EXPECT_EQ(r.patches[2].target_kind, "unchanged");
+  EXPECT_EQ(r.patches[2].target_kind, TargetKind::Unchanged);
   std::vector<int> scrap;
   for (int f : {600, 601})
     for (int c = 0; c < 3; ++c) scrap.push_back(p.F(f, c));
@@ -285,7 +286,8 @@ TEST(Approximate, PatchesThatRaiseTheirSeamsTogetherAreSolvedAgainInTurn) {
   EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));
   EXPECT_LE(*std::max_element(percents.begin(), percents.end() - 1), 99) << "100 % only when done";
   int notes = 0;
-  for (const std::string& line : r.log) notes += line.rfind("note: patches 0, 1, solved at once", 0) == 0;
+  for (const std::string& line : r.log)
+    notes += line.rfind("note: patches 0, 1, solved at once", 0) == 0;
   EXPECT_EQ(notes, 1);
   EXPECT_LE(r.total_after.g_abd, r.total_before.g_abd);
   EXPECT_GT(r.abd_reduction, 0.0);
@@ -321,7 +323,8 @@ TEST(Approximate, StageTimesCountTheSolverWork) {
   EXPECT_GT(r.times.setup, 0.0);
   EXPECT_GT(r.times.step1, 0.0);
   EXPECT_GT(r.times.metrics, 0.0);
-  EXPECT_LE(r.times.setup + r.times.step1 + r.times.assembly + r.times.factorization + r.times.solve + r.times.metrics,
+  EXPECT_LE(r.times.setup + r.times.step1 + r.times.assembly + r.times.factorization +
+                r.times.solve + r.times.metrics,
             r.time_ms * 1.01);  // one thread: the stages fit in the wall clock
 }
 
@@ -330,7 +333,8 @@ TEST(Approximate, StageTimesCountTheSolverWork) {
 TEST(Approximate, LittleRemovedSaysTheCurvatureIsOnHeldVertices) {
   Problem p = test::bumpy_cylinder(48, 24, 0.08);
   p.params.tolerance = 0.2;
-  const std::vector<double> K = gaussian_curvature(vertex_angles(p.V, p.F), std::vector<char>(p.V.rows(), 1));
+  const std::vector<double> K =
+      gaussian_curvature(vertex_angles(p.V, p.F), std::vector<char>(p.V.rows(), 1));
   p.constrained.assign(static_cast<size_t>(p.V.rows()), 0);
   for (size_t v = 0; v < K.size(); ++v) p.constrained[v] = std::abs(K[v]) > 0.05;
   const Result r = approximate(p);

@@ -17,6 +17,14 @@ TEST(ReportText, EveryTermHasItsOwnName) {
   EXPECT_EQ(names, (std::set<std::string>{"none", "curve", "defect", "both"}));
 }
 
+TEST(ReportText, EveryTargetKindHasItsOwnName) {
+  std::set<std::string> names;
+  for (TargetKind k :
+       {TargetKind::Curve, TargetKind::ClosedCurve, TargetKind::Plane, TargetKind::Unchanged})
+    names.insert(target_kind_name(k));
+  EXPECT_EQ(names, (std::set<std::string>{"curve", "closed curve", "plane", "unchanged"}));
+}
+
 TEST(ReportText, EveryTermChoiceHasText) {
   std::set<std::string> texts;
   for (TermChoice c :

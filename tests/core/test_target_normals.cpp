@@ -35,7 +35,7 @@ TEST(TargetNormals, CylinderGivesGreatCircleWithSmallResidual) {
   const Vec3 axis = Vec3(0.3, -0.5, 0.8).normalized();
   const Samples s = cylinder(axis, 0.2, 0.2 + 100 * kDeg, 2000, 1.0 * kDeg, 20);
   const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
-  EXPECT_EQ(fit.model->kind(), "curve");
+  EXPECT_EQ(fit.model->kind(), qd::TargetKind::Curve);
   expect_unit(fit.targets);
   const std::vector<Vec3> inliers(fit.targets.begin(), fit.targets.begin() + 2000);
   EXPECT_LT(max_off_great_circle_deg(inliers, axis), 0.5);
@@ -74,8 +74,8 @@ TEST(TargetNormals, SShapedCurveIsFollowed) {
   std::vector<Vec3> truth;
   for (int k = 0; k <= 6000; ++k) {
     const double t = 150 * kDeg * k / 6000.0;
-    truth.push_back(F * Vec3(std::sin(phi(t)) * std::cos(t), std::sin(phi(t)) * std::sin(t),
-                             std::cos(phi(t))));
+    truth.push_back(
+        F * Vec3(std::sin(phi(t)) * std::cos(t), std::sin(phi(t)) * std::sin(t), std::cos(phi(t))));
   }
   // Every target lies on the true curve (or its prolongation past the ends, where noisy end
   // samples may legitimately project): check the targets of samples away from the ends.
@@ -98,7 +98,7 @@ TEST(TargetNormals, TubeGivesClosedCurveWithoutCutAtSeam) {
   const Vec3 axis = Vec3(1, 2, 2).normalized();
   const Samples s = cylinder(axis, 0.0, 2 * kPi, 3000, 1.0 * kDeg);
   const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
-  EXPECT_EQ(fit.model->kind(), "closed curve");
+  EXPECT_EQ(fit.model->kind(), qd::TargetKind::ClosedCurve);
   EXPECT_LT(max_off_great_circle_deg(fit.targets, axis), 0.5);
   // No cut anywhere: every target keeps its sample's azimuth (a cut would pull the samples
   // of the gap to the curve's ends).
@@ -126,23 +126,24 @@ TEST(TargetNormals, CoarseTubeOfSixteenFacetsIsClosed) {
       s.areas.push_back(1.0);
     }
   const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
-  EXPECT_EQ(fit.model->kind(), "closed curve");
+  EXPECT_EQ(fit.model->kind(), qd::TargetKind::ClosedCurve);
   EXPECT_LT(fit.residual_deg, 0.5);  // a cut at the seam would leave 22.5° unfitted
 }
 
 TEST(TargetNormals, PlanarPatchGivesPlaneModel) {
   const Vec3 n0 = Vec3(0.4, 0.4, -0.8).normalized();
-  const Samples s = curve_samples(frame_for(n0), 0, 0, [](double) { return 0.0; }, 500, 0.3 * kDeg);
+  const Samples s = curve_samples(
+      frame_for(n0), 0, 0, [](double) { return 0.0; }, 500, 0.3 * kDeg);
   const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
-  EXPECT_EQ(fit.model->kind(), "plane");
+  EXPECT_EQ(fit.model->kind(), qd::TargetKind::Plane);
   Vec3 mean = Vec3::Zero();
   for (size_t i = 0; i < s.normals.size(); ++i) mean += s.areas[i] * s.normals[i];
   for (const Vec3& t : fit.targets) EXPECT_LT((t - mean.normalized()).norm(), 1e-12);
 }
 
 TEST(TargetNormals, SphereFillingNormalsThrow) {
-  const Samples s = curve_samples(Eigen::Matrix3d::Identity(), 0, 0, [](double) { return 0.0; },
-                                  0, 0.0, 2000);
+  const Samples s = curve_samples(
+      Eigen::Matrix3d::Identity(), 0, 0, [](double) { return 0.0; }, 0, 0.0, 2000);
   try {
     qd::fit_targets(s.normals, s.areas);
     FAIL() << "expected qd::Error";
@@ -278,7 +279,8 @@ TEST(TargetNormals, OrientationSignMatters) {
 }
 
 TEST(TargetNormals, BadInputThrows) {
-  const std::vector<Vec3> n = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 0).normalized()};
+  const std::vector<Vec3> n = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
+                               Vec3(1, 1, 0).normalized()};
   EXPECT_THROW(qd::fit_targets(n, {1.0, 1.0, 0.0, 0.0}), qd::Error);  // 2 positive areas
   EXPECT_THROW(qd::fit_targets(n, {1.0, 1.0, 1.0}), qd::Error);       // size mismatch
   EXPECT_THROW(qd::fit_targets(n, {1.0, -1.0, 1.0, 1.0}), qd::Error);
@@ -297,7 +299,8 @@ TEST(TargetNormals, TimingFor1kAnd100kSamples) {
     const auto t0 = std::chrono::steady_clock::now();
     for (int r = 0; r < reps; ++r) qd::fit_targets(s.normals, s.areas);
     const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() / reps;
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
+        reps;
     std::printf("fit_targets on %d samples: %.3f ms\n", count, ms);
     // Generous bounds (shared machine); the brief's targets are 2 ms and 100 ms.
     EXPECT_LT(ms, count <= 1000 ? 20.0 : 1000.0);
@@ -307,10 +310,10 @@ TEST(TargetNormals, TimingFor1kAnd100kSamples) {
 TEST(TargetNormals, DegenerateInputsGiveUnitTargetsOrClearErrors) {
   const Vec3 a = Vec3(0.3, 0.4, 0.5).normalized(), b = Vec3(-0.5, 0.1, 0.7).normalized();
   std::vector<std::vector<Vec3>> cases = {
-      {a, a, a},                        // the minimum: 3 identical normals
-      {a, b, a},                        // 3 samples, two directions
-      {a, a, a, a, b, b, b, b},         // a crease: two flat halves
-      {a, a, a, -a, -a, -a},            // a sheet folded flat onto itself
+      {a, a, a},                         // the minimum: 3 identical normals
+      {a, b, a},                         // 3 samples, two directions
+      {a, a, a, a, b, b, b, b},          // a crease: two flat halves
+      {a, a, a, -a, -a, -a},             // a sheet folded flat onto itself
       {a, b, a.cross(b).normalized()}};  // 3 orthogonal-ish directions
   for (size_t c = 0; c < cases.size(); ++c) {
     const std::vector<double> areas(cases[c].size(), 1.0);

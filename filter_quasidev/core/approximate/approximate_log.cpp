@@ -28,9 +28,9 @@ std::string patch_log_line(const PatchReport& p, double ae) {
     return "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " +
            stop_reason_text(p.stops);
   const IterationReport last = p.history.empty() ? IterationReport{} : p.history.back();
-  const std::string fit =
-      !p.fitted ? "no curve fit"
-                : p.target_kind + printf_text(" fit residual %.2f°", p.fit_residual_deg);
+  const std::string fit = !p.fitted ? "no curve fit"
+                                    : target_kind_name(p.target_kind) +
+                                          printf_text(" fit residual %.2f°", p.fit_residual_deg);
   std::string s =
       "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " + fit +
       ", developability " + term_name(p.developability) + " (" + term_choice_text(p) + "), " +

@@ -1,6 +1,7 @@
 #include "approximate/group_mesh.h"
 
 #include <algorithm>
+#include <cassert>
 #include <limits>
 
 namespace qd {
@@ -25,8 +26,8 @@ VertexRoles vertex_roles(const Problem& problem, const Topology& topo, SeamMode 
     roles.interior[v] = topo.used[v] && !topo.boundary[v] && !topo.nonmanifold[v];
     roles.constrained[v] = (!problem.constrained.empty() && problem.constrained[v]) ||
                            (params.keep_boundary && topo.boundary[v]) ||
-                           (seams == SeamMode::Fixed && topo.seam[v]) ||
-                           topo.nonmanifold[v] || topo.in_small_patch[v];
+                           (seams == SeamMode::Fixed && topo.seam[v]) || topo.nonmanifold[v] ||
+                           topo.in_small_patch[v];
   }
   return roles;
 }
@@ -37,9 +38,9 @@ double patch_tolerance(const Params& params, int patch_id) {
 }
 
 GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vector<int>& faces,
-                        const std::vector<int>& face_patch_ids, const std::vector<char>& constrained,
-                        const std::vector<char>& interior, const VertexFaces& incident,
-                        const Params& params) {
+                        const std::vector<int>& face_patch_ids,
+                        const std::vector<char>& constrained, const std::vector<char>& interior,
+                        const VertexFaces& incident, const Params& params) {
   GroupMesh g;
   std::vector<int> local_vertex(static_cast<size_t>(V.rows()), -1);
   std::vector<char> in_group(static_cast<size_t>(F.rows()), 0);
@@ -124,8 +125,15 @@ GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vecto
     const auto v = static_cast<size_t>(g.global_vertex[l]);
     g.V0.row(static_cast<Eigen::Index>(l)) = V.row(static_cast<Eigen::Index>(v));
     g.fixed[l] = constrained[v] || !touched_by_group[l];
-    if (interior[v] && (touched_by_group[l] || measured_ring[v])) g.owned.push_back(static_cast<int>(l));
+    if (interior[v] && (touched_by_group[l] || measured_ring[v]))
+      g.owned.push_back(static_cast<int>(l));
   }
+  // The local and global numberings are inverse maps on the group's vertices.
+  assert(std::all_of(g.global_vertex.begin(), g.global_vertex.end(), [&](int v) {
+    return g.global_vertex[static_cast<size_t>(local_vertex[static_cast<size_t>(v)])] == v;
+  }));
+  assert(g.global_face.size() == static_cast<size_t>(g.F.rows()) &&
+         g.face_patch.size() == g.global_face.size() && g.tolerance.size() == n);
   g.V_input = g.V0;  // run by itself; the engine gives its own input (quasidev.cpp)
   return g;
 }

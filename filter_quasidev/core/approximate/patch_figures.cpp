@@ -1,6 +1,7 @@
 #include "approximate/patch_figures.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numeric>
 #include <unordered_set>
@@ -27,6 +28,8 @@ void measure_result(Result& r, std::map<int, PatchReport>& reports, const Positi
                     const std::vector<Vec3>& initial_target, const std::vector<char>& interior,
                     const std::vector<char>& constrained, size_t threads) {
   const size_t nv = static_cast<size_t>(V0.rows()), nf = static_cast<size_t>(F.rows());
+  assert(static_cast<size_t>(r.V.rows()) == nv && patch.size() == nf &&
+         initial_target.size() == nf && interior.size() == nv && constrained.size() == nv);
   const VertexAngles angles_before = vertex_angles(V0, F);
   const VertexAngles angles_after = vertex_angles(r.V, F);
   std::map<int, std::vector<int>> faces_of_patch;

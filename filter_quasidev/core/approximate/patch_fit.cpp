@@ -15,7 +15,7 @@ namespace {
 class KeepNormals : public GaussModel {
  public:
   Vec3 project(const Vec3& n, int&) const override { return n; }
-  std::string kind() const override { return "unchanged"; }
+  TargetKind kind() const override { return TargetKind::Unchanged; }
 };
 
 void normals_and_areas(const Positions& X, const Triangles& F, const std::vector<int>& faces,
@@ -53,7 +53,7 @@ bool has_defects(Term t) { return t == Term::Defect || t == Term::Both; }
 }  // namespace
 
 bool PatchFit::planar() const {
-  return fit.model->kind() == "plane" && fit.residual_deg < kPlanarResidualDeg;
+  return fit.model->kind() == TargetKind::Plane && fit.residual_deg < kPlanarResidualDeg;
 }
 
 std::vector<PatchFit> fit_patches(const GroupMesh& g, const Positions& X, size_t threads) {
@@ -104,7 +104,8 @@ std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>&
   std::vector<Vec3> t(static_cast<size_t>(g.solve_faces), Vec3::Zero());
   for (const PatchFit& p : fits)
     if (p.term != Term::Defect)
-      for (size_t k = 0; k < p.faces.size(); ++k) t[static_cast<size_t>(p.faces[k])] = p.fit.targets[k];
+      for (size_t k = 0; k < p.faces.size(); ++k)
+        t[static_cast<size_t>(p.faces[k])] = p.fit.targets[k];
   return t;
 }
 

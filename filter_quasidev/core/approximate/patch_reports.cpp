@@ -1,5 +1,7 @@
 #include "approximate/patch_reports.h"
 
+#include <cassert>
+
 #include "approximate/group_mesh.h"
 
 namespace qd {
@@ -81,6 +83,7 @@ SolveReports patch_reports(const SolveSchedule& s, const Params& params, size_t 
   for (const ScheduledRun& scheduled : s.runs) {
     const GroupRun& run = scheduled.run;
     out.times += run.outcome.times;
+    assert(run.targets.size() == static_cast<size_t>(run.group.solve_faces));
     for (size_t f = 0; f < run.targets.size(); ++f)
       out.initial_target[static_cast<size_t>(run.group.global_face[f])] = run.targets[f];
     for (const PatchFit& p : run.fits) {

@@ -4,6 +4,7 @@
 #include "approximate/quasidev.h"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 
 #include "approximate/approximate_log.h"
@@ -40,6 +41,7 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   // The seams held and the patches too small to fit are those of the solve groups.
   const SolveGroups solve =
       solve_groups(F, patch, patch_topo.boundary, params.seams == SeamMode::Free);
+  assert(solve.group.size() == nf);
   const Topology topo =
       solve.merged.empty() ? patch_topo : analyse_topology(F, static_cast<int>(nv), solve.group);
   const VertexRoles roles = vertex_roles(problem, topo, params.seams);
@@ -55,6 +57,7 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   const SolveInput in{V, F, patch, roles.interior, incident, params, r.average_edge};
   const SolveSchedule schedule = run_schedule(in, solve.group, roles.constrained, held, progress);
   r.V = schedule.V;
+  assert(r.V.rows() == V.rows());  // the output keeps the input's vertex order
   SolveReports reports = patch_reports(schedule, params, nf);
   r.times += reports.times;
   r.factorizations = r.times.factorizations;

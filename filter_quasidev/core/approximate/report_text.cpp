@@ -27,6 +27,20 @@ const char* term_name(Term t) {
   return "";
 }
 
+const char* target_kind_name(TargetKind k) {
+  switch (k) {
+    case TargetKind::Curve:
+      return "curve";
+    case TargetKind::ClosedCurve:
+      return "closed curve";
+    case TargetKind::Plane:
+      return "plane";
+    case TargetKind::Unchanged:
+      return "unchanged";
+  }
+  return "";
+}
+
 const char* pass_name(SolvePass pass) {
   switch (pass) {
     case SolvePass::Only:

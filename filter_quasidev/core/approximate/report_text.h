@@ -15,6 +15,9 @@ std::string printf_text(const char* fmt, double a, double b = 0, double c = 0, d
 // "none", "curve", "defect", "both".
 const char* term_name(Term t);
 
+// "curve", "closed curve", "plane", "unchanged".
+const char* target_kind_name(TargetKind k);
+
 // "all patches at once", "seams held", "seams free"; "" for the only pass.
 const char* pass_name(SolvePass pass);
 

@@ -26,6 +26,10 @@ enum class TermChoice {
   AutoMeasured      // Auto: the race's winner (candidates hold its figures)
 };
 
+// The Step 1 model a patch's targets come from (target_normals.h): the Gauss-image curve, open
+// or closed, a single direction (planar), or none (the faces keep their normals).
+enum class TargetKind { Curve, ClosedCurve, Plane, Unchanged };
+
 // The passes of a solve (solve_schedule.h): one with fixed seams, three with free seams.
 enum class SolvePass { Only, AllAtOnce, SeamsHeld, SeamsFree };
 
@@ -67,8 +71,8 @@ struct PatchReport {
   int faces = 0;
   int vertices = 0;
   int free_vertices = 0;
-  double tolerance = 0;              // δ_err used, model units
-  std::string target_kind;           // the Step 1 model's name: "curve", "closed curve", "plane"
+  double tolerance = 0;                            // δ_err used, model units
+  TargetKind target_kind = TargetKind::Unchanged;  // the Step 1 model
   bool fitted = false;               // Step 1 fitted a model (else the faces keep their normals)
   Term developability = Term::None;  // rows used
   TermChoice developability_reason = TermChoice::AsAsked;  // why (Auto: candidates' figures)

@@ -1,6 +1,7 @@
 #include "approximate/solve_groups.h"
 
 #include <algorithm>
+#include <cassert>
 #include <map>
 #include <tuple>
 
@@ -28,8 +29,9 @@ std::vector<EdgeFaces> edge_faces(const Triangles& F) {
   for (size_t k = 0; k + 1 < corners.size(); ++k) {
     const auto& [a, b, f, up] = corners[k];
     const auto& [a2, b2, g, up2] = corners[k + 1];
-    const bool two = a == a2 && b == b2 && (k + 2 == corners.size() || std::get<0>(corners[k + 2]) != a ||
-                                            std::get<1>(corners[k + 2]) != b);
+    const bool two = a == a2 && b == b2 &&
+                     (k + 2 == corners.size() || std::get<0>(corners[k + 2]) != a ||
+                      std::get<1>(corners[k + 2]) != b);
     if (two && (k == 0 || std::get<0>(corners[k - 1]) != a || std::get<1>(corners[k - 1]) != b))
       out.push_back({f, g, up, up2});
   }
@@ -65,7 +67,8 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
   for (const EdgeFaces& e : edges) {
     const int p = group[static_cast<size_t>(e.f)], q = group[static_cast<size_t>(e.g)];
     if (p == q) continue;
-    const auto [slot, fresh] = alike.emplace(std::make_pair(std::min(p, q), std::max(p, q)), e.f_up != e.g_up);
+    const auto [slot, fresh] =
+        alike.emplace(std::make_pair(std::min(p, q), std::max(p, q)), e.f_up != e.g_up);
     if (!fresh) slot->second = slot->second && e.f_up != e.g_up;
   }
   std::map<int, int> into;  // group -> the group it joins this round
@@ -93,6 +96,7 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
 
 SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
                          const std::vector<char>& boundary, bool mostly_seam) {
+  assert(patch.size() == static_cast<size_t>(F.rows()));
   SolveGroups out;
   out.group = patch;
   if (std::adjacent_find(patch.begin(), patch.end(), std::not_equal_to<int>()) == patch.end())

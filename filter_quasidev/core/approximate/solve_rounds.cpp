@@ -1,6 +1,7 @@
 #include "approximate/solve_rounds.h"
 
 #include <algorithm>
+#include <cassert>
 
 namespace qd {
 
@@ -33,6 +34,13 @@ std::vector<std::vector<size_t>> solve_rounds(const std::vector<std::vector<int>
     rounds[r].push_back(g);
     round_of[g] = static_cast<int>(r);
   }
+  // Groups of one round share no moving vertex: they run in parallel on one position array.
+  assert(std::all_of(at_vertex.begin(), at_vertex.end(), [&](const std::vector<size_t>& list) {
+    return std::all_of(list.begin(), list.end(), [&](size_t a) {
+      return std::count_if(list.begin(), list.end(),
+                           [&](size_t b) { return round_of[a] == round_of[b]; }) == 1;
+    });
+  }));
   return rounds;
 }
 

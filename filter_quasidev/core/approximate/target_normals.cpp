@@ -2,13 +2,12 @@
 // (Eqs. 10–12) -> B-spline c_2D -> spherical curve c_3D = R⁻¹ S(c_2D) -> target normals.
 #include "approximate/target_normals.h"
 
-#include <nanoflann.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <nanoflann.hpp>
 #include <string>
 #include <vector>
 
@@ -40,7 +39,7 @@ class PlaneModel : public GaussModel {
  public:
   explicit PlaneModel(const Vec3& normal) : normal_(normal) {}
   Vec3 project(const Vec3&, int&) const override { return normal_; }
-  std::string kind() const override { return "plane"; }
+  TargetKind kind() const override { return TargetKind::Plane; }
 
  private:
   Vec3 normal_;
@@ -64,7 +63,8 @@ class CurveModel : public GaussModel {
       for (int k = 0; k < j; ++k) {
         const int apart = spline_.periodic() ? std::min(j - k, M - (j - k)) : j - k;
         if (apart <= kWindow) continue;
-        const double half = 0.5 * (points_[static_cast<size_t>(j)] - points_[static_cast<size_t>(k)]).norm();
+        const double half =
+            0.5 * (points_[static_cast<size_t>(j)] - points_[static_cast<size_t>(k)]).norm();
         clearance_[static_cast<size_t>(j)] = std::min(clearance_[static_cast<size_t>(j)], half);
         clearance_[static_cast<size_t>(k)] = std::min(clearance_[static_cast<size_t>(k)], half);
       }
@@ -99,7 +99,9 @@ class CurveModel : public GaussModel {
     return R_.transpose() * p.point();
   }
 
-  std::string kind() const override { return spline_.periodic() ? "closed curve" : "curve"; }
+  TargetKind kind() const override {
+    return spline_.periodic() ? TargetKind::ClosedCurve : TargetKind::Curve;
+  }
 
  private:
   // A hint is trusted within this many samples on either side.
@@ -119,7 +121,8 @@ class CurveModel : public GaussModel {
       const double sd =
           d * (1 + d2 * (-1.0 / 6 + d2 * (1.0 / 120 + d2 * (-1.0 / 5040 + d2 / 362880))));
       const double cd =
-          1 + d2 * (-1.0 / 2 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 - d2 / 3628800))));
+          1 +
+          d2 * (-1.0 / 2 + d2 * (1.0 / 24 + d2 * (-1.0 / 720 + d2 * (1.0 / 40320 - d2 / 3628800))));
       return {b, s * cd + c * sd, c * cd - s * sd};
     }
   };
@@ -183,7 +186,8 @@ class CurveModel : public GaussModel {
     for (int steps = 0, j = hint; j >= 0 && steps < kMaxSteps; ++steps) {
       const int next = nearest_in_window(m, j);
       if (next == j) {
-        if ((m - points_[static_cast<size_t>(j)]).norm() < clearance_[static_cast<size_t>(j)]) return j;
+        if ((m - points_[static_cast<size_t>(j)]).norm() < clearance_[static_cast<size_t>(j)])
+          return j;
         break;
       }
       j = next;
@@ -203,7 +207,9 @@ class CurveModel : public GaussModel {
     size_t kdtree_get_point_count() const { return pts->size(); }
     double kdtree_get_pt(size_t i, size_t d) const { return (*pts)[i][static_cast<int>(d)]; }
     template <class Box>
-    bool kdtree_get_bbox(Box&) const { return false; }
+    bool kdtree_get_bbox(Box&) const {
+      return false;
+    }
   };
   using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>,
                                                    Cloud, 3, uint32_t>;
@@ -211,8 +217,8 @@ class CurveModel : public GaussModel {
   Eigen::Matrix3d R_;
   BSpline2 spline_;
   double step_ = 0;
-  std::vector<Local> samples_;   // dense samples of the curve at u = j·step_
-  std::vector<Vec3> points_;     // their points S, in the k-d tree
+  std::vector<Local> samples_;  // dense samples of the curve at u = j·step_
+  std::vector<Vec3> points_;    // their points S, in the k-d tree
   std::vector<double> clearance_;
   Cloud cloud_;
   std::unique_ptr<Tree> tree_;
@@ -237,7 +243,8 @@ bool fit_skeleton_spline(const std::vector<Vec2>& theta_phi, const std::vector<d
                 image.periodic ? image.width : 0.0, image.effect_radius);
   }
   if (curve.points.size() < 2) return false;
-  double length_px = curve.closed ? (curve.points.front() + curve.shift - curve.points.back()).norm() : 0;
+  double length_px =
+      curve.closed ? (curve.points.front() + curve.shift - curve.points.back()).norm() : 0;
   for (size_t k = 1; k < curve.points.size(); ++k)
     length_px += (curve.points[k] - curve.points[k - 1]).norm();
   std::vector<Vec2> points;
@@ -268,8 +275,9 @@ TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double
                       size_t threads) {
   const GaussMoments moments = gauss_moments(normals, areas);  // Step 1.1 (throws on bad input)
   if (fills_sphere(moments))
-    throw Error("patch normals fill the sphere: it is far from developable; split it into "
-                "smaller, nearly developable patches");
+    throw Error(
+        "patch normals fill the sphere: it is far from developable; split it into "
+        "smaller, nearly developable patches");
   TargetFit fit;
   std::unique_ptr<BSpline2> spline;
   Eigen::Matrix3d R;
@@ -290,8 +298,9 @@ TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double
     std::vector<Vec2> theta_phi_samples(normals.size());
     for (size_t i = 0; i < normals.size(); ++i) theta_phi_samples[i] = theta_phi(R * normals[i]);
     if (!fit_skeleton_spline(theta_phi_samples, areas, frame, spline))
-      throw Error("no skeleton curve could be traced in the Gauss image of a patch: it is far "
-                  "from developable; split it into smaller, nearly developable patches");
+      throw Error(
+          "no skeleton curve could be traced in the Gauss image of a patch: it is far "
+          "from developable; split it into smaller, nearly developable patches");
   }
   if (spline)
     fit.model = std::make_shared<CurveModel>(R, std::move(*spline));

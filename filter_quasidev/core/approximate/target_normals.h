@@ -3,9 +3,9 @@
 #pragma once
 
 #include <memory>
-#include <string>
 #include <vector>
 
+#include "approximate/result.h"
 #include "common/mesh.h"
 
 namespace qd {
@@ -25,14 +25,14 @@ class GaussModel {
   // vector left in it (projecting the normals of neighbouring faces one after another spares
   // the global search). The result does not depend on the hint.
   virtual Vec3 project(const Vec3& n, int& hint) const = 0;
-  // "curve", "closed curve" or "plane".
-  virtual std::string kind() const = 0;
+  // Curve, ClosedCurve or Plane.
+  virtual TargetKind kind() const = 0;
 };
 
 struct TargetFit {
   std::shared_ptr<const GaussModel> model;
-  std::vector<Vec3> targets;    // one unit target normal per input normal
-  double residual_deg = 0;      // area-weighted mean angle between normal and target
+  std::vector<Vec3> targets;  // one unit target normal per input normal
+  double residual_deg = 0;    // area-weighted mean angle between normal and target
 };
 
 // The model's nearest point to each unit normal (Step 1.5), projected in ranges on up to

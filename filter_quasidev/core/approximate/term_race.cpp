@@ -1,6 +1,7 @@
 #include "approximate/term_race.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace qd {
@@ -42,6 +43,7 @@ int most_iterations(const std::vector<Deformation>& runs, const std::vector<char
 RaceOutcome race_terms(const std::vector<Term>& terms,
                        const std::function<Deformation(Term)>& start, int max_iter,
                        double meaningful, const std::function<void(double)>& progress) {
+  assert(!terms.empty());
   std::vector<Deformation> runs;
   for (Term t : terms) runs.push_back(start(t));
   std::vector<char> dropped(runs.size(), 0);
@@ -79,6 +81,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   }
   RaceOutcome out;
   const size_t lead = leader(runs, dropped);
+  assert(lead < runs.size());  // the race never drops every candidate
   for (size_t k = 0; k < runs.size(); ++k) {
     CandidateFigures c;
     c.term = terms[k];

@@ -3,6 +3,7 @@
 #include "common/metrics.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <string>
 
@@ -17,8 +18,8 @@ constexpr double kTwoPi = 2 * kPi;
 
 // Per-corner quantities of one face: corner k sits at F(f, k).
 struct Corners {
-  double doubled_area = 0;     // |(v2 − v1) × (v3 − v1)|
-  double dot[3] = {0, 0, 0};   // (v_{k+1} − v_k)·(v_{k+2} − v_k): cos of the corner angle, unscaled
+  double doubled_area = 0;  // |(v2 − v1) × (v3 − v1)|
+  double dot[3] = {0, 0, 0};  // (v_{k+1} − v_k)·(v_{k+2} − v_k): cos of the corner angle, unscaled
   double len2[3] = {0, 0, 0};  // |v_{k+1} − v_k|²: squared length of the edge leaving corner k
 };
 
@@ -81,7 +82,9 @@ VertexAngles vertex_angles(const Positions& V, const Triangles& F) {
   return out;
 }
 
-std::vector<double> gaussian_curvature(const VertexAngles& angles, const std::vector<char>& interior) {
+std::vector<double> gaussian_curvature(const VertexAngles& angles,
+                                       const std::vector<char>& interior) {
+  assert(angles.area.size() == angles.defect.size());
   std::vector<double> k(angles.defect.size(), 0.0);
   for (size_t v = 0; v < k.size(); ++v)
     if (v < interior.size() && interior[v]) k[v] = curvature(angles.defect[v], angles.area[v]);

@@ -3,6 +3,7 @@
 #include "common/topology.h"
 
 #include <algorithm>
+#include <cassert>
 #include <map>
 #include <numeric>
 
@@ -113,6 +114,10 @@ void classify_edge(const Triangles& F, const std::vector<int>& patch,
 }  // namespace
 
 Topology analyse_topology(const Triangles& F, int vertex_count, const std::vector<int>& patch) {
+  // Validation (check_face_indices) ran first: every index below reads inside the per-vertex
+  // flags.
+  assert(F.size() == 0 || (F.minCoeff() >= 0 && F.maxCoeff() < vertex_count));
+  assert(patch.empty() || patch.size() == static_cast<size_t>(F.rows()));
   const auto n = static_cast<size_t>(vertex_count);
   Topology t;
   t.used.assign(n, 0);

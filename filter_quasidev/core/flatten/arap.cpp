@@ -1,5 +1,6 @@
 #include "flatten/arap.h"
 
+#include <cassert>
 #include <cmath>
 #include <vector>
 
@@ -31,7 +32,8 @@ std::vector<Eigen::Matrix<double, 2, 3>> weighted_frame_edges(const FlatTriangle
       const int i = (k + 1) % 3, j = (k + 2) % 3;  // weight of edge (k, i) is half_cot at j
       const Eigen::Matrix<double, 2, 3>& x = g.corner[f];
       const auto fi = static_cast<Eigen::Index>(f);
-      Y[f].col(k) = g.half_cot(fi, j) * (x.col(k) - x.col(i)) + g.half_cot(fi, i) * (x.col(k) - x.col(j));
+      Y[f].col(k) =
+          g.half_cot(fi, j) * (x.col(k) - x.col(i)) + g.half_cot(fi, i) * (x.col(k) - x.col(j));
     }
   return Y;
 }
@@ -42,9 +44,11 @@ ArapOutcome arap(const Triangles& F, const FlatTriangles& g, const Eigen::Sparse
                  Eigen::MatrixX2d& uv, const ArapSettings& settings,
                  const std::function<void(int)>& iteration) {
   const int n = static_cast<int>(uv.rows()), pinned = 0;
+  assert(L.rows() == n && L.cols() == n && g.corner.size() == static_cast<size_t>(F.rows()));
   std::vector<int> free_index(static_cast<size_t>(n));
   for (int v = 0; v < n; ++v) free_index[v] = v == pinned ? -1 : v - (v > pinned);
-  const OrderedCholesky solver(sparse_block(L, free_index, n - 1, free_index, n - 1), settings.solver, true);
+  const OrderedCholesky solver(sparse_block(L, free_index, n - 1, free_index, n - 1),
+                               settings.solver, true);
   const Eigen::VectorXd pin_column = L.col(pinned);
   const std::vector<Eigen::Matrix<double, 2, 3>> Y = weighted_frame_edges(g);
   const double total_area = g.area.sum();
@@ -60,9 +64,12 @@ ArapOutcome arap(const Triangles& F, const FlatTriangles& g, const Eigen::Sparse
       energy += g.area(f) * (J - R[f]).squaredNorm();
     }
     out.energy = energy / total_area;
-    if (out.energy <= kExactEnergy) out.stop_reason = "exact";
-    else if (out.iterations > 0 && previous - energy <= settings.tolerance * previous) out.stop_reason = "converged";
-    else if (out.iterations >= settings.max_iterations) out.stop_reason = "iteration cap";
+    if (out.energy <= kExactEnergy)
+      out.stop_reason = "exact";
+    else if (out.iterations > 0 && previous - energy <= settings.tolerance * previous)
+      out.stop_reason = "converged";
+    else if (out.iterations >= settings.max_iterations)
+      out.stop_reason = "iteration cap";
     if (!out.stop_reason.empty()) return out;
     previous = energy;
 

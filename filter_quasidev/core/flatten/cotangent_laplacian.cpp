@@ -1,8 +1,12 @@
 #include "flatten/cotangent_laplacian.h"
 
+#include <cassert>
+
 namespace qd {
 
-Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTriangles& g, int vertex_count) {
+Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTriangles& g,
+                                                int vertex_count) {
+  assert(g.half_cot.rows() == F.rows());
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(12 * static_cast<size_t>(F.rows()));
   for (int f = 0; f < F.rows(); ++f)
@@ -19,8 +23,11 @@ Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTr
   return L;
 }
 
-Eigen::SparseMatrix<double> sparse_block(const Eigen::SparseMatrix<double>& M, const std::vector<int>& row,
-                                         int rows, const std::vector<int>& column, int columns) {
+Eigen::SparseMatrix<double> sparse_block(const Eigen::SparseMatrix<double>& M,
+                                         const std::vector<int>& row, int rows,
+                                         const std::vector<int>& column, int columns) {
+  assert(row.size() == static_cast<size_t>(M.rows()) &&
+         column.size() == static_cast<size_t>(M.cols()));
   std::vector<Eigen::Triplet<double>> entries;
   for (int c = 0; c < M.outerSize(); ++c) {
     if (column[c] < 0) continue;

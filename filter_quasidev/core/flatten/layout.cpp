@@ -1,6 +1,7 @@
 #include "flatten/layout.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numeric>
 
@@ -14,6 +15,19 @@ constexpr double kShelfWidth = 1.5;  // of √(total box area)
 Eigen::AlignedBox2d box_of(const Eigen::MatrixX2d& points) {
   return Eigen::AlignedBox2d(points.colwise().minCoeff().transpose(),
                              points.colwise().maxCoeff().transpose());
+}
+
+// No two boxes placed at their corners overlap (they may touch).
+[[maybe_unused]] bool apart(const std::vector<Eigen::AlignedBox2d>& boxes,
+                            const std::vector<Eigen::Vector2d>& corner) {
+  for (size_t i = 0; i < boxes.size(); ++i)
+    for (size_t j = 0; j < i; ++j) {
+      const Eigen::Vector2d lo = corner[i].cwiseMax(corner[j]);
+      const Eigen::Vector2d hi =
+          (corner[i] + boxes[i].sizes()).cwiseMin(corner[j] + boxes[j].sizes());
+      if ((hi - lo).minCoeff() > 0) return false;
+    }
+  return true;
 }
 
 }  // namespace
@@ -47,6 +61,7 @@ std::vector<Eigen::Vector2d> shelf_pack(const std::vector<Eigen::AlignedBox2d>& 
     x += size.x() + gap;
     shelf_height = std::max(shelf_height, size.y());
   }
+  assert(apart(boxes, corner));  // O(pieces²): the pieces are few
   return corner;
 }
 
@@ -60,6 +75,7 @@ double sheet_gap(const std::vector<Eigen::AlignedBox2d>& boxes, double gap) {
 std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces,
                                          const std::vector<Eigen::Vector2d>& grain, double gap,
                                          double margin) {
+  assert(grain.size() == pieces.size());
   std::vector<Eigen::AlignedBox2d> boxes, grown;
   for (size_t i = 0; i < pieces.size(); ++i) {
     Eigen::MatrixX2d& uv = pieces[i];

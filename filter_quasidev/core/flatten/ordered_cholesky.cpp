@@ -1,11 +1,23 @@
 #include "flatten/ordered_cholesky.h"
 
+#include <cassert>
 #include <utility>
 #include <vector>
 
 #include "common/vertex_order.h"
 
 namespace qd {
+namespace {
+
+// rank holds each of 0 … n−1 once.
+[[maybe_unused]] bool is_permutation_of(const std::vector<int>& rank, Eigen::Index n) {
+  std::vector<char> seen(static_cast<size_t>(n), 0);
+  for (const int r : rank)
+    if (r < 0 || r >= n || seen[static_cast<size_t>(r)]++) return false;
+  return rank.size() == seen.size();
+}
+
+}  // namespace
 
 OrderedCholesky::OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKind kind,
                                  bool many_solves)
@@ -15,6 +27,7 @@ OrderedCholesky::OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKin
     for (Eigen::SparseMatrix<double>::InnerIterator it(M, c); it; ++it)
       if (it.row() > c) edges.emplace_back(static_cast<int>(it.row()), c);
   const std::vector<int> rank = fill_reducing_rank(static_cast<int>(M.rows()), edges);
+  assert(is_permutation_of(rank, M.rows()));  // or the solve would not undo the order
   for (int i = 0; i < M.rows(); ++i) order_.indices()[i] = rank[i];
   Eigen::SparseMatrix<double> ordered(M.rows(), M.cols());
   ordered = M.selfadjointView<Eigen::Lower>().twistedBy(order_);
@@ -22,6 +35,7 @@ OrderedCholesky::OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKin
 }
 
 Eigen::MatrixXd OrderedCholesky::solve(const Eigen::MatrixXd& b) const {
+  assert(b.rows() == order_.size());
   return order_.inverse() * cholesky_.solve(order_ * b);
 }
 

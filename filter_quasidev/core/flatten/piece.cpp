@@ -1,5 +1,6 @@
 #include "flatten/piece.h"
 
+#include <cassert>
 #include <map>
 
 #include "common/disjoint_sets.h"
@@ -9,6 +10,7 @@
 namespace qd {
 
 void renumber_vertices(Piece& piece, const Triangles& F, const std::vector<int>& origin) {
+  assert(origin.size() >= static_cast<size_t>(F.size() > 0 ? F.maxCoeff() + 1 : 0));
   Positions V(static_cast<Eigen::Index>(origin.size()), 3);
   std::vector<int> vertex(origin.size());
   for (size_t v = 0; v < origin.size(); ++v) {
@@ -48,7 +50,8 @@ Piece local_mesh(const Positions& V, const Triangles& F, int patch, const std::v
 }
 
 // Component c of `whole`: its faces (local to whole); local as for local_mesh.
-Piece component_of(const Piece& whole, const std::vector<int>& faces, int c, std::vector<int>& local) {
+Piece component_of(const Piece& whole, const std::vector<int>& faces, int c,
+                   std::vector<int>& local) {
   Piece p = local_mesh(whole.V, whole.F, whole.patch, faces, local);
   for (int& f : p.face) f = whole.face[static_cast<size_t>(f)];
   for (int& v : p.vertex) v = whole.vertex[static_cast<size_t>(v)];
@@ -58,7 +61,8 @@ Piece component_of(const Piece& whole, const std::vector<int>& faces, int c, std
 
 }  // namespace
 
-std::vector<Piece> extract_pieces(const Positions& V, const Triangles& F, const std::vector<int>& patch) {
+std::vector<Piece> extract_pieces(const Positions& V, const Triangles& F,
+                                  const std::vector<int>& patch) {
   std::map<int, std::vector<int>> faces_of_patch;
   for (int f = 0; f < F.rows(); ++f) faces_of_patch[patch.empty() ? 0 : patch[f]].push_back(f);
   std::vector<Piece> pieces;
@@ -79,8 +83,12 @@ std::vector<Piece> extract_pieces(const Positions& V, const Triangles& F, const 
     for (int f = 0; f < whole.F.rows(); ++f) faces_of[of_vertex[whole.F(f, 0)]].push_back(f);
     std::vector<int> whole_local(count > 1 ? static_cast<size_t>(whole.V.rows()) : 0, -1);
     for (int c = 0; c < count; ++c) {
-      pieces.push_back(count == 1 ? std::move(whole) : component_of(whole, faces_of[c], c, whole_local));
+      pieces.push_back(count == 1 ? std::move(whole)
+                                  : component_of(whole, faces_of[c], c, whole_local));
       pieces.back().components = count;
+      // Every local face and vertex maps to one of the mesh.
+      assert(pieces.back().face.size() == static_cast<size_t>(pieces.back().F.rows()) &&
+             pieces.back().vertex.size() == static_cast<size_t>(pieces.back().V.rows()));
     }
   }
   return pieces;

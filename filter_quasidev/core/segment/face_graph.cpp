@@ -1,6 +1,8 @@
 // Face adjacency from the mesh's face edges sorted in linear time (mesh.h sorted_face_edges).
 #include "segment/face_graph.h"
 
+#include <cassert>
+
 #include "segment/cone_proxy.h"
 
 namespace qd {
@@ -25,6 +27,7 @@ Side side_of(const Triangles& F, int f, int a, int b) {
 }  // namespace
 
 FaceGraph face_graph(const Positions& V, const Triangles& F, const std::vector<int>& region) {
+  assert(region.empty() || region.size() == static_cast<size_t>(F.rows()));
   FaceGraph graph;
   const auto n = static_cast<size_t>(F.rows());
   graph.neighbour.assign(n, {-1, -1, -1});

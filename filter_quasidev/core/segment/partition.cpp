@@ -1,9 +1,13 @@
 // Bucketing faces by chart.
 #include "segment/partition.h"
 
+#include <algorithm>
+#include <cassert>
+
 namespace qd {
 
 std::vector<std::vector<int>> faces_by_chart(const std::vector<int>& label, int count) {
+  assert(std::all_of(label.begin(), label.end(), [&](int l) { return l < count; }));
   std::vector<std::vector<int>> faces(static_cast<size_t>(count));
   for (size_t f = 0; f < label.size(); ++f)
     if (label[f] >= 0) faces[label[f]].push_back(static_cast<int>(f));

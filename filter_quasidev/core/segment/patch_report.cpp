@@ -2,6 +2,7 @@
 #include "segment/patch_report.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include "segment/patch_topology.h"
@@ -10,6 +11,8 @@ namespace qd {
 
 SegmentResult patch_report(const Partition& p, const SegmentProblem& problem,
                            const FaceGeometry& g) {
+  assert(p.fit.size() == p.faces.size() && p.over.size() == p.faces.size() &&
+         p.kept.size() == p.faces.size());
   std::vector<int> order;
   for (size_t c = 0; c < p.faces.size(); ++c)
     if (!p.faces[c].empty()) order.push_back(static_cast<int>(c));
@@ -19,6 +22,8 @@ SegmentResult patch_report(const Partition& p, const SegmentProblem& problem,
   r.patch.assign(p.label.size(), -1);
   for (size_t id = 0; id < order.size(); ++id)
     for (const int f : p.faces[order[id]]) r.patch[f] = static_cast<int>(id);
+  // The charts partition the faces: every face has its patch.
+  assert(std::find(r.patch.begin(), r.patch.end(), -1) == r.patch.end());
   const int count = static_cast<int>(order.size());
   const std::vector<PatchTopology> topology =
       patch_topology(problem.F, problem.V.rows(), r.patch, count);
