@@ -1,8 +1,7 @@
 // In-memory tables of a mesh file, shared by the readers, the writer and the command.
 // A PlyElement is a generic table (one column per property) so that every property and every
 // element the engine does not use is carried from the input to the output unchanged.
-// Values are stored as double: every PLY scalar type (8/16/32-bit integers, float, double) is
-// represented exactly, so a read/write round trip is bit-identical.
+// Each column holds its values in the property's own PLY type (scalar_column.h).
 #pragma once
 
 #include <array>
@@ -11,29 +10,26 @@
 #include <string>
 #include <vector>
 
+#include "io/scalar_column.h"
+
 namespace qd::meshio {
-
-enum class ScalarType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-// PLY name ("uchar", "float", ...) of a type, and its size in bytes.
-const char* scalar_type_name(ScalarType type);
-std::size_t scalar_type_size(ScalarType type);
 
 // One property of an element: a scalar column, or a list column (values of element i are
 // values[offsets[i] .. offsets[i+1]) ).
 struct PlyProperty {
   std::string name;
-  ScalarType type = ScalarType::Float32;
   bool is_list = false;
   ScalarType count_type = ScalarType::UInt8;  // lists only
-  std::vector<double> values;
+  ScalarColumn values;
   std::vector<std::size_t> offsets;  // lists only, size count + 1
 
+  ScalarType type() const { return values.type(); }
   std::size_t list_size(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
 };
 
 // A scalar column called `name` of the given type holding `values`.
-PlyProperty scalar_property(const std::string& name, ScalarType type, std::vector<double> values);
+PlyProperty scalar_property(const std::string& name, ScalarType type,
+                            const std::vector<double>& values);
 
 struct PlyElement {
   std::string name;

@@ -78,7 +78,8 @@ void parse_face(const std::vector<std::string_view>& w, int line, std::size_t ve
   }
   scan.corners.offsets.push_back(scan.corners.values.size());
   scan.all_faces_have_uv = scan.all_faces_have_uv && face_has_uv;
-  if (face_has_uv) scan.corner_uv.values.insert(scan.corner_uv.values.end(), uv.begin(), uv.end());
+  if (face_has_uv)
+    for (double t : uv) scan.corner_uv.values.push_back(t);
   scan.corner_uv.offsets.push_back(scan.corner_uv.values.size());
   scan.face_group.push_back(scan.current_group);
 }
@@ -105,7 +106,7 @@ MeshFile parse_obj(std::string_view bytes) {
   ObjScan scan;
   scan.corners.name = "vertex_indices";
   scan.corners.is_list = true;
-  scan.corners.type = ScalarType::Int32;
+  scan.corners.values = ScalarColumn(ScalarType::Int32);
   scan.corners.offsets.assign(1, 0);
   scan.corner_uv.name = "texcoord";
   scan.corner_uv.is_list = true;

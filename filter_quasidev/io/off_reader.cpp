@@ -79,7 +79,8 @@ MeshFile parse_off(std::string_view bytes) {
         fail(lines.number[next],
              "vertex coordinate '" + std::string(w[k]) + "' is not a finite number");
   }
-  PlyProperty corners;
+  PlyProperty corners;  // double holds any index read, so add_faces can name one out of range
+  corners.values = ScalarColumn(ScalarType::Float64);
   corners.is_list = true;
   corners.offsets.assign(1, 0);
   for (std::size_t f = 0; f < nf; ++f, ++next) {

@@ -10,13 +10,10 @@ namespace qd::meshio {
 
 namespace {
 
-// Area-weighted vertex normals of the positions in columns x, y, z (unit length; zero where
-// undefined).
-std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh, const PlyElement& vertex) {
-  const std::vector<double>* xyz[3] = {&vertex.properties[0].values, &vertex.properties[1].values,
-                                       &vertex.properties[2].values};
-  const auto at = [&xyz](int v, std::size_t k) { return (*xyz[k])[static_cast<std::size_t>(v)]; };
-  std::vector<std::array<double, 3>> n(vertex.count, {0, 0, 0});
+// Area-weighted vertex normals of the positions V (unit length; zero where undefined).
+std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh, const Positions& V) {
+  const auto at = [&V](int v, Eigen::Index k) { return V(v, k); };
+  std::vector<std::array<double, 3>> n(static_cast<std::size_t>(V.rows()), {0, 0, 0});
   for (const std::array<int, 3>& t : mesh.triangles) {
     const double u[3] = {at(t[1], 0) - at(t[0], 0), at(t[1], 1) - at(t[0], 1),
                          at(t[1], 2) - at(t[0], 2)};
@@ -67,11 +64,11 @@ PlyProperty list_property(const std::string& name, ScalarType type,
   p.name = name;
   p.is_list = true;
   p.count_type = ScalarType::UInt8;
-  p.type = type;
+  p.values = ScalarColumn(type);
   p.offsets.reserve(rows.size() + 1);
   p.offsets.push_back(0);
   for (const std::array<T, N>& row : rows) {
-    p.values.insert(p.values.end(), row.begin(), row.end());
+    for (T v : row) p.values.push_back(static_cast<double>(v));
     p.offsets.push_back(p.values.size());
   }
   return p;
@@ -125,17 +122,21 @@ void set_positions(PlyFile& ply, const MeshFile& mesh, const Positions& V) {
   PlyElement& vertex = output_element(ply, "vertex");
   check_size(vertex, static_cast<std::size_t>(V.rows()));
   for (std::size_t k = 0; k < 3; ++k) {
-    PlyProperty& column = vertex.properties[k];
-    column.type = ScalarType::Float64;
+    ScalarColumn& column = vertex.properties[k].values;
+    column = ScalarColumn(ScalarType::Float64);
+    column.reserve(vertex.count);
     for (std::size_t i = 0; i < vertex.count; ++i)
-      column.values[i] = V(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
+      column.push_back(V(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)));
   }
   const std::array<int, 3> normals = normal_columns(vertex);
   if (std::find(normals.begin(), normals.end(), -1) != normals.end()) return;
-  const std::vector<std::array<double, 3>> n = vertex_normals(mesh, vertex);
-  for (std::size_t k = 0; k < 3; ++k)
-    for (std::size_t i = 0; i < vertex.count; ++i)
-      vertex.properties[static_cast<std::size_t>(normals[k])].values[i] = n[i][k];
+  const std::vector<std::array<double, 3>> n = vertex_normals(mesh, V);
+  for (std::size_t k = 0; k < 3; ++k) {
+    ScalarColumn& column = vertex.properties[static_cast<std::size_t>(normals[k])].values;
+    column = ScalarColumn(column.type());
+    column.reserve(vertex.count);
+    for (std::size_t i = 0; i < vertex.count; ++i) column.push_back(n[i][k]);
+  }
 }
 
 void set_quality(PlyElement& element, const std::vector<double>& quality) {

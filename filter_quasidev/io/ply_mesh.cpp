@@ -30,7 +30,7 @@ void read_vertices(PlyElement& vertex, MeshFile& mesh) {
   const PlyProperty y = take_scalar(vertex, "y");
   const PlyProperty z = take_scalar(vertex, "z");
   mesh.positions.resize(vertex.count);
-  mesh.position_types = {x.type, y.type, z.type};
+  mesh.position_types = {x.type(), y.type(), z.type()};
   for (std::size_t i = 0; i < vertex.count; ++i) {
     mesh.positions[i] = {x.values[i], y.values[i], z.values[i]};
     for (double c : mesh.positions[i])

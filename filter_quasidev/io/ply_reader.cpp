@@ -58,8 +58,10 @@ void parse_property_line(const std::vector<std::string_view>& w, int line_no, Pl
   if (list && (p.count_type == ScalarType::Float32 || p.count_type == ScalarType::Float64))
     fail(at + "a list count type must be an integer type, not '" + std::string(w[2]) + "'");
   const std::string_view type_word = w[list ? 3 : 1];
-  if (!parse_type(type_word, p.type))
+  ScalarType type = ScalarType::Float32;
+  if (!parse_type(type_word, type))
     fail(at + "unknown property type '" + std::string(type_word) + "'");
+  p.values = ScalarColumn(type);
   p.name = std::string(w.back());
   PlyElement& element = ply.elements.back();
   if (element.find(p.name) >= 0)
@@ -256,7 +258,7 @@ template <typename Source>
 void check_count_fits(const PlyElement& e, const Source& source) {
   std::size_t per_element = 0;
   for (const PlyProperty& p : e.properties)
-    per_element += source.min_bytes(p.is_list ? p.count_type : p.type);
+    per_element += source.min_bytes(p.is_list ? p.count_type : p.type());
   if (per_element > 0 && e.count > source.remaining() / per_element)
     fail("the header declares " + std::to_string(e.count) + " '" + e.name +
          "' elements, but only " + std::to_string(source.remaining()) +
@@ -274,17 +276,17 @@ void read_element(PlyElement& e, Source& source) {
   for (std::size_t i = 0; i < e.count; ++i) {
     for (PlyProperty& p : e.properties) {
       if (!p.is_list) {
-        p.values.push_back(source.read(p.type, Place{e, i, p, false}));
+        p.values.push_back(source.read(p.type(), Place{e, i, p, false}));
         continue;
       }
       const double n = source.read(p.count_type, Place{e, i, p, true});
       if (n < 0) fail("negative list length of " + Place{e, i, p, false}.text());
       const auto length = static_cast<std::size_t>(n);
-      if (length > source.remaining() / source.min_bytes(p.type))
+      if (length > source.remaining() / source.min_bytes(p.type()))
         fail("list length " + std::to_string(length) + " of " + Place{e, i, p, false}.text() +
              " exceeds the remaining data (truncated or corrupt file)");
       for (std::size_t k = 0; k < length; ++k)
-        p.values.push_back(source.read(p.type, Place{e, i, p, false}));
+        p.values.push_back(source.read(p.type(), Place{e, i, p, false}));
       p.offsets.push_back(p.values.size());
     }
   }

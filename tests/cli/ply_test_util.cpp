@@ -11,10 +11,10 @@ PlyProperty list(const std::string& name, ScalarType count_type, ScalarType type
   p.name = name;
   p.is_list = true;
   p.count_type = count_type;
-  p.type = type;
+  p.values = ScalarColumn(type);
   p.offsets.push_back(0);
   for (const auto& l : lists) {
-    p.values.insert(p.values.end(), l.begin(), l.end());
+    for (double v : l) p.values.push_back(v);
     p.offsets.push_back(p.values.size());
   }
   return p;

@@ -35,7 +35,8 @@ TEST(ObjReader, CornersGroupsAndTexcoords) {
   EXPECT_EQ(m.patch, (std::vector<int>{0, 1, 0}));
   ASSERT_EQ(m.face_extra.size(), 1u);
   EXPECT_EQ(m.face_extra[0].name, "texcoord");
-  EXPECT_EQ(std::vector<double>(m.face_extra[0].values.begin() + 12, m.face_extra[0].values.end()),
+  const std::vector<double> uv = m.face_extra[0].values.to_doubles();
+  EXPECT_EQ(std::vector<double>(uv.begin() + 12, uv.end()),
             (std::vector<double>{0, 0, 1, 0, 0, 1}));
   ASSERT_EQ(m.notes.size(), 1u);  // the ignored line statement
 }

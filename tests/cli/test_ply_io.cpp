@@ -23,7 +23,7 @@ void expect_same_tables(const PlyFile& a, const PlyFile& b) {
     ASSERT_EQ(x.properties.size(), y.properties.size());
     for (std::size_t p = 0; p < x.properties.size(); ++p) {
       EXPECT_EQ(x.properties[p].name, y.properties[p].name);
-      EXPECT_EQ(x.properties[p].type, y.properties[p].type);
+      EXPECT_EQ(x.properties[p].type(), y.properties[p].type());
       EXPECT_EQ(x.properties[p].is_list, y.properties[p].is_list);
       EXPECT_EQ(x.properties[p].values, y.properties[p].values) << x.properties[p].name;
       EXPECT_EQ(x.properties[p].offsets, y.properties[p].offsets) << x.properties[p].name;
@@ -95,16 +95,18 @@ TEST(PlyMesh, ExtractsTrianglesPatchesSelectionAndKeepsTheRest) {
   // Vertex extras: flags and temperature, without x y z.
   ASSERT_EQ(mesh.vertex_extra.size(), 2u);
   EXPECT_EQ(mesh.vertex_extra[1].name, "temperature");
-  EXPECT_EQ(mesh.vertex_extra[1].values, (std::vector<double>{-7, 3, 100, -32768, 32767}));
+  EXPECT_EQ(mesh.vertex_extra[1].values.to_doubles(),
+            (std::vector<double>{-7, 3, 100, -32768, 32767}));
   // Face extras: texcoord split per corner for the quad, quality repeated.
   ASSERT_EQ(mesh.face_extra.size(), 2u);
   const PlyProperty& uv = mesh.face_extra[0];
   ASSERT_EQ(uv.offsets.size(), 5u);
-  EXPECT_EQ(std::vector<double>(uv.values.begin() + 12, uv.values.begin() + 18),
+  const std::vector<double> uv_values = uv.values.to_doubles();
+  EXPECT_EQ(std::vector<double>(uv_values.begin() + 12, uv_values.begin() + 18),
             (std::vector<double>{0.5, 0.25, 0.75, 0.125, 1, 0.5}));
-  EXPECT_EQ(std::vector<double>(uv.values.begin() + 18, uv.values.end()),
+  EXPECT_EQ(std::vector<double>(uv_values.begin() + 18, uv_values.end()),
             (std::vector<double>{0.5, 0.25, 1, 0.5, 0, 0}));
-  EXPECT_EQ(mesh.face_extra[1].values, (std::vector<double>{1, 1, 2.2f, 2.2f}));
+  EXPECT_EQ(mesh.face_extra[1].values.to_doubles(), (std::vector<double>{1, 1, 2.2f, 2.2f}));
   ASSERT_EQ(mesh.other_elements.size(), 1u);
   EXPECT_EQ(mesh.other_elements[0].name, "edge");
   EXPECT_EQ(mesh.comments.size(), 2u);

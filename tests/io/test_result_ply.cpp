@@ -47,15 +47,15 @@ TEST(ResultPly, ApproximationWritesPositionsAndTheChosenQuality) {
   r.displacement = {0, 0.5, 2};
   params::ApproximateSettings s;
   PlyFile ply = approximated_ply(triangle(), r, s);
-  EXPECT_EQ(column(ply, "vertex", "y").type, ScalarType::Float64);
+  EXPECT_EQ(column(ply, "vertex", "y").type(), ScalarType::Float64);
   EXPECT_EQ(column(ply, "vertex", "y").values[2], 7);
-  EXPECT_EQ(column(ply, "vertex", "quality").values, r.k_after);
+  EXPECT_EQ(column(ply, "vertex", "quality").values.to_doubles(), r.k_after);
   EXPECT_EQ(column(ply, "vertex", "red").values[0], 255);   // lowest K: red
   EXPECT_EQ(column(ply, "vertex", "blue").values[2], 255);  // highest K: blue
   s.output_quality = params::QualityKind::Displacement;
   s.colorize = false;
   ply = approximated_ply(triangle(), r, s);
-  EXPECT_EQ(column(ply, "vertex", "quality").values, r.displacement);
+  EXPECT_EQ(column(ply, "vertex", "quality").values.to_doubles(), r.displacement);
   EXPECT_LT(ply.find("vertex")->find("red"), 0);
   r.displacement.pop_back();
   EXPECT_NE(error_of([&] { approximated_ply(triangle(), r, s); }).find("internal error"),
@@ -66,8 +66,8 @@ TEST(ResultPly, SegmentationWritesPatchIdsAndColoursPerFace) {
   SegmentResult r;
   r.patch = {3};
   const PlyFile ply = segmented_ply(triangle(), r);
-  EXPECT_EQ(column(ply, "vertex", "x").type, ScalarType::Float32);  // vertices untouched
-  EXPECT_EQ(column(ply, "face", "quality").values, (std::vector<double>{3}));
+  EXPECT_EQ(column(ply, "vertex", "x").type(), ScalarType::Float32);  // vertices untouched
+  EXPECT_EQ(column(ply, "face", "quality").values.to_doubles(), (std::vector<double>{3}));
   EXPECT_EQ(column(ply, "face", "green").values[0], patch_color(3)[1]);
   r.patch = {};
   EXPECT_THROW(segmented_ply(triangle(), r), Error);
@@ -80,8 +80,8 @@ TEST(ResultPly, FlatteningWritesTexcoordsAndStretchPerFace) {
   r.stretch = {0.01};
   const PlyFile ply = flattened_ply(triangle(), r);
   EXPECT_EQ(column(ply, "face", "texcoord").values[3], 2.5);
-  EXPECT_EQ(column(ply, "face", "quality").values, r.stretch);
-  EXPECT_EQ(column(ply, "face", "alpha").values, (std::vector<double>{255}));
+  EXPECT_EQ(column(ply, "face", "quality").values.to_doubles(), r.stretch);
+  EXPECT_EQ(column(ply, "face", "alpha").values.to_doubles(), (std::vector<double>{255}));
   r.stretch = {};
   EXPECT_THROW(flattened_ply(triangle(), r), Error);
 }
