@@ -50,6 +50,9 @@ struct MeshFile {
   std::vector<int> patch;                  // per triangle; empty = the file has no patch ids
   std::map<int, std::string> patch_names;  // panel names by patch id (OBJ groups, PLY comments)
   std::vector<char> constrained;           // per vertex; empty = the file selects no vertex
+  // Per triangle, u v of its three corners from an OBJ file's `vt` (empty = none); written as the
+  // face `texcoord` list, ahead of the face's other properties.
+  std::vector<std::array<double, 6>> corner_uv;
   // Vertex properties other than x, y, z (one value per vertex, or lists).
   std::vector<PlyProperty> vertex_extra;
   // Face properties other than the index list (one entry per output triangle: a polygon's

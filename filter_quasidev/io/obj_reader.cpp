@@ -108,7 +108,7 @@ MeshFile parse_obj(std::string_view bytes) {
   scan.corners.is_list = true;
   scan.corners.values = ScalarColumn(ScalarType::Int32);
   scan.corners.offsets.assign(1, 0);
-  scan.corner_uv.name = "texcoord";
+  scan.corner_uv.values = ScalarColumn(ScalarType::Float64);
   scan.corner_uv.is_list = true;
   scan.corner_uv.offsets.assign(1, 0);
   std::size_t pos = 0;
@@ -141,6 +141,13 @@ MeshFile parse_obj(std::string_view bytes) {
     mesh.notes.push_back("texture coordinates dropped: not every face has them");
   const std::vector<std::size_t> source =
       add_faces(scan.corners, faces, mesh.positions.size(), columns, mesh);
+  if (!columns.empty()) {  // add_faces gave each triangle its three corners' u v
+    const ScalarColumn& uv = mesh.face_extra[0].values;
+    mesh.corner_uv.resize(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.corner_uv.size(); ++t)
+      for (std::size_t k = 0; k < 6; ++k) mesh.corner_uv[t][k] = uv[6 * t + k];
+    mesh.face_extra.clear();
+  }
   if (!scan.group_ids.empty()) {
     const std::map<int, int> id_of = patch_id_of_group(scan.face_group);
     for (std::size_t s : source) mesh.patch.push_back(id_of.at(scan.face_group[s]));

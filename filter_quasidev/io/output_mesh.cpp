@@ -101,6 +101,8 @@ PlyFile output_ply(const MeshFile& mesh) {
   face.name = "face";
   face.count = mesh.triangles.size();
   face.properties.push_back(list_property("vertex_indices", ScalarType::Int32, mesh.triangles));
+  if (!mesh.corner_uv.empty())
+    face.properties.push_back(list_property("texcoord", ScalarType::Float32, mesh.corner_uv));
   face.properties.insert(face.properties.end(), mesh.face_extra.begin(), mesh.face_extra.end());
   // Patch ids that no face property holds (OBJ groups) are written as `patch`, so they survive.
   if (!mesh.patch.empty() && !has_face_column(mesh, "patch") && !has_face_column(mesh, "quality"))

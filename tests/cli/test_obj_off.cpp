@@ -4,6 +4,7 @@
 
 #include "io/obj_reader.h"
 #include "io/off_reader.h"
+#include "io/output_mesh.h"
 #include "ply_test_util.h"
 
 using namespace qd::meshio;
@@ -33,11 +34,9 @@ TEST(ObjReader, CornersGroupsAndTexcoords) {
   EXPECT_EQ(m.triangles[1], (std::array<int, 3>{0, 2, 3}));
   EXPECT_EQ(m.triangles[2], (std::array<int, 3>{0, 1, 3}));
   EXPECT_EQ(m.patch, (std::vector<int>{0, 1, 0}));
-  ASSERT_EQ(m.face_extra.size(), 1u);
-  EXPECT_EQ(m.face_extra[0].name, "texcoord");
-  const std::vector<double> uv = m.face_extra[0].values.to_doubles();
-  EXPECT_EQ(std::vector<double>(uv.begin() + 12, uv.end()),
-            (std::vector<double>{0, 0, 1, 0, 0, 1}));
+  EXPECT_TRUE(m.face_extra.empty());  // the texcoords are the document's own member
+  ASSERT_EQ(m.corner_uv.size(), 3u);
+  EXPECT_EQ(m.corner_uv[2], (std::array<double, 6>{0, 0, 1, 0, 0, 1}));
   ASSERT_EQ(m.notes.size(), 1u);  // the ignored line statement
 }
 
@@ -101,6 +100,19 @@ TEST(OffReader, Errors) {
     const std::string message = error_of([&] { parse_off(c.first); });
     EXPECT_NE(message.find(c.second), std::string::npos) << "got '" << message << "'";
   }
+}
+
+TEST(ObjReader, CornerTexcoordsAreWrittenFirstAmongTheFaceProperties) {
+  PlyFile out = output_ply(parse_obj(kObj));
+  const PlyElement& face = output_element(out, "face");
+  ASSERT_EQ(face.properties.size(), 3u);
+  EXPECT_EQ(face.properties[0].name, "vertex_indices");
+  EXPECT_EQ(face.properties[1].name, "texcoord");
+  EXPECT_EQ(face.properties[2].name, "patch");
+  const PlyProperty& uv = face.properties[1];
+  EXPECT_EQ(uv.type(), ScalarType::Float32);
+  EXPECT_EQ(uv.list_size(2), 6u);
+  EXPECT_EQ(uv.values[uv.offsets[2] + 2], 1);  // triangle 2, corner 1: u of vt 2
 }
 
 }  // namespace
