@@ -151,6 +151,9 @@ MeshFile parse_obj(std::string_view bytes) {
   if (!scan.group_ids.empty()) {
     const std::map<int, int> id_of = patch_id_of_group(scan.face_group);
     for (std::size_t s : source) mesh.patch.push_back(id_of.at(scan.face_group[s]));
+    // Written as the face `patch` column, so the ids reach the next job (ply_mesh.h).
+    mesh.face_extra.push_back(scalar_property(
+        "patch", ScalarType::Int32, std::vector<double>(mesh.patch.begin(), mesh.patch.end())));
     for (const auto& [name, group] : scan.group_ids) {
       const auto id = id_of.find(group);
       if (id != id_of.end() && !name.empty()) mesh.patch_names[id->second] = name;

@@ -74,11 +74,6 @@ PlyProperty list_property(const std::string& name, ScalarType type,
   return p;
 }
 
-bool has_face_column(const MeshFile& mesh, const std::string& name) {
-  return std::any_of(mesh.face_extra.begin(), mesh.face_extra.end(),
-                     [&name](const PlyProperty& p) { return p.name == name; });
-}
-
 }  // namespace
 
 PlyFile output_ply(const MeshFile& mesh) {
@@ -104,10 +99,6 @@ PlyFile output_ply(const MeshFile& mesh) {
   if (!mesh.corner_uv.empty())
     face.properties.push_back(list_property("texcoord", ScalarType::Float32, mesh.corner_uv));
   face.properties.insert(face.properties.end(), mesh.face_extra.begin(), mesh.face_extra.end());
-  // Patch ids that no face property holds (OBJ groups) are written as `patch`, so they survive.
-  if (!mesh.patch.empty() && !has_face_column(mesh, "patch") && !has_face_column(mesh, "quality"))
-    face.properties.push_back(scalar_property(
-        "patch", ScalarType::Int32, std::vector<double>(mesh.patch.begin(), mesh.patch.end())));
   ply.elements.push_back(std::move(vertex));
   ply.elements.push_back(std::move(face));
   ply.elements.insert(ply.elements.end(), mesh.other_elements.begin(), mesh.other_elements.end());

@@ -1,8 +1,8 @@
 // The command's output document, built from the input's: output_ply gives the input's tables
 // (vertex: x y z with their types and every other property; face: vertex_indices (list uchar
-// int), `texcoord` (list uchar float) from the OBJ corner texture coordinates, every other
-// property, and `patch` (int) when patch ids come from no face property (OBJ groups); every other
-// element, comment and obj_info line), and the setters below put a job's columns in it:
+// int), `texcoord` (list uchar float) from the OBJ corner texture coordinates, then every other
+// property; every other element, comment and obj_info line), and the setters below put a job's
+// columns in it:
 //   set_positions: x y z as double (whatever the input's type, so no precision is lost), nx ny nz
 //     (if present) recomputed from them;
 //   set_quality: `quality` (double), replacing the element's own;

@@ -34,7 +34,10 @@ TEST(ObjReader, CornersGroupsAndTexcoords) {
   EXPECT_EQ(m.triangles[1], (std::array<int, 3>{0, 2, 3}));
   EXPECT_EQ(m.triangles[2], (std::array<int, 3>{0, 1, 3}));
   EXPECT_EQ(m.patch, (std::vector<int>{0, 1, 0}));
-  EXPECT_TRUE(m.face_extra.empty());  // the texcoords are the document's own member
+  ASSERT_EQ(m.face_extra.size(), 1u);  // group ids as a column; texcoords are corner_uv
+  EXPECT_EQ(m.face_extra[0].name, "patch");
+  EXPECT_EQ(m.face_extra[0].type(), ScalarType::Int32);
+  EXPECT_EQ(m.face_extra[0].values.to_doubles(), (std::vector<double>{0, 1, 0}));
   ASSERT_EQ(m.corner_uv.size(), 3u);
   EXPECT_EQ(m.corner_uv[2], (std::array<double, 6>{0, 0, 1, 0, 0, 1}));
   ASSERT_EQ(m.notes.size(), 1u);  // the ignored line statement
