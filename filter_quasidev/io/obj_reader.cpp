@@ -101,8 +101,8 @@ std::map<int, int> patch_id_of_group(const std::vector<int>& face_group) {
 
 }  // namespace
 
-MeshFile parse_obj(std::string_view bytes) {
-  MeshFile mesh;
+MeshDocument parse_obj(std::string_view bytes) {
+  MeshDocument mesh;
   ObjScan scan;
   scan.corners.name = "vertex_indices";
   scan.corners.is_list = true;

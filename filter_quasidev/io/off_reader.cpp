@@ -46,7 +46,7 @@ std::size_t parse_count(std::string_view token, int line, const char* what) {
 
 }  // namespace
 
-MeshFile parse_off(std::string_view bytes) {
+MeshDocument parse_off(std::string_view bytes) {
   const OffLines lines = significant_lines(bytes);
   if (lines.words.empty()) throw Error("OFF: the file is empty");
   std::vector<std::string_view> header = lines.words[0];
@@ -69,7 +69,7 @@ MeshFile parse_off(std::string_view bytes) {
     throw Error("OFF: the header declares " + std::to_string(nv) + " vertices and " +
                 std::to_string(nf) + " faces, but only " + std::to_string(available) +
                 " data lines follow (wrong counts or truncated file)");
-  MeshFile mesh;
+  MeshDocument mesh;
   mesh.positions.resize(nv);
   for (std::size_t i = 0; i < nv; ++i, ++next) {
     const std::vector<std::string_view>& w = lines.words[next];

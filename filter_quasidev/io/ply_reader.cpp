@@ -45,7 +45,7 @@ std::string rest_of_line(std::string_view line, std::string_view keyword) {
   return std::string(rest);
 }
 
-void parse_property_line(const std::vector<std::string_view>& w, int line_no, PlyFile& ply) {
+void parse_property_line(const std::vector<std::string_view>& w, int line_no, PlyTables& ply) {
   const std::string at = "header line " + std::to_string(line_no) + ": ";
   if (ply.elements.empty()) fail(at + "property before any element");
   PlyProperty p;
@@ -69,7 +69,7 @@ void parse_property_line(const std::vector<std::string_view>& w, int line_no, Pl
   element.properties.push_back(std::move(p));
 }
 
-void parse_element_line(const std::vector<std::string_view>& w, int line_no, PlyFile& ply) {
+void parse_element_line(const std::vector<std::string_view>& w, int line_no, PlyTables& ply) {
   const std::string at = "header line " + std::to_string(line_no) + ": ";
   if (w.size() != 3) fail(at + "expected 'element NAME COUNT'");
   std::uint64_t count = 0;
@@ -84,7 +84,7 @@ void parse_element_line(const std::vector<std::string_view>& w, int line_no, Ply
 }
 
 // Reads the header; returns the offset of the first data byte.
-std::size_t parse_header(std::string_view bytes, PlyFile& ply) {
+std::size_t parse_header(std::string_view bytes, PlyTables& ply) {
   std::size_t pos = 0;
   std::string_view line;
   if (!next_line(bytes, pos, line) || line != "ply")
@@ -293,7 +293,7 @@ void read_element(PlyElement& e, Source& source) {
 }
 
 template <typename Source>
-void read_body(PlyFile& ply, Source source) {
+void read_body(PlyTables& ply, Source source) {
   for (PlyElement& e : ply.elements) read_element(e, source);
   source.expect_end();
 }
@@ -307,8 +307,8 @@ int count_lines(std::string_view bytes, std::size_t end) {
 
 }  // namespace
 
-PlyFile parse_ply(std::string_view bytes) {
-  PlyFile ply;
+PlyTables parse_ply_tables(std::string_view bytes) {
+  PlyTables ply;
   const std::size_t data = parse_header(bytes, ply);
   if (ply.format == PlyFormat::Ascii)
     read_body(ply, AsciiSource(bytes, data, count_lines(bytes, data)));

@@ -23,7 +23,7 @@ const char* format_name(PlyFormat format) {
   return "?";
 }
 
-std::string header(const PlyFile& ply, PlyFormat format) {
+std::string header(const PlyTables& ply, PlyFormat format) {
   std::string h = "ply\nformat " + std::string(format_name(format)) + " 1.0\n";
   for (const std::string& c : ply.comments) h += "comment " + c + "\n";
   for (const std::string& c : ply.obj_info) h += "obj_info " + c + "\n";
@@ -117,7 +117,7 @@ void append_element(const PlyElement& e, PlyFormat format, std::string& out) {
 
 }  // namespace
 
-std::string serialize_ply(const PlyFile& ply, PlyFormat format) {
+std::string serialize_ply_tables(const PlyTables& ply, PlyFormat format) {
   std::string out = header(ply, format);
   for (const PlyElement& e : ply.elements) append_element(e, format, out);
   return out;

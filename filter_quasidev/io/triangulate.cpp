@@ -50,7 +50,8 @@ void append_triangle_value(const PlyProperty& column, std::size_t f, std::size_t
 
 std::vector<std::size_t> add_faces(const PlyProperty& indices, std::size_t face_count,
                                    std::size_t vertex_count,
-                                   const std::vector<PlyProperty>& face_columns, MeshFile& mesh) {
+                                   const std::vector<PlyProperty>& face_columns,
+                                   MeshDocument& mesh) {
   std::vector<PlyProperty> out(face_columns.size());
   for (std::size_t c = 0; c < face_columns.size(); ++c) {
     out[c].name = face_columns[c].name;

@@ -20,8 +20,8 @@ PlyProperty list(const std::string& name, ScalarType count_type, ScalarType type
   return p;
 }
 
-PlyFile sample_ply() {
-  PlyFile ply;
+PlyTables sample_ply() {
+  PlyTables ply;
   ply.comments = {"made by the test", "second comment"};
   ply.obj_info = {"some info"};
   PlyElement v;
@@ -50,6 +50,6 @@ PlyFile sample_ply() {
   return ply;
 }
 
-MeshFile mesh_of(const std::string& bytes) { return mesh_from_ply(parse_ply(bytes)); }
+MeshDocument mesh_of(const std::string& bytes) { return parse_ply(bytes); }
 
 }  // namespace qd::meshio::test

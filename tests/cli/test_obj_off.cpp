@@ -5,6 +5,7 @@
 #include "io/obj_reader.h"
 #include "io/off_reader.h"
 #include "io/output_mesh.h"
+#include "io/ply_reader.h"
 #include "ply_test_util.h"
 
 using namespace qd::meshio;
@@ -27,7 +28,7 @@ const char* kObj =
     "l 1 2\n";
 
 TEST(ObjReader, CornersGroupsAndTexcoords) {
-  const MeshFile m = parse_obj(kObj);
+  const MeshDocument m = parse_obj(kObj);
   ASSERT_EQ(m.positions.size(), 4u);
   EXPECT_EQ(m.positions[2], (std::array<double, 3>{1, 1, 0}));
   ASSERT_EQ(m.triangles.size(), 3u);
@@ -44,7 +45,7 @@ TEST(ObjReader, CornersGroupsAndTexcoords) {
 }
 
 TEST(ObjReader, NoGroupsNoPatchesMixedUvDroppedPolygonSplit) {
-  const MeshFile m =
+  const MeshDocument m =
       parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1 2 3 4\nf 1//1 3//1 4//1\n");
   EXPECT_TRUE(m.patch.empty());
   EXPECT_TRUE(m.face_extra.empty());
@@ -53,7 +54,8 @@ TEST(ObjReader, NoGroupsNoPatchesMixedUvDroppedPolygonSplit) {
 }
 
 TEST(ObjReader, FacesBeforeTheFirstGroupFormTheirOwnPatch) {
-  const MeshFile m = parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\ng a\nf 1 2 3\ng b\nf 3 2 1\n");
+  const MeshDocument m =
+      parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\ng a\nf 1 2 3\ng b\nf 3 2 1\n");
   EXPECT_EQ(m.patch, (std::vector<int>{0, 1, 2}));
 }
 
@@ -76,12 +78,12 @@ TEST(ObjReader, Errors) {
 }
 
 TEST(OffReader, ReadsCountsOnTheirOwnLineAndPolygons) {
-  const MeshFile m =
+  const MeshDocument m =
       parse_off("OFF\n# comment\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 255 0 0\n");
   EXPECT_EQ(m.positions.size(), 4u);
   EXPECT_EQ(m.triangles.size(), 2u);
   EXPECT_TRUE(m.patch.empty());
-  const MeshFile c =
+  const MeshDocument c =
       parse_off("COFF 3 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n0 1 0 1 1 1 1\n3 0 1 2\n");
   EXPECT_EQ(c.triangles.size(), 1u);
 }
@@ -106,8 +108,9 @@ TEST(OffReader, Errors) {
 }
 
 TEST(ObjReader, CornerTexcoordsAreWrittenFirstAmongTheFaceProperties) {
-  PlyFile out = output_ply(parse_obj(kObj));
-  const PlyElement& face = output_element(out, "face");
+  const PlyTables out =
+      parse_ply_tables(serialize_ply(parse_obj(kObj), PlyFormat::BinaryLittleEndian));
+  const PlyElement& face = out.elements[1];
   ASSERT_EQ(face.properties.size(), 3u);
   EXPECT_EQ(face.properties[0].name, "vertex_indices");
   EXPECT_EQ(face.properties[1].name, "texcoord");

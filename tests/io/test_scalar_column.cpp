@@ -25,7 +25,7 @@ TEST(ScalarColumn, RefusesAValueItsTypeCannotHold) {
 }
 
 TEST(ScalarColumn, TheReaderStoresEachPropertyInItsFileType) {
-  const PlyFile ply = parse_ply(
+  const PlyTables ply = parse_ply_tables(
       "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty uchar red\n"
       "property int id\nproperty double w\nend_header\n0.5 200 -3 0.25\n");
   const PlyElement& v = ply.elements[0];

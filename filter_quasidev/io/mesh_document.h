@@ -1,6 +1,7 @@
-// In-memory tables of a mesh file, shared by the readers, the writer and the command.
-// A PlyElement is a generic table (one column per property) so that every property and every
-// element the engine does not use is carried from the input to the output unchanged.
+// The document: a mesh file in memory, the one form the readers (PLY, OBJ, OFF) produce, the
+// command turns into the engine's problem, a job copies and changes (output_mesh.h) and the
+// writer writes. Its mesh part is what the engine uses; its PlyElement tables (one column per
+// property) carry every property and element the engine does not use from input to output.
 // Each column holds its values in the property's own PLY type (scalar_column.h).
 #pragma once
 
@@ -42,7 +43,7 @@ struct PlyElement {
 
 // A mesh as the command uses it: triangles, optional patch ids and constraints, and everything
 // else from the file kept for pass-through.
-struct MeshFile {
+struct MeshDocument {
   std::vector<std::array<double, 3>> positions;
   std::array<ScalarType, 3> position_types = {ScalarType::Float64, ScalarType::Float64,
                                               ScalarType::Float64};  // of x, y, z in the file

@@ -1,12 +1,14 @@
-// Each job's output document (io/result_ply.h): the result's columns on the input's tables, and
-// a result of the wrong size refused.
+// Each job's output document (io/result_document.h): the result's columns on a copy of the input
+// document, as written to PLY, and a result of the wrong size refused.
 #include <gtest/gtest.h>
 
 #include <functional>
 #include <string>
 
 #include "common/error.h"
-#include "io/result_ply.h"
+#include "io/output_mesh.h"
+#include "io/ply_reader.h"
+#include "io/result_document.h"
 #include "segment/patch_color.h"
 
 using namespace qd;
@@ -15,15 +17,20 @@ using namespace qd::meshio;
 namespace {
 
 // One triangle with float positions.
-MeshFile triangle() {
-  MeshFile m;
+MeshDocument triangle() {
+  MeshDocument m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   m.position_types = {ScalarType::Float32, ScalarType::Float32, ScalarType::Float32};
   m.triangles = {{0, 1, 2}};
   return m;
 }
 
-const PlyProperty& column(const PlyFile& ply, const char* element, const char* name) {
+// The tables of the document's PLY bytes.
+PlyTables tables(const MeshDocument& doc) {
+  return parse_ply_tables(serialize_ply(doc, PlyFormat::BinaryLittleEndian));
+}
+
+const PlyProperty& column(const PlyTables& ply, const char* element, const char* name) {
   const PlyElement& e = *ply.find(element);
   const int i = e.find(name);
   if (i < 0) throw Error(std::string("no column ") + name);
@@ -39,14 +46,14 @@ std::string error_of(const std::function<void()>& f) {
   return "";
 }
 
-TEST(ResultPly, ApproximationWritesPositionsAndTheChosenQuality) {
+TEST(ResultDocument, ApproximationWritesPositionsAndTheChosenQuality) {
   Result r;
   r.V = Positions::Zero(3, 3);
   r.V(2, 1) = 7;
   r.k_after = {-1, 0, 1};
   r.displacement = {0, 0.5, 2};
   params::ApproximateSettings s;
-  PlyFile ply = approximated_ply(triangle(), r, s);
+  PlyTables ply = tables(approximated_document(triangle(), r, s));
   EXPECT_EQ(column(ply, "vertex", "y").type(), ScalarType::Float64);
   EXPECT_EQ(column(ply, "vertex", "y").values[2], 7);
   EXPECT_EQ(column(ply, "vertex", "quality").values.to_doubles(), r.k_after);
@@ -54,36 +61,36 @@ TEST(ResultPly, ApproximationWritesPositionsAndTheChosenQuality) {
   EXPECT_EQ(column(ply, "vertex", "blue").values[2], 255);  // highest K: blue
   s.output_quality = params::QualityKind::Displacement;
   s.colorize = false;
-  ply = approximated_ply(triangle(), r, s);
+  ply = tables(approximated_document(triangle(), r, s));
   EXPECT_EQ(column(ply, "vertex", "quality").values.to_doubles(), r.displacement);
   EXPECT_LT(ply.find("vertex")->find("red"), 0);
   r.displacement.pop_back();
-  EXPECT_NE(error_of([&] { approximated_ply(triangle(), r, s); }).find("internal error"),
+  EXPECT_NE(error_of([&] { approximated_document(triangle(), r, s); }).find("internal error"),
             std::string::npos);
 }
 
-TEST(ResultPly, SegmentationWritesPatchIdsAndColoursPerFace) {
+TEST(ResultDocument, SegmentationWritesPatchIdsAndColoursPerFace) {
   SegmentResult r;
   r.patch = {3};
-  const PlyFile ply = segmented_ply(triangle(), r);
+  const PlyTables ply = tables(segmented_document(triangle(), r));
   EXPECT_EQ(column(ply, "vertex", "x").type(), ScalarType::Float32);  // vertices untouched
   EXPECT_EQ(column(ply, "face", "quality").values.to_doubles(), (std::vector<double>{3}));
   EXPECT_EQ(column(ply, "face", "green").values[0], patch_color(3)[1]);
   r.patch = {};
-  EXPECT_THROW(segmented_ply(triangle(), r), Error);
+  EXPECT_THROW(segmented_document(triangle(), r), Error);
 }
 
-TEST(ResultPly, FlatteningWritesTexcoordsAndStretchPerFace) {
+TEST(ResultDocument, FlatteningWritesTexcoordsAndStretchPerFace) {
   FlattenResult r;
   r.uv = WedgeUV::Zero(1, 6);
   r.uv(0, 3) = 2.5;
   r.stretch = {0.01};
-  const PlyFile ply = flattened_ply(triangle(), r);
+  const PlyTables ply = tables(flattened_document(triangle(), r));
   EXPECT_EQ(column(ply, "face", "texcoord").values[3], 2.5);
   EXPECT_EQ(column(ply, "face", "quality").values.to_doubles(), r.stretch);
   EXPECT_EQ(column(ply, "face", "alpha").values.to_doubles(), (std::vector<double>{255}));
   r.stretch = {};
-  EXPECT_THROW(flattened_ply(triangle(), r), Error);
+  EXPECT_THROW(flattened_document(triangle(), r), Error);
 }
 
 }  // namespace

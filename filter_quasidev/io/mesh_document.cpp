@@ -1,6 +1,6 @@
-#include "io/mesh_file.h"
+#include "io/mesh_document.h"
 
-#include "io/ply_file.h"
+#include "io/ply_tables.h"
 
 namespace qd::meshio {
 
@@ -18,7 +18,7 @@ int PlyElement::find(const std::string& property_name) const {
   return -1;
 }
 
-const PlyElement* PlyFile::find(const std::string& element_name) const {
+const PlyElement* PlyTables::find(const std::string& element_name) const {
   for (const PlyElement& e : elements)
     if (e.name == element_name) return &e;
   return nullptr;
