@@ -23,8 +23,7 @@
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/output_mesh.h"
-#include "io/ply_writer.h"
-#include "io/result_ply.h"
+#include "io/result_document.h"
 #include "mesh_geometry.h"
 #include "mesh_problem.h"
 #include "options.h"
@@ -89,10 +88,10 @@ Args parse(int argc, char** argv) {
 }
 
 // The mesh as the binary PLY the command writes.
-std::string serialize(const qd::meshio::MeshFile& mesh) {
-  qd::meshio::PlyFile ply = qd::meshio::output_ply(mesh);
-  qd::meshio::set_positions(ply, mesh, qd::cli::positions_of(mesh));
-  return qd::meshio::serialize_ply(ply, qd::meshio::PlyFormat::BinaryLittleEndian);
+std::string serialize(const qd::meshio::MeshDocument& mesh) {
+  qd::meshio::MeshDocument doc = mesh;
+  qd::meshio::set_positions(doc, qd::cli::positions_of(mesh));
+  return qd::meshio::serialize_ply(doc, qd::meshio::PlyFormat::BinaryLittleEndian);
 }
 
 void run(const Args& a) {
@@ -102,7 +101,7 @@ void run(const Args& a) {
                                               : scratch + "_in.ply";
   const std::string output = scratch + "_out.ply";
   if (a.mesh.empty()) {
-    qd::meshio::MeshFile generated =
+    qd::meshio::MeshDocument generated =
         a.tube > 0 ? qd::bench::noisy_tube(a.tube) : qd::bench::curved_sheet(a.grid, a.patches);
     if (!generated.patch.empty())  // patch ids travel as face quality, as MeshLab writes them
       generated.face_extra.push_back(qd::meshio::scalar_property(
@@ -117,7 +116,7 @@ void run(const Args& a) {
 
   std::vector<double> read_ms, write_ms, wall_ms, setup, step1, assembly, factor, solve, metrics;
   qd::Result result;
-  qd::meshio::MeshFile mesh;
+  qd::meshio::MeshDocument mesh;
   long progress_calls = 0;  // per run: the callback must stay rare (issue 5, bullet 4)
   for (int r = 0; r < a.runs; ++r) {
     auto t0 = Clock::now();
@@ -139,7 +138,7 @@ void run(const Args& a) {
     t0 = Clock::now();
     qd::meshio::PendingFile file(
         output,
-        qd::meshio::serialize_ply(qd::meshio::approximated_ply(mesh, result, options.settings),
+        qd::meshio::serialize_ply(qd::meshio::approximated_document(mesh, result, options.settings),
                                   qd::meshio::PlyFormat::BinaryLittleEndian));
     file.commit();
     write_ms.push_back(ms_since(t0));

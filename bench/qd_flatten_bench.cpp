@@ -65,7 +65,7 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
-qd::FlattenProblem problem_of(const qd::meshio::MeshFile& mesh) {
+qd::FlattenProblem problem_of(const qd::meshio::MeshDocument& mesh) {
   qd::FlattenProblem p;
   qd::cli::set_geometry(mesh, p);
   return p;
@@ -90,7 +90,7 @@ double max_edge_error(const qd::FlattenProblem& p, const qd::WedgeUV& uv,
 }
 
 // The file's per-corner texcoord, or an empty matrix.
-qd::WedgeUV file_texcoords(const qd::meshio::MeshFile& mesh) {
+qd::WedgeUV file_texcoords(const qd::meshio::MeshDocument& mesh) {
   for (const qd::meshio::PlyProperty& prop : mesh.face_extra) {
     if (prop.name != "texcoord" || !prop.is_list) continue;
     qd::WedgeUV uv(static_cast<Eigen::Index>(mesh.triangles.size()), 6);
@@ -109,7 +109,7 @@ qd::WedgeUV file_texcoords(const qd::meshio::MeshFile& mesh) {
 int main(int argc, char** argv) {
   try {
     const Args a = parse(argc, argv);
-    const qd::meshio::MeshFile mesh =
+    const qd::meshio::MeshDocument mesh =
         a.grid > 0 ? qd::bench::curved_sheet(a.grid, a.patches) : qd::meshio::read_mesh(a.mesh);
     qd::FlattenProblem problem = problem_of(mesh);
     problem.params = a.params;

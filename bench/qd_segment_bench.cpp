@@ -86,12 +86,13 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
-qd::meshio::MeshFile load(const std::string& name) {
+qd::meshio::MeshDocument load(const std::string& name) {
   if (name.rfind("torus:", 0) == 0) return qd::bench::torus(std::stol(name.substr(6)));
   return qd::meshio::read_mesh(name);
 }
 
-qd::SegmentProblem segment_problem(const qd::meshio::MeshFile& mesh, const qd::SegmentParams& q) {
+qd::SegmentProblem segment_problem(const qd::meshio::MeshDocument& mesh,
+                                   const qd::SegmentParams& q) {
   qd::SegmentProblem p;
   qd::cli::set_geometry(mesh, p);
   p.params = q;
@@ -111,9 +112,9 @@ double median(std::vector<double> v) {
 
 // The approximation with the command's defaults on the segmented mesh: G_ABD reduction in
 // percent and the largest vertex move in average edge lengths.
-std::string approximate(const qd::meshio::MeshFile& mesh, const std::vector<int>& patch,
+std::string approximate(const qd::meshio::MeshDocument& mesh, const std::vector<int>& patch,
                         const std::vector<std::string>& quasidev) {
-  qd::meshio::MeshFile segmented = mesh;
+  qd::meshio::MeshDocument segmented = mesh;
   segmented.patch = patch;
   const qd::cli::ApproximateOptions options = qd::cli::parse_command_line(quasidev).approximate;
   const qd::Result r = qd::approximate(qd::cli::make_problem(segmented, options));
@@ -124,7 +125,7 @@ std::string approximate(const qd::meshio::MeshFile& mesh, const std::vector<int>
 }
 
 void run(const Args& a, const std::string& name) {
-  const qd::meshio::MeshFile mesh = load(name);
+  const qd::meshio::MeshDocument mesh = load(name);
   qd::SegmentProblem problem = segment_problem(mesh, a.params);
   std::string times;
   qd::SegmentResult first;

@@ -4,7 +4,7 @@
 
 namespace qd::cli {
 
-FlattenProblem make_flatten_problem(const meshio::MeshFile& mesh, const FlattenOptions& o) {
+FlattenProblem make_flatten_problem(const meshio::MeshDocument& mesh, const FlattenOptions& o) {
   FlattenProblem problem;
   set_geometry(mesh, problem);
   problem.patch_names = mesh.patch_names;

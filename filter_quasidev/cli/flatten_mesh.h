@@ -1,14 +1,15 @@
 // The bridge between the command's mesh tables and the flattening engine.
-// make_flatten_problem: MeshFile + FlattenOptions -> qd::FlattenProblem (positions, triangles,
+// make_flatten_problem: MeshDocument + FlattenOptions -> qd::FlattenProblem (positions, triangles,
 //   patch ids, panel names, parameters as given: the flattening's lengths are in model units).
 #pragma once
 
 #include "flatten/flatten_problem.h"
-#include "io/mesh_file.h"
+#include "io/mesh_document.h"
 #include "options.h"
 
 namespace qd::cli {
 
-FlattenProblem make_flatten_problem(const meshio::MeshFile& mesh, const FlattenOptions& options);
+FlattenProblem make_flatten_problem(const meshio::MeshDocument& mesh,
+                                    const FlattenOptions& options);
 
 }  // namespace qd::cli

@@ -29,9 +29,9 @@
 #include "flatten_report_json.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
+#include "io/output_mesh.h"
 #include "io/pattern_files.h"
-#include "io/ply_writer.h"
-#include "io/result_ply.h"
+#include "io/result_document.h"
 #include "marker_dxf.h"
 #include "marker_svg.h"
 #include "mesh_problem.h"
@@ -114,8 +114,8 @@ void write_files(const std::vector<std::pair<std::string, std::string>>& files) 
   for (const auto& file : pending) file->commit();
 }
 
-std::string ply_bytes(const qd::meshio::PlyFile& ply) {
-  return qd::meshio::serialize_ply(ply, qd::meshio::PlyFormat::BinaryLittleEndian);
+std::string ply_bytes(const qd::meshio::MeshDocument& doc) {
+  return qd::meshio::serialize_ply(doc, qd::meshio::PlyFormat::BinaryLittleEndian);
 }
 
 // True when a log line is one of the warnings (the engines log each one, bare or after
@@ -149,7 +149,7 @@ int count_constrained(const std::vector<char>& constrained) {
 template <typename Options, typename MakeProblem, typename Solve>
 auto read_and_solve(const Options& o, MakeProblem make_problem, Solve solve) {
   check_paths(o, qd::cli::output_files(o));
-  qd::meshio::MeshFile mesh = qd::meshio::read_mesh(o.input);
+  qd::meshio::MeshDocument mesh = qd::meshio::read_mesh(o.input);
   auto problem = make_problem(mesh);
   start_progress(o);
   auto result = solve(problem, show_progress);
@@ -167,12 +167,12 @@ std::string option_setting(const std::string& name, const std::string& value) {
 
 void approximate(const qd::cli::ApproximateOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
-      o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_problem(m, o); },
+      o, [&o](const qd::meshio::MeshDocument& m) { return qd::cli::make_problem(m, o); },
       [](const qd::Problem& p, const qd::Progress& progress) {
         return qd::approximate(p, progress, option_setting);
       });
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(qd::meshio::approximated_ply(mesh, result, o.settings))}};
+      {o.output, ply_bytes(qd::meshio::approximated_document(mesh, result, o.settings))}};
   if (!o.report.empty()) {
     const qd::cli::ReportContext context{o,
                                          static_cast<int>(mesh.positions.size()),
@@ -188,12 +188,12 @@ void approximate(const qd::cli::ApproximateOptions& o) {
 
 void segment(const qd::cli::SegmentOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
-      o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_segment_problem(m, o); },
+      o, [&o](const qd::meshio::MeshDocument& m) { return qd::cli::make_segment_problem(m, o); },
       [](const qd::SegmentProblem& p, const qd::Progress& progress) {
         return qd::segment(p, progress);
       });
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(qd::meshio::segmented_ply(mesh, result))}};
+      {o.output, ply_bytes(qd::meshio::segmented_document(mesh, result))}};
   if (!o.report.empty()) {
     const qd::cli::SegmentReportContext context{o,
                                                 static_cast<int>(mesh.positions.size()),
@@ -229,14 +229,14 @@ qd::MarkerChoice marker_of(const qd::params::FlattenSettings& s, const qd::Patte
 
 void flatten(const qd::cli::FlattenOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
-      o, [&o](const qd::meshio::MeshFile& m) { return qd::cli::make_flatten_problem(m, o); },
+      o, [&o](const qd::meshio::MeshDocument& m) { return qd::cli::make_flatten_problem(m, o); },
       [](const qd::FlattenProblem& p, const qd::Progress& progress) {
         return qd::flatten(p, progress);
       });
   const qd::params::FlattenSettings& s = o.settings;
   std::vector<std::string> log = result.log;
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(qd::meshio::flattened_ply(mesh, result))}};
+      {o.output, ply_bytes(qd::meshio::flattened_document(mesh, result))}};
   for (auto& file : qd::pattern_files(s, result.pattern)) files.push_back(std::move(file));
   if (!s.pdf_file.empty()) {
     auto pdf = qd::pdf::printable_pdf(result.pattern, s.paper, s.unit);

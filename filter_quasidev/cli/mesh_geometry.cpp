@@ -10,7 +10,8 @@ namespace {
 // rows (one std::array per row) as an Eigen matrix with as many columns.
 template <typename Matrix, typename Row>
 Matrix matrix_of(const std::vector<Row>& rows) {
-  Matrix m(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(std::tuple_size<Row>::value));
+  Matrix m(static_cast<Eigen::Index>(rows.size()),
+           static_cast<Eigen::Index>(std::tuple_size<Row>::value));
   for (std::size_t i = 0; i < rows.size(); ++i)
     for (std::size_t k = 0; k < rows[i].size(); ++k)
       m(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = rows[i][k];
@@ -19,8 +20,12 @@ Matrix matrix_of(const std::vector<Row>& rows) {
 
 }  // namespace
 
-Positions positions_of(const meshio::MeshFile& mesh) { return matrix_of<Positions>(mesh.positions); }
+Positions positions_of(const meshio::MeshDocument& mesh) {
+  return matrix_of<Positions>(mesh.positions);
+}
 
-Triangles triangles_of(const meshio::MeshFile& mesh) { return matrix_of<Triangles>(mesh.triangles); }
+Triangles triangles_of(const meshio::MeshDocument& mesh) {
+  return matrix_of<Triangles>(mesh.triangles);
+}
 
 }  // namespace qd::cli

@@ -8,7 +8,7 @@
 
 namespace qd::cli {
 
-Problem make_problem(const meshio::MeshFile& mesh, const ApproximateOptions& o) {
+Problem make_problem(const meshio::MeshDocument& mesh, const ApproximateOptions& o) {
   Problem problem;
   set_geometry(mesh, problem);
   if (!o.settings.use_patches) problem.patch.clear();

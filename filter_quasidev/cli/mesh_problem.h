@@ -1,5 +1,5 @@
 // The bridge between the command's mesh tables and the approximation engine.
-// make_problem: MeshFile + ApproximateOptions -> qd::Problem (positions, triangles, patch ids
+// make_problem: MeshDocument + ApproximateOptions -> qd::Problem (positions, triangles, patch ids
 //   unless --no-use-patches, constrained vertices from the file's selection and the
 //   --constraints-file, parameters with the tolerances in model units: params::engine_params).
 // Throws qd::Error (degenerate mesh, bad constraint file) or UsageError
@@ -7,11 +7,11 @@
 #pragma once
 
 #include "approximate/problem.h"
-#include "io/mesh_file.h"
+#include "io/mesh_document.h"
 #include "options.h"
 
 namespace qd::cli {
 
-Problem make_problem(const meshio::MeshFile& mesh, const ApproximateOptions& options);
+Problem make_problem(const meshio::MeshDocument& mesh, const ApproximateOptions& options);
 
 }  // namespace qd::cli

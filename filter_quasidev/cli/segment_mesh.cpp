@@ -8,7 +8,7 @@ namespace qd::cli {
 namespace {
 
 // Per triangle, 1 where the face `flags` have the selection bit; empty when none is selected.
-std::vector<char> selected_faces(const meshio::MeshFile& mesh) {
+std::vector<char> selected_faces(const meshio::MeshDocument& mesh) {
   for (const meshio::PlyProperty& p : mesh.face_extra) {
     if (p.name != "flags" || p.is_list) continue;
     std::vector<char> selected(mesh.triangles.size(), 0);
@@ -23,7 +23,7 @@ std::vector<char> selected_faces(const meshio::MeshFile& mesh) {
 
 }  // namespace
 
-SegmentProblem make_segment_problem(const meshio::MeshFile& mesh, const SegmentOptions& o) {
+SegmentProblem make_segment_problem(const meshio::MeshDocument& mesh, const SegmentOptions& o) {
   SegmentProblem problem;
   set_geometry(mesh, problem);
   if (!o.settings.keep_patches) problem.patch.clear();

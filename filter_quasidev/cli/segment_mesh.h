@@ -1,15 +1,16 @@
 // The bridge between the command's mesh tables and the segmentation.
-// make_segment_problem: MeshFile + SegmentOptions -> qd::SegmentProblem (positions, triangles,
+// make_segment_problem: MeshDocument + SegmentOptions -> qd::SegmentProblem (positions, triangles,
 //   the file's patch ids when --keep-patches, selected faces from the PLY face `flags`
 //   selection bit, parameters).
 #pragma once
 
-#include "io/mesh_file.h"
+#include "io/mesh_document.h"
 #include "options.h"
 #include "segment/segment_problem.h"
 
 namespace qd::cli {
 
-SegmentProblem make_segment_problem(const meshio::MeshFile& mesh, const SegmentOptions& options);
+SegmentProblem make_segment_problem(const meshio::MeshDocument& mesh,
+                                    const SegmentOptions& options);
 
 }  // namespace qd::cli

@@ -12,7 +12,6 @@
 #include "io/obj_reader.h"
 #include "io/off_reader.h"
 #include "io/ply_mesh.h"
-#include "io/ply_reader.h"
 
 namespace qd::meshio {
 
@@ -34,14 +33,14 @@ bool starts_with_word(const std::string& bytes, const std::string& word) {
   return bytes.compare(i, word.size(), word) == 0;
 }
 
-MeshFile parse_by_content(const std::string& bytes, const std::string& path) {
-  if (bytes.compare(0, 3, "ply") == 0) return mesh_from_ply(parse_ply(bytes));
+MeshDocument parse_by_content(const std::string& bytes, const std::string& path) {
+  if (bytes.compare(0, 3, "ply") == 0) return parse_ply(bytes);
   const std::string ext = lower_extension(path);
   if (ext == "off" || starts_with_word(bytes, "OFF") || starts_with_word(bytes, "COFF") ||
       starts_with_word(bytes, "NOFF"))
     return parse_off(bytes);
   if (ext == "obj") return parse_obj(bytes);
-  if (ext == "ply") return mesh_from_ply(parse_ply(bytes));  // gives the PLY magic message
+  if (ext == "ply") return parse_ply(bytes);  // gives the PLY magic message
   throw Error("unknown mesh format (expected a .ply, .obj or .off file)");
 }
 
@@ -59,10 +58,10 @@ std::string read_file_bytes(const std::string& path) {
   return content.str();
 }
 
-MeshFile read_mesh(const std::string& path) {
+MeshDocument read_mesh(const std::string& path) {
   const std::string bytes = read_file_bytes(path);
   if (bytes.empty()) throw Error("'" + path + "' is empty");
-  MeshFile mesh;
+  MeshDocument mesh;
   try {
     mesh = parse_by_content(bytes, path);
   } catch (const Error& e) {

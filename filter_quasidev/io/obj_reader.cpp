@@ -78,7 +78,8 @@ void parse_face(const std::vector<std::string_view>& w, int line, std::size_t ve
   }
   scan.corners.offsets.push_back(scan.corners.values.size());
   scan.all_faces_have_uv = scan.all_faces_have_uv && face_has_uv;
-  if (face_has_uv) scan.corner_uv.values.insert(scan.corner_uv.values.end(), uv.begin(), uv.end());
+  if (face_has_uv)
+    for (double t : uv) scan.corner_uv.values.push_back(t);
   scan.corner_uv.offsets.push_back(scan.corner_uv.values.size());
   scan.face_group.push_back(scan.current_group);
 }
@@ -100,14 +101,14 @@ std::map<int, int> patch_id_of_group(const std::vector<int>& face_group) {
 
 }  // namespace
 
-MeshFile parse_obj(std::string_view bytes) {
-  MeshFile mesh;
+MeshDocument parse_obj(std::string_view bytes) {
+  MeshDocument mesh;
   ObjScan scan;
   scan.corners.name = "vertex_indices";
   scan.corners.is_list = true;
-  scan.corners.type = ScalarType::Int32;
+  scan.corners.values = ScalarColumn(ScalarType::Int32);
   scan.corners.offsets.assign(1, 0);
-  scan.corner_uv.name = "texcoord";
+  scan.corner_uv.values = ScalarColumn(ScalarType::Float64);
   scan.corner_uv.is_list = true;
   scan.corner_uv.offsets.assign(1, 0);
   std::size_t pos = 0;
@@ -140,9 +141,19 @@ MeshFile parse_obj(std::string_view bytes) {
     mesh.notes.push_back("texture coordinates dropped: not every face has them");
   const std::vector<std::size_t> source =
       add_faces(scan.corners, faces, mesh.positions.size(), columns, mesh);
+  if (!columns.empty()) {  // add_faces gave each triangle its three corners' u v
+    const ScalarColumn& uv = mesh.face_extra[0].values;
+    mesh.corner_uv.resize(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.corner_uv.size(); ++t)
+      for (std::size_t k = 0; k < 6; ++k) mesh.corner_uv[t][k] = uv[6 * t + k];
+    mesh.face_extra.clear();
+  }
   if (!scan.group_ids.empty()) {
     const std::map<int, int> id_of = patch_id_of_group(scan.face_group);
     for (std::size_t s : source) mesh.patch.push_back(id_of.at(scan.face_group[s]));
+    // Written as the face `patch` column, so the ids reach the next job (ply_mesh.h).
+    mesh.face_extra.push_back(scalar_property(
+        "patch", ScalarType::Int32, std::vector<double>(mesh.patch.begin(), mesh.patch.end())));
     for (const auto& [name, group] : scan.group_ids) {
       const auto id = id_of.find(group);
       if (id != id_of.end() && !name.empty()) mesh.patch_names[id->second] = name;

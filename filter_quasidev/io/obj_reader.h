@@ -1,5 +1,5 @@
 // Wavefront OBJ reader for the command.
-// Input: the file's bytes. Output: a MeshFile with positions (`v`, extra values such as colours
+// Input: the file's bytes. Output: a MeshDocument with positions (`v`, extra values such as colours
 // ignored), triangles (`f` with v, v/vt, v//vn or v/vt/vn corners, negative = relative indices;
 // polygons fan-triangulated), per-corner `texcoord` (2 floats per corner, from `vt`) when every
 // face has texture coordinates, and patch ids from `g` / `o` groups numbered 0, 1, ... in order
@@ -11,10 +11,10 @@
 
 #include <string_view>
 
-#include "io/mesh_file.h"
+#include "io/mesh_document.h"
 
 namespace qd::meshio {
 
-MeshFile parse_obj(std::string_view bytes);
+MeshDocument parse_obj(std::string_view bytes);
 
 }  // namespace qd::meshio

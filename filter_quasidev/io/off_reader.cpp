@@ -46,7 +46,7 @@ std::size_t parse_count(std::string_view token, int line, const char* what) {
 
 }  // namespace
 
-MeshFile parse_off(std::string_view bytes) {
+MeshDocument parse_off(std::string_view bytes) {
   const OffLines lines = significant_lines(bytes);
   if (lines.words.empty()) throw Error("OFF: the file is empty");
   std::vector<std::string_view> header = lines.words[0];
@@ -69,7 +69,7 @@ MeshFile parse_off(std::string_view bytes) {
     throw Error("OFF: the header declares " + std::to_string(nv) + " vertices and " +
                 std::to_string(nf) + " faces, but only " + std::to_string(available) +
                 " data lines follow (wrong counts or truncated file)");
-  MeshFile mesh;
+  MeshDocument mesh;
   mesh.positions.resize(nv);
   for (std::size_t i = 0; i < nv; ++i, ++next) {
     const std::vector<std::string_view>& w = lines.words[next];
@@ -79,7 +79,8 @@ MeshFile parse_off(std::string_view bytes) {
         fail(lines.number[next],
              "vertex coordinate '" + std::string(w[k]) + "' is not a finite number");
   }
-  PlyProperty corners;
+  PlyProperty corners;  // double holds any index read, so add_faces can name one out of range
+  corners.values = ScalarColumn(ScalarType::Float64);
   corners.is_list = true;
   corners.offsets.assign(1, 0);
   for (std::size_t f = 0; f < nf; ++f, ++next) {

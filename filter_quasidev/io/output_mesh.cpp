@@ -5,18 +5,16 @@
 #include <string>
 
 #include "common/error.h"
+#include "io/ply_writer.h"
 
 namespace qd::meshio {
 
 namespace {
 
-// Area-weighted vertex normals of the positions in columns x, y, z (unit length; zero where
-// undefined).
-std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh, const PlyElement& vertex) {
-  const std::vector<double>* xyz[3] = {&vertex.properties[0].values, &vertex.properties[1].values,
-                                       &vertex.properties[2].values};
-  const auto at = [&xyz](int v, std::size_t k) { return (*xyz[k])[static_cast<std::size_t>(v)]; };
-  std::vector<std::array<double, 3>> n(vertex.count, {0, 0, 0});
+// Area-weighted vertex normals of the positions V (unit length; zero where undefined).
+std::vector<std::array<double, 3>> vertex_normals(const MeshDocument& mesh, const Positions& V) {
+  const auto at = [&V](int v, Eigen::Index k) { return V(v, k); };
+  std::vector<std::array<double, 3>> n(static_cast<std::size_t>(V.rows()), {0, 0, 0});
   for (const std::array<int, 3>& t : mesh.triangles) {
     const double u[3] = {at(t[1], 0) - at(t[0], 0), at(t[1], 1) - at(t[0], 1),
                          at(t[1], 2) - at(t[0], 2)};
@@ -36,27 +34,37 @@ std::vector<std::array<double, 3>> vertex_normals(const MeshFile& mesh, const Pl
 }
 
 // Columns of the scalar properties nx, ny, nz, or -1 when one is missing.
-std::array<int, 3> normal_columns(const PlyElement& vertex) {
-  std::array<int, 3> columns = {-1, -1, -1};
-  for (std::size_t i = 0; i < vertex.properties.size(); ++i) {
-    const PlyProperty& p = vertex.properties[i];
+std::array<int, 3> normal_columns(const std::vector<PlyProperty>& columns) {
+  std::array<int, 3> found = {-1, -1, -1};
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    const PlyProperty& p = columns[i];
     const int axis = p.name == "nx" ? 0 : p.name == "ny" ? 1 : p.name == "nz" ? 2 : -1;
-    if (axis >= 0 && !p.is_list) columns[static_cast<std::size_t>(axis)] = static_cast<int>(i);
+    if (axis >= 0 && !p.is_list) found[static_cast<std::size_t>(axis)] = static_cast<int>(i);
   }
-  return columns;
+  return found;
 }
 
-// Removes the element's properties whose name `matches`.
+// Removes the columns whose name `matches`.
 template <typename Match>
-void remove_columns(PlyElement& e, Match matches) {
-  e.properties.erase(std::remove_if(e.properties.begin(), e.properties.end(),
-                                    [&matches](const PlyProperty& p) { return matches(p.name); }),
-                     e.properties.end());
+void remove_columns(std::vector<PlyProperty>& columns, Match matches) {
+  columns.erase(std::remove_if(columns.begin(), columns.end(),
+                               [&matches](const PlyProperty& p) { return matches(p.name); }),
+                columns.end());
 }
 
-void check_size(const PlyElement& e, std::size_t size) {
-  if (size != e.count)
-    throw Error("internal error: output fields do not have one value per " + e.name);
+void check_size(const char* element, std::size_t rows, std::size_t size) {
+  if (size != rows)
+    throw Error(std::string("internal error: output fields do not have one value per ") + element);
+}
+
+// The element's columns and its row count, checked against `size`.
+std::vector<PlyProperty>& columns_of(MeshDocument& doc, Element element, std::size_t size) {
+  if (element == Element::Vertex) {
+    check_size("vertex", doc.positions.size(), size);
+    return doc.vertex_extra;
+  }
+  check_size("face", doc.triangles.size(), size);
+  return doc.face_extra;
 }
 
 // A list property (uchar counts) of `type` with one list per row.
@@ -67,106 +75,99 @@ PlyProperty list_property(const std::string& name, ScalarType type,
   p.name = name;
   p.is_list = true;
   p.count_type = ScalarType::UInt8;
-  p.type = type;
+  p.values = ScalarColumn(type);
   p.offsets.reserve(rows.size() + 1);
   p.offsets.push_back(0);
   for (const std::array<T, N>& row : rows) {
-    p.values.insert(p.values.end(), row.begin(), row.end());
+    for (T v : row) p.values.push_back(static_cast<double>(v));
     p.offsets.push_back(p.values.size());
   }
   return p;
 }
 
-bool has_face_column(const MeshFile& mesh, const std::string& name) {
-  return std::any_of(mesh.face_extra.begin(), mesh.face_extra.end(),
-                     [&name](const PlyProperty& p) { return p.name == name; });
+PlyTables tables_of(const MeshDocument& doc) {
+  PlyTables ply;
+  ply.comments = doc.comments;
+  ply.obj_info = doc.obj_info;
+  PlyElement vertex;
+  vertex.name = "vertex";
+  vertex.count = doc.positions.size();
+  for (std::size_t k = 0; k < 3; ++k) {
+    std::vector<double> c(vertex.count);
+    for (std::size_t i = 0; i < vertex.count; ++i) c[i] = doc.positions[i][k];
+    vertex.properties.push_back(
+        scalar_property(std::string(1, "xyz"[k]), doc.position_types[k], c));
+  }
+  vertex.properties.insert(vertex.properties.end(), doc.vertex_extra.begin(),
+                           doc.vertex_extra.end());
+  PlyElement face;
+  face.name = "face";
+  face.count = doc.triangles.size();
+  face.properties.push_back(list_property("vertex_indices", ScalarType::Int32, doc.triangles));
+  if (!doc.corner_uv.empty())
+    face.properties.push_back(list_property("texcoord", ScalarType::Float32, doc.corner_uv));
+  face.properties.insert(face.properties.end(), doc.face_extra.begin(), doc.face_extra.end());
+  ply.elements.push_back(std::move(vertex));
+  ply.elements.push_back(std::move(face));
+  ply.elements.insert(ply.elements.end(), doc.other_elements.begin(), doc.other_elements.end());
+  return ply;
 }
 
 }  // namespace
 
-PlyFile output_ply(const MeshFile& mesh) {
-  PlyFile ply;
-  ply.format = PlyFormat::BinaryLittleEndian;
-  ply.comments = mesh.comments;
-  ply.obj_info = mesh.obj_info;
-  PlyElement vertex;
-  vertex.name = "vertex";
-  vertex.count = mesh.positions.size();
-  for (std::size_t k = 0; k < 3; ++k) {
-    std::vector<double> c(vertex.count);
-    for (std::size_t i = 0; i < vertex.count; ++i) c[i] = mesh.positions[i][k];
-    vertex.properties.push_back(
-        scalar_property(std::string(1, "xyz"[k]), mesh.position_types[k], c));
-  }
-  vertex.properties.insert(vertex.properties.end(), mesh.vertex_extra.begin(),
-                           mesh.vertex_extra.end());
-  PlyElement face;
-  face.name = "face";
-  face.count = mesh.triangles.size();
-  face.properties.push_back(list_property("vertex_indices", ScalarType::Int32, mesh.triangles));
-  face.properties.insert(face.properties.end(), mesh.face_extra.begin(), mesh.face_extra.end());
-  // Patch ids that no face property holds (OBJ groups) are written as `patch`, so they survive.
-  if (!mesh.patch.empty() && !has_face_column(mesh, "patch") && !has_face_column(mesh, "quality"))
-    face.properties.push_back(scalar_property(
-        "patch", ScalarType::Int32, std::vector<double>(mesh.patch.begin(), mesh.patch.end())));
-  ply.elements.push_back(std::move(vertex));
-  ply.elements.push_back(std::move(face));
-  ply.elements.insert(ply.elements.end(), mesh.other_elements.begin(), mesh.other_elements.end());
-  return ply;
-}
-
-PlyElement& output_element(PlyFile& ply, const char* name) {
-  for (PlyElement& e : ply.elements)
-    if (e.name == name) return e;
-  throw Error(std::string("internal error: the output has no element ") + name);
-}
-
-void set_positions(PlyFile& ply, const MeshFile& mesh, const Positions& V) {
-  PlyElement& vertex = output_element(ply, "vertex");
-  check_size(vertex, static_cast<std::size_t>(V.rows()));
-  for (std::size_t k = 0; k < 3; ++k) {
-    PlyProperty& column = vertex.properties[k];
-    column.type = ScalarType::Float64;
-    for (std::size_t i = 0; i < vertex.count; ++i)
-      column.values[i] = V(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
-  }
-  const std::array<int, 3> normals = normal_columns(vertex);
+void set_positions(MeshDocument& doc, const Positions& V) {
+  check_size("vertex", doc.positions.size(), static_cast<std::size_t>(V.rows()));
+  for (std::size_t i = 0; i < doc.positions.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k)
+      doc.positions[i][k] = V(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k));
+  doc.position_types = {ScalarType::Float64, ScalarType::Float64, ScalarType::Float64};
+  const std::array<int, 3> normals = normal_columns(doc.vertex_extra);
   if (std::find(normals.begin(), normals.end(), -1) != normals.end()) return;
-  const std::vector<std::array<double, 3>> n = vertex_normals(mesh, vertex);
-  for (std::size_t k = 0; k < 3; ++k)
-    for (std::size_t i = 0; i < vertex.count; ++i)
-      vertex.properties[static_cast<std::size_t>(normals[k])].values[i] = n[i][k];
+  const std::vector<std::array<double, 3>> n = vertex_normals(doc, V);
+  for (std::size_t k = 0; k < 3; ++k) {
+    ScalarColumn& column = doc.vertex_extra[static_cast<std::size_t>(normals[k])].values;
+    column = ScalarColumn(column.type());
+    column.reserve(n.size());
+    for (const std::array<double, 3>& x : n) column.push_back(x[k]);
+  }
 }
 
-void set_quality(PlyElement& element, const std::vector<double>& quality) {
-  check_size(element, quality.size());
-  remove_columns(element, [](const std::string& name) { return name == "quality"; });
-  element.properties.push_back(scalar_property("quality", ScalarType::Float64, quality));
+void set_quality(MeshDocument& doc, Element element, const std::vector<double>& quality) {
+  std::vector<PlyProperty>& columns = columns_of(doc, element, quality.size());
+  remove_columns(columns, [](const std::string& name) { return name == "quality"; });
+  columns.push_back(scalar_property("quality", ScalarType::Float64, quality));
 }
 
-void set_colors(PlyElement& element, const std::vector<std::array<unsigned char, 3>>& colors) {
-  check_size(element, colors.size());
-  remove_columns(element, [](const std::string& name) {
+void set_colors(MeshDocument& doc, Element element,
+                const std::vector<std::array<unsigned char, 3>>& colors) {
+  std::vector<PlyProperty>& columns = columns_of(doc, element, colors.size());
+  remove_columns(columns, [](const std::string& name) {
     return name == "red" || name == "green" || name == "blue" || name == "alpha";
   });
   const char* names[] = {"red", "green", "blue"};
   for (std::size_t k = 0; k < 3; ++k) {
     std::vector<double> c(colors.size());
     for (std::size_t i = 0; i < colors.size(); ++i) c[i] = colors[i][k];
-    element.properties.push_back(scalar_property(names[k], ScalarType::UInt8, c));
+    columns.push_back(scalar_property(names[k], ScalarType::UInt8, c));
   }
-  element.properties.push_back(
+  columns.push_back(
       scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
 }
 
-void set_texcoords(PlyElement& face, const WedgeUV& uv) {
-  check_size(face, static_cast<std::size_t>(uv.rows()));
-  remove_columns(face, [](const std::string& name) { return name == "texcoord"; });
-  std::vector<std::array<double, 6>> rows(face.count);
-  for (std::size_t f = 0; f < face.count; ++f)
+void set_texcoords(MeshDocument& doc, const WedgeUV& uv) {
+  std::vector<PlyProperty>& columns =
+      columns_of(doc, Element::Face, static_cast<std::size_t>(uv.rows()));
+  doc.corner_uv.clear();
+  remove_columns(columns, [](const std::string& name) { return name == "texcoord"; });
+  std::vector<std::array<double, 6>> rows(doc.triangles.size());
+  for (std::size_t f = 0; f < rows.size(); ++f)
     for (std::size_t k = 0; k < 6; ++k)
       rows[f][k] = uv(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(k));
-  face.properties.push_back(list_property("texcoord", ScalarType::Float32, rows));
+  columns.push_back(list_property("texcoord", ScalarType::Float32, rows));
+}
+
+std::string serialize_ply(const MeshDocument& doc, PlyFormat format) {
+  return serialize_ply_tables(tables_of(doc), format);
 }
 
 }  // namespace qd::meshio

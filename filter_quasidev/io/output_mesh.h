@@ -1,37 +1,38 @@
-// The command's output document, built from the input's: output_ply gives the input's tables
-// (vertex: x y z with their types and every other property; face: vertex_indices (list uchar
-// int), every other property, and `patch` (int) when patch ids come from no face property (OBJ
-// groups); every other element, comment and obj_info line), and the setters below put a job's
-// columns in it:
-//   set_positions: x y z as double (whatever the input's type, so no precision is lost), nx ny nz
-//     (if present) recomputed from them;
+// The command's output document and its PLY bytes. A job copies the input document and the setters
+// below put its columns in it:
+//   set_positions: the positions, written as double (whatever the input's type, so no precision
+//     is lost), and the vertex nx ny nz (if present) recomputed from them;
 //   set_quality: `quality` (double), replacing the element's own;
 //   set_colors: `red green blue alpha` (uchar, alpha 255), replacing the element's own;
 //   set_texcoords: face `texcoord` (list uchar float: u0 v0 u1 v1 u2 v2, the type MeshLab reads),
-//     replacing the input's own.
+//     replacing the input's own (an OBJ file's corner_uv or a PLY texcoord).
 // Replaced columns are removed and the new ones appended, so the order is the input's, then
 // texcoord, quality, colours in the order set. Throws qd::Error when a column does not have one
 // value per vertex (per face).
+// serialize_ply writes a document: vertex x y z (position_types) then vertex_extra; face
+// vertex_indices (list uchar int), the corner_uv as `texcoord` (list uchar float), then
+// face_extra; every other element, comment and obj_info line.
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "common/mesh.h"
 #include "flatten/flatten_result.h"
-#include "io/mesh_file.h"
-#include "io/ply_file.h"
+#include "io/mesh_document.h"
+#include "io/ply_tables.h"
 
 namespace qd::meshio {
 
-PlyFile output_ply(const MeshFile& mesh);
+enum class Element { Vertex, Face };
 
-// The element called "vertex" or "face" of an output document.
-PlyElement& output_element(PlyFile& ply, const char* name);
+void set_positions(MeshDocument& doc, const Positions& V);
+void set_quality(MeshDocument& doc, Element element, const std::vector<double>& quality);
+void set_colors(MeshDocument& doc, Element element,
+                const std::vector<std::array<unsigned char, 3>>& colors);
+void set_texcoords(MeshDocument& doc, const WedgeUV& uv);
 
-void set_positions(PlyFile& ply, const MeshFile& mesh, const Positions& V);
-void set_quality(PlyElement& element, const std::vector<double>& quality);
-void set_colors(PlyElement& element, const std::vector<std::array<unsigned char, 3>>& colors);
-void set_texcoords(PlyElement& face, const WedgeUV& uv);
+std::string serialize_ply(const MeshDocument& doc, PlyFormat format);
 
 }  // namespace qd::meshio

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/error.h"
+#include "io/ply_reader.h"
 #include "io/text_scan.h"
 #include "io/triangulate.h"
 
@@ -25,12 +26,12 @@ PlyProperty take_scalar(PlyElement& e, const std::string& name) {
   return p;
 }
 
-void read_vertices(PlyElement& vertex, MeshFile& mesh) {
+void read_vertices(PlyElement& vertex, MeshDocument& mesh) {
   const PlyProperty x = take_scalar(vertex, "x");
   const PlyProperty y = take_scalar(vertex, "y");
   const PlyProperty z = take_scalar(vertex, "z");
   mesh.positions.resize(vertex.count);
-  mesh.position_types = {x.type, y.type, z.type};
+  mesh.position_types = {x.type(), y.type(), z.type()};
   for (std::size_t i = 0; i < vertex.count; ++i) {
     mesh.positions[i] = {x.values[i], y.values[i], z.values[i]};
     for (double c : mesh.positions[i])
@@ -70,7 +71,7 @@ std::vector<int> face_patch_ids(const PlyElement& face) {
   return ids;
 }
 
-void read_faces(PlyElement& face, MeshFile& mesh) {
+void read_faces(PlyElement& face, MeshDocument& mesh) {
   const std::string name = face.find("vertex_indices") >= 0 ? "vertex_indices" : "vertex_index";
   const int i = face.find(name);
   if (i < 0) fail("the 'face' element has no 'vertex_indices' list");
@@ -106,8 +107,9 @@ std::map<int, std::string> patch_names(const std::vector<std::string>& comments)
 
 }  // namespace
 
-MeshFile mesh_from_ply(PlyFile ply) {
-  MeshFile mesh;
+MeshDocument parse_ply(std::string_view bytes) {
+  PlyTables ply = parse_ply_tables(bytes);
+  MeshDocument mesh;
   mesh.patch_names = patch_names(ply.comments);
   mesh.comments = std::move(ply.comments);
   mesh.obj_info = std::move(ply.obj_info);

@@ -45,7 +45,7 @@ std::string rest_of_line(std::string_view line, std::string_view keyword) {
   return std::string(rest);
 }
 
-void parse_property_line(const std::vector<std::string_view>& w, int line_no, PlyFile& ply) {
+void parse_property_line(const std::vector<std::string_view>& w, int line_no, PlyTables& ply) {
   const std::string at = "header line " + std::to_string(line_no) + ": ";
   if (ply.elements.empty()) fail(at + "property before any element");
   PlyProperty p;
@@ -58,8 +58,10 @@ void parse_property_line(const std::vector<std::string_view>& w, int line_no, Pl
   if (list && (p.count_type == ScalarType::Float32 || p.count_type == ScalarType::Float64))
     fail(at + "a list count type must be an integer type, not '" + std::string(w[2]) + "'");
   const std::string_view type_word = w[list ? 3 : 1];
-  if (!parse_type(type_word, p.type))
+  ScalarType type = ScalarType::Float32;
+  if (!parse_type(type_word, type))
     fail(at + "unknown property type '" + std::string(type_word) + "'");
+  p.values = ScalarColumn(type);
   p.name = std::string(w.back());
   PlyElement& element = ply.elements.back();
   if (element.find(p.name) >= 0)
@@ -67,7 +69,7 @@ void parse_property_line(const std::vector<std::string_view>& w, int line_no, Pl
   element.properties.push_back(std::move(p));
 }
 
-void parse_element_line(const std::vector<std::string_view>& w, int line_no, PlyFile& ply) {
+void parse_element_line(const std::vector<std::string_view>& w, int line_no, PlyTables& ply) {
   const std::string at = "header line " + std::to_string(line_no) + ": ";
   if (w.size() != 3) fail(at + "expected 'element NAME COUNT'");
   std::uint64_t count = 0;
@@ -82,7 +84,7 @@ void parse_element_line(const std::vector<std::string_view>& w, int line_no, Ply
 }
 
 // Reads the header; returns the offset of the first data byte.
-std::size_t parse_header(std::string_view bytes, PlyFile& ply) {
+std::size_t parse_header(std::string_view bytes, PlyTables& ply) {
   std::size_t pos = 0;
   std::string_view line;
   if (!next_line(bytes, pos, line) || line != "ply")
@@ -256,7 +258,7 @@ template <typename Source>
 void check_count_fits(const PlyElement& e, const Source& source) {
   std::size_t per_element = 0;
   for (const PlyProperty& p : e.properties)
-    per_element += source.min_bytes(p.is_list ? p.count_type : p.type);
+    per_element += source.min_bytes(p.is_list ? p.count_type : p.type());
   if (per_element > 0 && e.count > source.remaining() / per_element)
     fail("the header declares " + std::to_string(e.count) + " '" + e.name +
          "' elements, but only " + std::to_string(source.remaining()) +
@@ -274,24 +276,24 @@ void read_element(PlyElement& e, Source& source) {
   for (std::size_t i = 0; i < e.count; ++i) {
     for (PlyProperty& p : e.properties) {
       if (!p.is_list) {
-        p.values.push_back(source.read(p.type, Place{e, i, p, false}));
+        p.values.push_back(source.read(p.type(), Place{e, i, p, false}));
         continue;
       }
       const double n = source.read(p.count_type, Place{e, i, p, true});
       if (n < 0) fail("negative list length of " + Place{e, i, p, false}.text());
       const auto length = static_cast<std::size_t>(n);
-      if (length > source.remaining() / source.min_bytes(p.type))
+      if (length > source.remaining() / source.min_bytes(p.type()))
         fail("list length " + std::to_string(length) + " of " + Place{e, i, p, false}.text() +
              " exceeds the remaining data (truncated or corrupt file)");
       for (std::size_t k = 0; k < length; ++k)
-        p.values.push_back(source.read(p.type, Place{e, i, p, false}));
+        p.values.push_back(source.read(p.type(), Place{e, i, p, false}));
       p.offsets.push_back(p.values.size());
     }
   }
 }
 
 template <typename Source>
-void read_body(PlyFile& ply, Source source) {
+void read_body(PlyTables& ply, Source source) {
   for (PlyElement& e : ply.elements) read_element(e, source);
   source.expect_end();
 }
@@ -305,8 +307,8 @@ int count_lines(std::string_view bytes, std::size_t end) {
 
 }  // namespace
 
-PlyFile parse_ply(std::string_view bytes) {
-  PlyFile ply;
+PlyTables parse_ply_tables(std::string_view bytes) {
+  PlyTables ply;
   const std::size_t data = parse_header(bytes, ply);
   if (ply.format == PlyFormat::Ascii)
     read_body(ply, AsciiSource(bytes, data, count_lines(bytes, data)));

@@ -23,7 +23,7 @@ const char* format_name(PlyFormat format) {
   return "?";
 }
 
-std::string header(const PlyFile& ply, PlyFormat format) {
+std::string header(const PlyTables& ply, PlyFormat format) {
   std::string h = "ply\nformat " + std::string(format_name(format)) + " 1.0\n";
   for (const std::string& c : ply.comments) h += "comment " + c + "\n";
   for (const std::string& c : ply.obj_info) h += "obj_info " + c + "\n";
@@ -32,7 +32,7 @@ std::string header(const PlyFile& ply, PlyFormat format) {
     for (const PlyProperty& p : e.properties) {
       h += "property ";
       if (p.is_list) h += std::string("list ") + scalar_type_name(p.count_type) + " ";
-      h += std::string(scalar_type_name(p.type)) + " " + p.name + "\n";
+      h += std::string(scalar_type_name(p.type())) + " " + p.name + "\n";
     }
   }
   return h + "end_header\n";
@@ -104,12 +104,12 @@ void append_element(const PlyElement& e, PlyFormat format, std::string& out) {
   for (std::size_t i = 0; i < e.count; ++i) {
     for (const PlyProperty& p : e.properties) {
       if (!p.is_list) {
-        append_value(p.type, p.values[i], format, e, p, i, out);
+        append_value(p.type(), p.values[i], format, e, p, i, out);
         continue;
       }
       append_value(p.count_type, static_cast<double>(p.list_size(i)), format, e, p, i, out);
       for (std::size_t k = p.offsets[i]; k < p.offsets[i + 1]; ++k)
-        append_value(p.type, p.values[k], format, e, p, i, out);
+        append_value(p.type(), p.values[k], format, e, p, i, out);
     }
     if (format == PlyFormat::Ascii && !e.properties.empty()) out.back() = '\n';
   }
@@ -117,7 +117,7 @@ void append_element(const PlyElement& e, PlyFormat format, std::string& out) {
 
 }  // namespace
 
-std::string serialize_ply(const PlyFile& ply, PlyFormat format) {
+std::string serialize_ply_tables(const PlyTables& ply, PlyFormat format) {
   std::string out = header(ply, format);
   for (const PlyElement& e : ply.elements) append_element(e, format, out);
   return out;

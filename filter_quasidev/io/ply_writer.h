@@ -1,4 +1,4 @@
-// PLY writer. serialize_ply turns tables into the bytes of a PLY file in any of the three
+// PLY writer. serialize_ply_tables turns tables into the bytes of a PLY file in any of the three
 // formats (the command writes binary little-endian; the others serve round-trip tests).
 // Throws qd::Error if a value does not fit its declared type (e.g. a list longer than its
 // count type allows).
@@ -6,10 +6,10 @@
 
 #include <string>
 
-#include "io/ply_file.h"
+#include "io/ply_tables.h"
 
 namespace qd::meshio {
 
-std::string serialize_ply(const PlyFile& ply, PlyFormat format);
+std::string serialize_ply_tables(const PlyTables& ply, PlyFormat format);
 
 }  // namespace qd::meshio

@@ -1,7 +1,7 @@
 // Checks that a value can be stored in a PLY scalar type without change.
 #pragma once
 
-#include "io/mesh_file.h"
+#include "io/scalar_column.h"
 
 namespace qd::meshio {
 

@@ -36,8 +36,7 @@ void append_triangle_value(const PlyProperty& column, std::size_t f, std::size_t
   const std::size_t begin = column.offsets[f];
   const std::size_t length = column.list_size(f);
   if (n == 3 || length == 0 || length % n != 0) {
-    out.values.insert(out.values.end(), column.values.begin() + static_cast<long>(begin),
-                      column.values.begin() + static_cast<long>(begin + length));
+    for (std::size_t k = begin; k < begin + length; ++k) out.values.push_back(column.values[k]);
   } else {
     const std::size_t per_corner = length / n;
     for (std::size_t corner : {std::size_t{0}, c1, c2})
@@ -51,11 +50,12 @@ void append_triangle_value(const PlyProperty& column, std::size_t f, std::size_t
 
 std::vector<std::size_t> add_faces(const PlyProperty& indices, std::size_t face_count,
                                    std::size_t vertex_count,
-                                   const std::vector<PlyProperty>& face_columns, MeshFile& mesh) {
+                                   const std::vector<PlyProperty>& face_columns,
+                                   MeshDocument& mesh) {
   std::vector<PlyProperty> out(face_columns.size());
   for (std::size_t c = 0; c < face_columns.size(); ++c) {
     out[c].name = face_columns[c].name;
-    out[c].type = face_columns[c].type;
+    out[c].values = ScalarColumn(face_columns[c].type());
     out[c].is_list = face_columns[c].is_list;
     out[c].count_type = face_columns[c].count_type;
     if (out[c].is_list) out[c].offsets.assign(1, 0);
@@ -65,11 +65,12 @@ std::vector<std::size_t> add_faces(const PlyProperty& indices, std::size_t face_
   for (std::size_t f = 0; f < face_count; ++f) {
     check_face(indices, f, vertex_count);
     const std::size_t n = indices.list_size(f);
-    const double* corner = indices.values.data() + indices.offsets[f];
+    const auto corner = [&indices, f](std::size_t k) {
+      return static_cast<int>(indices.values[indices.offsets[f] + k]);
+    };
     if (n > 3) ++polygons;
     for (std::size_t j = 1; j + 1 < n; ++j) {  // fan around corner 0
-      mesh.triangles.push_back({static_cast<int>(corner[0]), static_cast<int>(corner[j]),
-                                static_cast<int>(corner[j + 1])});
+      mesh.triangles.push_back({corner(0), corner(j), corner(j + 1)});
       source.push_back(f);
       for (std::size_t c = 0; c < face_columns.size(); ++c)
         append_triangle_value(face_columns[c], f, n, j, j + 1, out[c]);

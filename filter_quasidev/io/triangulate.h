@@ -10,12 +10,13 @@
 #include <cstddef>
 #include <vector>
 
-#include "io/mesh_file.h"
+#include "io/mesh_document.h"
 
 namespace qd::meshio {
 
 std::vector<std::size_t> add_faces(const PlyProperty& indices, std::size_t face_count,
                                    std::size_t vertex_count,
-                                   const std::vector<PlyProperty>& face_columns, MeshFile& mesh);
+                                   const std::vector<PlyProperty>& face_columns,
+                                   MeshDocument& mesh);
 
 }  // namespace qd::meshio

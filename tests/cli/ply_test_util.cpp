@@ -11,17 +11,17 @@ PlyProperty list(const std::string& name, ScalarType count_type, ScalarType type
   p.name = name;
   p.is_list = true;
   p.count_type = count_type;
-  p.type = type;
+  p.values = ScalarColumn(type);
   p.offsets.push_back(0);
   for (const auto& l : lists) {
-    p.values.insert(p.values.end(), l.begin(), l.end());
+    for (double v : l) p.values.push_back(v);
     p.offsets.push_back(p.values.size());
   }
   return p;
 }
 
-PlyFile sample_ply() {
-  PlyFile ply;
+PlyTables sample_ply() {
+  PlyTables ply;
   ply.comments = {"made by the test", "second comment"};
   ply.obj_info = {"some info"};
   PlyElement v;
@@ -50,6 +50,6 @@ PlyFile sample_ply() {
   return ply;
 }
 
-MeshFile mesh_of(const std::string& bytes) { return mesh_from_ply(parse_ply(bytes)); }
+MeshDocument mesh_of(const std::string& bytes) { return parse_ply(bytes); }
 
 }  // namespace qd::meshio::test

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "io/mesh_file.h"
-#include "io/ply_file.h"
+#include "io/mesh_document.h"
+#include "io/ply_tables.h"
 
 namespace qd::meshio::test {
 
@@ -14,10 +14,10 @@ PlyProperty list(const std::string& name, ScalarType count_type, ScalarType type
 
 // A unit square made of two triangles plus one quad (5 vertices), with a per-corner texcoord
 // list, a face quality (patch id), vertex flags (vertex 4 selected) and an extra "edge" element.
-PlyFile sample_ply();
+PlyTables sample_ply();
 
-// parse_ply then mesh_from_ply.
-MeshFile mesh_of(const std::string& bytes);
+// The document of a PLY file's bytes (parse_ply).
+MeshDocument mesh_of(const std::string& bytes);
 
 // The message of the qd::Error that `f` throws ("" if it throws none).
 template <typename F>

@@ -14,8 +14,8 @@ using qd::meshio::test::error_of;
 namespace {
 
 // Unit square split along its diagonal: 5 edges, 4 of length 1 and one of √2.
-meshio::MeshFile square() {
-  meshio::MeshFile m;
+meshio::MeshDocument square() {
+  meshio::MeshDocument m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
   m.patch = {4, 9};
@@ -59,7 +59,7 @@ TEST(MeshProblem, ConstraintFileAddsToTheSelection) {
 }
 
 TEST(MeshProblem, DegenerateMeshIsRefused) {
-  meshio::MeshFile m = square();
+  meshio::MeshDocument m = square();
   for (auto& p : m.positions) p = {1, 2, 3};
   const cli::ApproximateOptions o = options({"a.ply", "b.ply"});
   EXPECT_NE(error_of([&] { cli::make_problem(m, o); }).find("average edge length is 0"),

@@ -4,6 +4,8 @@
 
 #include "io/obj_reader.h"
 #include "io/off_reader.h"
+#include "io/output_mesh.h"
+#include "io/ply_reader.h"
 #include "ply_test_util.h"
 
 using namespace qd::meshio;
@@ -26,22 +28,24 @@ const char* kObj =
     "l 1 2\n";
 
 TEST(ObjReader, CornersGroupsAndTexcoords) {
-  const MeshFile m = parse_obj(kObj);
+  const MeshDocument m = parse_obj(kObj);
   ASSERT_EQ(m.positions.size(), 4u);
   EXPECT_EQ(m.positions[2], (std::array<double, 3>{1, 1, 0}));
   ASSERT_EQ(m.triangles.size(), 3u);
   EXPECT_EQ(m.triangles[1], (std::array<int, 3>{0, 2, 3}));
   EXPECT_EQ(m.triangles[2], (std::array<int, 3>{0, 1, 3}));
   EXPECT_EQ(m.patch, (std::vector<int>{0, 1, 0}));
-  ASSERT_EQ(m.face_extra.size(), 1u);
-  EXPECT_EQ(m.face_extra[0].name, "texcoord");
-  EXPECT_EQ(std::vector<double>(m.face_extra[0].values.begin() + 12, m.face_extra[0].values.end()),
-            (std::vector<double>{0, 0, 1, 0, 0, 1}));
+  ASSERT_EQ(m.face_extra.size(), 1u);  // group ids as a column; texcoords are corner_uv
+  EXPECT_EQ(m.face_extra[0].name, "patch");
+  EXPECT_EQ(m.face_extra[0].type(), ScalarType::Int32);
+  EXPECT_EQ(m.face_extra[0].values.to_doubles(), (std::vector<double>{0, 1, 0}));
+  ASSERT_EQ(m.corner_uv.size(), 3u);
+  EXPECT_EQ(m.corner_uv[2], (std::array<double, 6>{0, 0, 1, 0, 0, 1}));
   ASSERT_EQ(m.notes.size(), 1u);  // the ignored line statement
 }
 
 TEST(ObjReader, NoGroupsNoPatchesMixedUvDroppedPolygonSplit) {
-  const MeshFile m =
+  const MeshDocument m =
       parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1 2 3 4\nf 1//1 3//1 4//1\n");
   EXPECT_TRUE(m.patch.empty());
   EXPECT_TRUE(m.face_extra.empty());
@@ -50,7 +54,8 @@ TEST(ObjReader, NoGroupsNoPatchesMixedUvDroppedPolygonSplit) {
 }
 
 TEST(ObjReader, FacesBeforeTheFirstGroupFormTheirOwnPatch) {
-  const MeshFile m = parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\ng a\nf 1 2 3\ng b\nf 3 2 1\n");
+  const MeshDocument m =
+      parse_obj("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\ng a\nf 1 2 3\ng b\nf 3 2 1\n");
   EXPECT_EQ(m.patch, (std::vector<int>{0, 1, 2}));
 }
 
@@ -73,12 +78,12 @@ TEST(ObjReader, Errors) {
 }
 
 TEST(OffReader, ReadsCountsOnTheirOwnLineAndPolygons) {
-  const MeshFile m =
+  const MeshDocument m =
       parse_off("OFF\n# comment\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3 255 0 0\n");
   EXPECT_EQ(m.positions.size(), 4u);
   EXPECT_EQ(m.triangles.size(), 2u);
   EXPECT_TRUE(m.patch.empty());
-  const MeshFile c =
+  const MeshDocument c =
       parse_off("COFF 3 1 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n0 1 0 1 1 1 1\n3 0 1 2\n");
   EXPECT_EQ(c.triangles.size(), 1u);
 }
@@ -100,6 +105,20 @@ TEST(OffReader, Errors) {
     const std::string message = error_of([&] { parse_off(c.first); });
     EXPECT_NE(message.find(c.second), std::string::npos) << "got '" << message << "'";
   }
+}
+
+TEST(ObjReader, CornerTexcoordsAreWrittenFirstAmongTheFaceProperties) {
+  const PlyTables out =
+      parse_ply_tables(serialize_ply(parse_obj(kObj), PlyFormat::BinaryLittleEndian));
+  const PlyElement& face = out.elements[1];
+  ASSERT_EQ(face.properties.size(), 3u);
+  EXPECT_EQ(face.properties[0].name, "vertex_indices");
+  EXPECT_EQ(face.properties[1].name, "texcoord");
+  EXPECT_EQ(face.properties[2].name, "patch");
+  const PlyProperty& uv = face.properties[1];
+  EXPECT_EQ(uv.type(), ScalarType::Float32);
+  EXPECT_EQ(uv.list_size(2), 6u);
+  EXPECT_EQ(uv.values[uv.offsets[2] + 2], 1);  // triangle 2, corner 1: u of vt 2
 }
 
 }  // namespace

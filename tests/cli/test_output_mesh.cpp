@@ -22,8 +22,8 @@ using namespace qd::meshio::test;
 namespace {
 
 // The output of `m` moved up by 0.1, with vertex quality 0.5 i and, if asked, colours.
-PlyFile shifted(const MeshFile& m, bool colors) {
-  PlyFile out = output_ply(m);
+MeshDocument shifted(const MeshDocument& m, bool colors) {
+  MeshDocument out = m;
   qd::Positions V(static_cast<Eigen::Index>(m.positions.size()), 3);
   std::vector<double> quality;
   for (std::size_t i = 0; i < m.positions.size(); ++i) {
@@ -31,30 +31,33 @@ PlyFile shifted(const MeshFile& m, bool colors) {
     V.row(static_cast<Eigen::Index>(i)) << p[0], p[1], p[2] + 0.1;
     quality.push_back(0.5 * static_cast<double>(i));
   }
-  set_positions(out, m, V);
-  PlyElement& vertex = output_element(out, "vertex");
-  set_quality(vertex, quality);
-  if (colors) set_colors(vertex, std::vector<std::array<unsigned char, 3>>(V.rows(), {10, 20, 30}));
+  set_positions(out, V);
+  set_quality(out, Element::Vertex, quality);
+  if (colors)
+    set_colors(out, Element::Vertex,
+               std::vector<std::array<unsigned char, 3>>(V.rows(), {10, 20, 30}));
   return out;
 }
 
 TEST(OutputMesh, PassesThroughEverythingItDoesNotOwn) {
-  PlyFile in = sample_ply();
+  PlyTables in = sample_ply();
   in.elements[0].properties.push_back(
       scalar_property("quality", ScalarType::Float32, {9, 9, 9, 9, 9}));
   in.elements[0].properties.push_back(scalar_property("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
-  const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::BinaryBigEndian));
-  const PlyFile out = parse_ply(serialize_ply(shifted(mesh, true), PlyFormat::BinaryLittleEndian));
+  const MeshDocument mesh = mesh_of(serialize_ply_tables(in, PlyFormat::BinaryBigEndian));
+  const PlyTables out =
+      parse_ply_tables(serialize_ply(shifted(mesh, true), PlyFormat::BinaryLittleEndian));
   const PlyElement& v = out.elements[0];
   ASSERT_EQ(v.name, "vertex");
-  EXPECT_EQ(v.properties[0].type, ScalarType::Float64);
+  EXPECT_EQ(v.properties[0].type(), ScalarType::Float64);
   EXPECT_EQ(v.properties[2].values[4], 0.25 + 0.1);
-  EXPECT_EQ(v.properties[v.find("temperature")].values,
+  EXPECT_EQ(v.properties[v.find("temperature")].values.to_doubles(),
             (std::vector<double>{-7, 3, 100, -32768, 32767}));
   EXPECT_EQ(v.properties[v.find("flags")].values[4], 0x20);
-  EXPECT_EQ(v.properties[v.find("quality")].values, (std::vector<double>{0, 0.5, 1, 1.5, 2}));
-  EXPECT_EQ(v.properties[v.find("red")].values, std::vector<double>(5, 10));
-  EXPECT_EQ(v.properties[v.find("alpha")].values, std::vector<double>(5, 255));
+  EXPECT_EQ(v.properties[v.find("quality")].values.to_doubles(),
+            (std::vector<double>{0, 0.5, 1, 1.5, 2}));
+  EXPECT_EQ(v.properties[v.find("red")].values.to_doubles(), std::vector<double>(5, 10));
+  EXPECT_EQ(v.properties[v.find("alpha")].values.to_doubles(), std::vector<double>(5, 255));
   int quality_columns = 0;
   for (const PlyProperty& p : v.properties) quality_columns += p.name == "quality";
   EXPECT_EQ(quality_columns, 1);
@@ -63,36 +66,34 @@ TEST(OutputMesh, PassesThroughEverythingItDoesNotOwn) {
   EXPECT_EQ(f.properties[f.find("texcoord")].values, mesh.face_extra[0].values);
   EXPECT_EQ(f.properties[f.find("quality")].values, mesh.face_extra[1].values);
   EXPECT_EQ(out.elements[2].name, "edge");
-  EXPECT_EQ(out.elements[2].properties[1].values, (std::vector<double>{0.1, 1e-300}));
+  EXPECT_EQ(out.elements[2].properties[1].values.to_doubles(), (std::vector<double>{0.1, 1e-300}));
   EXPECT_EQ(out.comments, in.comments);
 }
 
 TEST(OutputMesh, WithoutColoursTheInputColoursStay) {
-  PlyFile in = sample_ply();
+  PlyTables in = sample_ply();
   in.elements[0].properties.push_back(scalar_property("red", ScalarType::UInt8, {1, 2, 3, 4, 5}));
-  const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::Ascii));
-  const PlyFile out = shifted(mesh, false);
+  const MeshDocument mesh = mesh_of(serialize_ply_tables(in, PlyFormat::Ascii));
+  const PlyTables out = parse_ply_tables(serialize_ply(shifted(mesh, false), PlyFormat::Ascii));
   const PlyElement& v = out.elements[0];
-  EXPECT_EQ(v.properties[v.find("red")].values, (std::vector<double>{1, 2, 3, 4, 5}));
+  EXPECT_EQ(v.properties[v.find("red")].values.to_doubles(), (std::vector<double>{1, 2, 3, 4, 5}));
   EXPECT_LT(v.find("alpha"), 0);
 }
 
 TEST(OutputMesh, PerFaceFieldsReplaceTheirOwnAndKeepTheVertices) {
-  PlyFile in = sample_ply();
-  in.elements[0].properties[0].type = ScalarType::Float32;  // x stays float when not moved
-  const MeshFile mesh = mesh_of(serialize_ply(in, PlyFormat::BinaryLittleEndian));
+  const PlyTables in = sample_ply();  // x is float: it stays so when the vertices do not move
+  const MeshDocument mesh = mesh_of(serialize_ply_tables(in, PlyFormat::BinaryLittleEndian));
   const std::size_t nf = mesh.triangles.size();
-  PlyFile written = output_ply(mesh);
-  PlyElement& written_face = output_element(written, "face");
+  MeshDocument written = mesh;
   qd::WedgeUV uv(static_cast<Eigen::Index>(nf), 6);
   uv.rowwise() = Eigen::Matrix<double, 1, 6>(0.5, 1, 1.5, 2, 2.5, 3);
-  set_texcoords(written_face, uv);
-  set_quality(written_face, std::vector<double>(nf, -0.25));
-  set_colors(written_face, std::vector<std::array<unsigned char, 3>>(nf, {1, 2, 3}));
-  const PlyFile out = parse_ply(serialize_ply(written, PlyFormat::BinaryLittleEndian));
+  set_texcoords(written, uv);
+  set_quality(written, Element::Face, std::vector<double>(nf, -0.25));
+  set_colors(written, Element::Face, std::vector<std::array<unsigned char, 3>>(nf, {1, 2, 3}));
+  const PlyTables out = parse_ply_tables(serialize_ply(written, PlyFormat::BinaryLittleEndian));
   const PlyElement& v = out.elements[0];
-  EXPECT_EQ(v.properties[0].type, ScalarType::Float32);
-  EXPECT_EQ(v.properties[1].type, in.elements[0].properties[1].type);
+  EXPECT_EQ(v.properties[0].type(), ScalarType::Float32);
+  EXPECT_EQ(v.properties[1].type(), in.elements[0].properties[1].type());
   for (std::size_t k = 0; k < 3; ++k)
     EXPECT_EQ(v.properties[k].values, in.elements[0].properties[k].values);
   EXPECT_EQ(v.properties.size(), in.elements[0].properties.size());  // nothing added per vertex
@@ -105,15 +106,17 @@ TEST(OutputMesh, PerFaceFieldsReplaceTheirOwnAndKeepTheVertices) {
   EXPECT_EQ(texcoords, 1);
   EXPECT_EQ(qualities, 1);
   const PlyProperty& texcoord = face.properties[face.find("texcoord")];
-  EXPECT_EQ(texcoord.type, ScalarType::Float32);
+  EXPECT_EQ(texcoord.type(), ScalarType::Float32);
   EXPECT_EQ(texcoord.count_type, ScalarType::UInt8);
-  EXPECT_EQ(std::vector<double>(texcoord.values.begin(), texcoord.values.begin() + 6),
+  const std::vector<double> uv_values = texcoord.values.to_doubles();
+  EXPECT_EQ(std::vector<double>(uv_values.begin(), uv_values.begin() + 6),
             (std::vector<double>{0.5, 1, 1.5, 2, 2.5, 3}));
-  EXPECT_EQ(face.properties[face.find("quality")].type, ScalarType::Float64);
-  EXPECT_EQ(face.properties[face.find("quality")].values, std::vector<double>(4, -0.25));
-  EXPECT_EQ(face.properties[face.find("green")].values, std::vector<double>(4, 2));
-  EXPECT_EQ(face.properties[face.find("alpha")].values, std::vector<double>(4, 255));
-  EXPECT_THROW(set_quality(written_face, {1.0}), qd::Error);
+  EXPECT_EQ(face.properties[face.find("quality")].type(), ScalarType::Float64);
+  EXPECT_EQ(face.properties[face.find("quality")].values.to_doubles(),
+            std::vector<double>(4, -0.25));
+  EXPECT_EQ(face.properties[face.find("green")].values.to_doubles(), std::vector<double>(4, 2));
+  EXPECT_EQ(face.properties[face.find("alpha")].values.to_doubles(), std::vector<double>(4, 255));
+  EXPECT_THROW(set_quality(written, Element::Face, {1.0}), qd::Error);
 }
 
 TEST(OutputMesh, VertexNormalsAreRecomputed) {
@@ -123,19 +126,20 @@ TEST(OutputMesh, VertexNormalsAreRecomputed) {
       "property float nx\nproperty float ny\nproperty float nz\nelement face 1\n"
       "property list uchar int vertex_indices\nend_header\n0 0 0 1 0 0\n1 0 0 1 0 0\n0 1 0 1 0 "
       "0\n3 0 1 2\n";
-  const MeshFile mesh = mesh_of(text);
-  PlyFile out = output_ply(mesh);
+  const MeshDocument mesh = mesh_of(text);
+  ASSERT_EQ(mesh.vertex_extra.size(), 3u);  // nx ny nz
+  MeshDocument out = mesh;
   qd::Positions V(3, 3);
   V << 0, 0, 0, 0, 1, 0, 0, 0, 1;  // now in the x = 0 plane, normal +x
-  set_positions(out, mesh, V);
-  const PlyElement& v = out.elements[0];
-  EXPECT_DOUBLE_EQ(v.properties[v.find("nx")].values[0], 1.0);
-  EXPECT_DOUBLE_EQ(v.properties[v.find("nz")].values[2], 0.0);
-  V << 0, 0, 0, 1, 0, 0, 0, 1, 0;  // back in z = 0: normal +z
-  PlyFile again = output_ply(mesh);
-  set_positions(again, mesh, V);
-  const PlyElement& w = again.elements[0];
-  EXPECT_DOUBLE_EQ(w.properties[w.find("nz")].values[1], 1.0);
+  set_positions(out, V);
+  EXPECT_EQ(out.position_types[0], ScalarType::Float64);
+  EXPECT_DOUBLE_EQ(out.vertex_extra[0].values[0], 1.0);
+  EXPECT_DOUBLE_EQ(out.vertex_extra[2].values[2], 0.0);
+  EXPECT_EQ(out.vertex_extra[0].type(), ScalarType::Float32);  // the normals keep their type
+  V << 0, 0, 0, 1, 0, 0, 0, 1, 0;                              // back in z = 0: normal +z
+  MeshDocument again = mesh;
+  set_positions(again, V);
+  EXPECT_DOUBLE_EQ(again.vertex_extra[2].values[1], 1.0);
 }
 
 class TempDir : public ::testing::Test {
@@ -222,7 +226,7 @@ namespace {
 TEST(FuzzSeeds, EverySeedIsAValidMesh) {
   int seeds = 0;
   for (const auto& entry : std::filesystem::directory_iterator(QD_FUZZ_SEEDS)) {
-    const MeshFile m = read_mesh(entry.path().string());
+    const MeshDocument m = read_mesh(entry.path().string());
     EXPECT_GE(m.triangles.size(), 2u) << entry.path();
     ++seeds;
   }

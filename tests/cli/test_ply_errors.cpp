@@ -29,10 +29,10 @@ std::string binary_header(const char* counts_and_props) {
 }
 
 std::vector<BadCase> bad_cases() {
-  const std::string tri = serialize_ply(sample_ply(), PlyFormat::BinaryLittleEndian);
-  PlyFile faces_last = sample_ply();
+  const std::string tri = serialize_ply_tables(sample_ply(), PlyFormat::BinaryLittleEndian);
+  PlyTables faces_last = sample_ply();
   faces_last.elements.pop_back();
-  const std::string lists = serialize_ply(faces_last, PlyFormat::BinaryLittleEndian);
+  const std::string lists = serialize_ply_tables(faces_last, PlyFormat::BinaryLittleEndian);
   return {
       {"empty", "", "does not start with 'ply'"},
       {"not_ply", "solid cube\n", "does not start with 'ply'"},
@@ -92,7 +92,7 @@ std::vector<BadCase> bad_cases() {
 
 TEST(PlyErrors, EachMalformedFileGivesItsMessage) {
   for (const BadCase& c : bad_cases()) {
-    const std::string message = error_of([&] { parse_ply(c.bytes); });
+    const std::string message = error_of([&] { parse_ply_tables(c.bytes); });
     EXPECT_NE(message.find(c.message), std::string::npos)
         << c.name << ": got '" << message << "', expected '" << c.message << "'";
     EXPECT_EQ(message.find('\n'), std::string::npos) << c.name << ": message must be one line";
@@ -141,7 +141,7 @@ TEST(PlyErrors, UnusableMeshesGiveTheirMessage) {
 TEST(PlyErrors, TruncationAndCorruptionNeverCrash) {
   for (PlyFormat format :
        {PlyFormat::Ascii, PlyFormat::BinaryLittleEndian, PlyFormat::BinaryBigEndian}) {
-    const std::string good = serialize_ply(sample_ply(), format);
+    const std::string good = serialize_ply_tables(sample_ply(), format);
     int failures = 0;
     for (std::size_t n = 0; n < good.size(); ++n) {
       try {

@@ -11,7 +11,7 @@ using namespace qd::meshio::test;
 
 namespace {
 
-void expect_same_tables(const PlyFile& a, const PlyFile& b) {
+void expect_same_tables(const PlyTables& a, const PlyTables& b) {
   EXPECT_EQ(a.comments, b.comments);
   EXPECT_EQ(a.obj_info, b.obj_info);
   ASSERT_EQ(a.elements.size(), b.elements.size());
@@ -23,7 +23,7 @@ void expect_same_tables(const PlyFile& a, const PlyFile& b) {
     ASSERT_EQ(x.properties.size(), y.properties.size());
     for (std::size_t p = 0; p < x.properties.size(); ++p) {
       EXPECT_EQ(x.properties[p].name, y.properties[p].name);
-      EXPECT_EQ(x.properties[p].type, y.properties[p].type);
+      EXPECT_EQ(x.properties[p].type(), y.properties[p].type());
       EXPECT_EQ(x.properties[p].is_list, y.properties[p].is_list);
       EXPECT_EQ(x.properties[p].values, y.properties[p].values) << x.properties[p].name;
       EXPECT_EQ(x.properties[p].offsets, y.properties[p].offsets) << x.properties[p].name;
@@ -31,8 +31,8 @@ void expect_same_tables(const PlyFile& a, const PlyFile& b) {
   }
 }
 
-PlyFile every_scalar_type() {
-  PlyFile ply;
+PlyTables every_scalar_type() {
+  PlyTables ply;
   PlyElement e;
   e.name = "thing";
   e.count = 3;
@@ -52,15 +52,15 @@ PlyFile every_scalar_type() {
 class RoundTrip : public ::testing::TestWithParam<PlyFormat> {};
 
 TEST_P(RoundTrip, EveryScalarTypeAndListsAreBitIdentical) {
-  const PlyFile ply = every_scalar_type();
-  const PlyFile back = parse_ply(serialize_ply(ply, GetParam()));
+  const PlyTables ply = every_scalar_type();
+  const PlyTables back = parse_ply_tables(serialize_ply_tables(ply, GetParam()));
   EXPECT_EQ(back.format, GetParam());
   expect_same_tables(ply, back);
 }
 
 TEST_P(RoundTrip, MeshTablesCommentsAndUnknownElementsSurvive) {
-  const PlyFile ply = sample_ply();
-  expect_same_tables(ply, parse_ply(serialize_ply(ply, GetParam())));
+  const PlyTables ply = sample_ply();
+  expect_same_tables(ply, parse_ply_tables(serialize_ply_tables(ply, GetParam())));
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip,
@@ -68,20 +68,21 @@ INSTANTIATE_TEST_SUITE_P(Formats, RoundTrip,
                                            PlyFormat::BinaryBigEndian));
 
 TEST(PlyBigEndian, BytesAreInNetworkOrder) {
-  PlyFile ply;
+  PlyTables ply;
   PlyElement e;
   e.name = "n";
   e.count = 1;
   e.properties = {scalar_property("v", ScalarType::UInt32, {0x01020304})};
   ply.elements = {e};
-  const std::string bytes = serialize_ply(ply, PlyFormat::BinaryBigEndian);
+  const std::string bytes = serialize_ply_tables(ply, PlyFormat::BinaryBigEndian);
   EXPECT_EQ(bytes.substr(bytes.size() - 4), std::string("\x01\x02\x03\x04", 4));
-  const std::string little = serialize_ply(ply, PlyFormat::BinaryLittleEndian);
+  const std::string little = serialize_ply_tables(ply, PlyFormat::BinaryLittleEndian);
   EXPECT_EQ(little.substr(little.size() - 4), std::string("\x04\x03\x02\x01", 4));
 }
 
 TEST(PlyMesh, ExtractsTrianglesPatchesSelectionAndKeepsTheRest) {
-  const MeshFile mesh = mesh_of(serialize_ply(sample_ply(), PlyFormat::BinaryLittleEndian));
+  const MeshDocument mesh =
+      mesh_of(serialize_ply_tables(sample_ply(), PlyFormat::BinaryLittleEndian));
   ASSERT_EQ(mesh.positions.size(), 5u);
   EXPECT_EQ(mesh.positions[4], (std::array<double, 3>{2, 0.5, 0.25}));
   // The quad (1 4 2 0) becomes (1 4 2) and (1 2 0).
@@ -95,16 +96,18 @@ TEST(PlyMesh, ExtractsTrianglesPatchesSelectionAndKeepsTheRest) {
   // Vertex extras: flags and temperature, without x y z.
   ASSERT_EQ(mesh.vertex_extra.size(), 2u);
   EXPECT_EQ(mesh.vertex_extra[1].name, "temperature");
-  EXPECT_EQ(mesh.vertex_extra[1].values, (std::vector<double>{-7, 3, 100, -32768, 32767}));
+  EXPECT_EQ(mesh.vertex_extra[1].values.to_doubles(),
+            (std::vector<double>{-7, 3, 100, -32768, 32767}));
   // Face extras: texcoord split per corner for the quad, quality repeated.
   ASSERT_EQ(mesh.face_extra.size(), 2u);
   const PlyProperty& uv = mesh.face_extra[0];
   ASSERT_EQ(uv.offsets.size(), 5u);
-  EXPECT_EQ(std::vector<double>(uv.values.begin() + 12, uv.values.begin() + 18),
+  const std::vector<double> uv_values = uv.values.to_doubles();
+  EXPECT_EQ(std::vector<double>(uv_values.begin() + 12, uv_values.begin() + 18),
             (std::vector<double>{0.5, 0.25, 0.75, 0.125, 1, 0.5}));
-  EXPECT_EQ(std::vector<double>(uv.values.begin() + 18, uv.values.end()),
+  EXPECT_EQ(std::vector<double>(uv_values.begin() + 18, uv_values.end()),
             (std::vector<double>{0.5, 0.25, 1, 0.5, 0, 0}));
-  EXPECT_EQ(mesh.face_extra[1].values, (std::vector<double>{1, 1, 2.2f, 2.2f}));
+  EXPECT_EQ(mesh.face_extra[1].values.to_doubles(), (std::vector<double>{1, 1, 2.2f, 2.2f}));
   ASSERT_EQ(mesh.other_elements.size(), 1u);
   EXPECT_EQ(mesh.other_elements[0].name, "edge");
   EXPECT_EQ(mesh.comments.size(), 2u);
@@ -115,7 +118,7 @@ TEST(PlyMesh, IntegerPatchPropertyIsUsedWithoutQuality) {
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
       "property float z\nelement face 1\nproperty list uchar int vertex_index\nproperty int patch\n"
       "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 7\n";
-  const MeshFile mesh = mesh_of(text);
+  const MeshDocument mesh = mesh_of(text);
   EXPECT_EQ(mesh.patch, (std::vector<int>{7}));
   EXPECT_TRUE(mesh.constrained.empty());
   EXPECT_TRUE(mesh.notes.empty());
@@ -128,7 +131,7 @@ TEST(PlyReader, AcceptsCrLfHeadersSignsAndSkipsBlankHeaderLines) {
       "property double y\r\nproperty double z\r\nelement face 1\r\n"
       "property list uchar uint vertex_indices\r\nend_header\r\n+1 -2 3e2\r\n0 0 0\r\n1 1 1\r\n3 0 "
       "1 2\r\n";
-  const PlyFile ply = parse_ply(text);
+  const PlyTables ply = parse_ply_tables(text);
   EXPECT_EQ(ply.comments, (std::vector<std::string>{" two  spaces"}));
   EXPECT_EQ(ply.elements[0].properties[2].values[0], 300.0);
   EXPECT_EQ(ply.elements[0].properties[1].values[0], -2.0);

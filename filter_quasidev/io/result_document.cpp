@@ -1,4 +1,4 @@
-#include "io/result_ply.h"
+#include "io/result_document.h"
 
 #include <string>
 
@@ -22,8 +22,8 @@ std::vector<std::array<unsigned char, 3>> ramp_colors(const std::vector<double>&
 
 }  // namespace
 
-PlyFile approximated_ply(const MeshFile& mesh, const Result& result,
-                         const params::ApproximateSettings& settings) {
+MeshDocument approximated_document(const MeshDocument& mesh, const Result& result,
+                                   const params::ApproximateSettings& settings) {
   const std::vector<double>& q = settings.output_quality == params::QualityKind::Curvature
                                      ? result.k_after
                                      : result.displacement;
@@ -32,41 +32,38 @@ PlyFile approximated_ply(const MeshFile& mesh, const Result& result,
     throw Error("internal error: the engine returned " + std::to_string(result.V.rows()) +
                 " positions and " + std::to_string(q.size()) + " quality values for " +
                 std::to_string(vertex_count) + " vertices");
-  PlyFile ply = output_ply(mesh);
-  set_positions(ply, mesh, result.V);
-  PlyElement& vertex = output_element(ply, "vertex");
-  set_quality(vertex, q);
-  if (settings.colorize) set_colors(vertex, ramp_colors(q, robust_quality_range(q)));
-  return ply;
+  MeshDocument doc = mesh;
+  set_positions(doc, result.V);
+  set_quality(doc, Element::Vertex, q);
+  if (settings.colorize) set_colors(doc, Element::Vertex, ramp_colors(q, robust_quality_range(q)));
+  return doc;
 }
 
-PlyFile segmented_ply(const MeshFile& mesh, const SegmentResult& result) {
+MeshDocument segmented_document(const MeshDocument& mesh, const SegmentResult& result) {
   if (result.patch.size() != mesh.triangles.size())
     throw Error("internal error: the segmentation returned " + std::to_string(result.patch.size()) +
                 " patch ids for " + std::to_string(mesh.triangles.size()) + " faces");
-  PlyFile ply = output_ply(mesh);
-  PlyElement& face = output_element(ply, "face");
-  set_quality(face, std::vector<double>(result.patch.begin(), result.patch.end()));
+  MeshDocument doc = mesh;
+  set_quality(doc, Element::Face, std::vector<double>(result.patch.begin(), result.patch.end()));
   std::vector<std::array<unsigned char, 3>> colors;
   colors.reserve(result.patch.size());
   for (int id : result.patch) colors.push_back(patch_color(id));
-  set_colors(face, colors);
-  return ply;
+  set_colors(doc, Element::Face, colors);
+  return doc;
 }
 
-PlyFile flattened_ply(const MeshFile& mesh, const FlattenResult& result) {
+MeshDocument flattened_document(const MeshDocument& mesh, const FlattenResult& result) {
   const std::size_t face_count = mesh.triangles.size();
   if (static_cast<std::size_t>(result.uv.rows()) != face_count ||
       result.stretch.size() != face_count)
     throw Error("internal error: the flattening returned " + std::to_string(result.uv.rows()) +
                 " texture coordinate rows and " + std::to_string(result.stretch.size()) +
                 " stretch values for " + std::to_string(face_count) + " faces");
-  PlyFile ply = output_ply(mesh);
-  PlyElement& face = output_element(ply, "face");
-  set_texcoords(face, result.uv);
-  set_quality(face, result.stretch);
-  set_colors(face, ramp_colors(result.stretch, stretch_ramp_range(result.stretch)));
-  return ply;
+  MeshDocument doc = mesh;
+  set_texcoords(doc, result.uv);
+  set_quality(doc, Element::Face, result.stretch);
+  set_colors(doc, Element::Face, ramp_colors(result.stretch, stretch_ramp_range(result.stretch)));
+  return doc;
 }
 
 }  // namespace qd::meshio

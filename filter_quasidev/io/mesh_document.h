@@ -1,8 +1,8 @@
-// In-memory tables of a mesh file, shared by the readers, the writer and the command.
-// A PlyElement is a generic table (one column per property) so that every property and every
-// element the engine does not use is carried from the input to the output unchanged.
-// Values are stored as double: every PLY scalar type (8/16/32-bit integers, float, double) is
-// represented exactly, so a read/write round trip is bit-identical.
+// The document: a mesh file in memory, the one form the readers (PLY, OBJ, OFF) produce, the
+// command turns into the engine's problem, a job copies and changes (output_mesh.h) and the
+// writer writes. Its mesh part is what the engine uses; its PlyElement tables (one column per
+// property) carry every property and element the engine does not use from input to output.
+// Each column holds its values in the property's own PLY type (scalar_column.h).
 #pragma once
 
 #include <array>
@@ -11,29 +11,26 @@
 #include <string>
 #include <vector>
 
+#include "io/scalar_column.h"
+
 namespace qd::meshio {
-
-enum class ScalarType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
-
-// PLY name ("uchar", "float", ...) of a type, and its size in bytes.
-const char* scalar_type_name(ScalarType type);
-std::size_t scalar_type_size(ScalarType type);
 
 // One property of an element: a scalar column, or a list column (values of element i are
 // values[offsets[i] .. offsets[i+1]) ).
 struct PlyProperty {
   std::string name;
-  ScalarType type = ScalarType::Float32;
   bool is_list = false;
   ScalarType count_type = ScalarType::UInt8;  // lists only
-  std::vector<double> values;
+  ScalarColumn values;
   std::vector<std::size_t> offsets;  // lists only, size count + 1
 
+  ScalarType type() const { return values.type(); }
   std::size_t list_size(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
 };
 
 // A scalar column called `name` of the given type holding `values`.
-PlyProperty scalar_property(const std::string& name, ScalarType type, std::vector<double> values);
+PlyProperty scalar_property(const std::string& name, ScalarType type,
+                            const std::vector<double>& values);
 
 struct PlyElement {
   std::string name;
@@ -46,7 +43,7 @@ struct PlyElement {
 
 // A mesh as the command uses it: triangles, optional patch ids and constraints, and everything
 // else from the file kept for pass-through.
-struct MeshFile {
+struct MeshDocument {
   std::vector<std::array<double, 3>> positions;
   std::array<ScalarType, 3> position_types = {ScalarType::Float64, ScalarType::Float64,
                                               ScalarType::Float64};  // of x, y, z in the file
@@ -54,6 +51,9 @@ struct MeshFile {
   std::vector<int> patch;                  // per triangle; empty = the file has no patch ids
   std::map<int, std::string> patch_names;  // panel names by patch id (OBJ groups, PLY comments)
   std::vector<char> constrained;           // per vertex; empty = the file selects no vertex
+  // Per triangle, u v of its three corners from an OBJ file's `vt` (empty = none); written as the
+  // face `texcoord` list, ahead of the face's other properties.
+  std::vector<std::array<double, 6>> corner_uv;
   // Vertex properties other than x, y, z (one value per vertex, or lists).
   std::vector<PlyProperty> vertex_extra;
   // Face properties other than the index list (one entry per output triangle: a polygon's

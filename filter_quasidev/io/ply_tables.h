@@ -1,17 +1,19 @@
-// A PLY file as tables: its format, its elements (in file order) and its header remarks.
-// Inputs/outputs of parse_ply (ply_reader.h) and serialize_ply (ply_writer.h).
+// A PLY file as tables: its format, its elements (in file order) and its header remarks. The PLY
+// codec's own form (parse_ply_tables in ply_reader.h, serialize_ply_tables in ply_writer.h), used
+// by the document's PLY reader (ply_mesh.h) and writer (output_mesh.h); the command and the jobs
+// see only the document (mesh_document.h).
 #pragma once
 
 #include <string>
 #include <vector>
 
-#include "io/mesh_file.h"
+#include "io/mesh_document.h"
 
 namespace qd::meshio {
 
 enum class PlyFormat { Ascii, BinaryLittleEndian, BinaryBigEndian };
 
-struct PlyFile {
+struct PlyTables {
   PlyFormat format = PlyFormat::BinaryLittleEndian;
   std::vector<PlyElement> elements;
   std::vector<std::string> comments;

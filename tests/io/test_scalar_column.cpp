@@ -1,0 +1,38 @@
+// ScalarColumn: values held in their PLY type; the PLY reader keeps each property's type.
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "io/ply_reader.h"
+#include "io/scalar_column.h"
+
+using namespace qd::meshio;
+
+TEST(ScalarColumn, KeepsItsTypeAndValues) {
+  const ScalarColumn c(ScalarType::UInt8, {0, 7, 255});
+  EXPECT_EQ(c.type(), ScalarType::UInt8);
+  EXPECT_EQ(c.size(), 3u);
+  EXPECT_EQ(c.to_doubles(), (std::vector<double>{0, 7, 255}));
+  EXPECT_FALSE(c == ScalarColumn(ScalarType::Int32, {0, 7, 255}));  // same values, other type
+}
+
+TEST(ScalarColumn, RefusesAValueItsTypeCannotHold) {
+  ScalarColumn c(ScalarType::UInt8);
+  EXPECT_THROW(c.push_back(256), qd::Error);
+  EXPECT_THROW(c.push_back(0.5), qd::Error);
+  ScalarColumn f(ScalarType::Float32);
+  f.push_back(0.1);
+  EXPECT_EQ(f[0], static_cast<double>(0.1f));  // rounded to the nearest float on the way in
+}
+
+TEST(ScalarColumn, TheReaderStoresEachPropertyInItsFileType) {
+  const PlyTables ply = parse_ply_tables(
+      "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty uchar red\n"
+      "property int id\nproperty double w\nend_header\n0.5 200 -3 0.25\n");
+  const PlyElement& v = ply.elements[0];
+  EXPECT_EQ(v.properties[0].type(), ScalarType::Float32);
+  EXPECT_EQ(v.properties[1].type(), ScalarType::UInt8);
+  EXPECT_EQ(v.properties[2].type(), ScalarType::Int32);
+  EXPECT_EQ(v.properties[3].type(), ScalarType::Float64);
+  EXPECT_EQ(v.properties[1].values[0], 200);
+  EXPECT_EQ(v.properties[2].values[0], -3);
+}
