@@ -44,8 +44,8 @@ std::vector<BareGroup> bare_solver_times(const Problem& problem, int runs) {
 
   std::vector<BareGroup> out;
   for (const auto& [id, faces] : groups) {
-    const GroupMesh g = extract_group(problem.V, problem.F, faces, patch, roles.constrained, roles.interior,
-                                      incident, params);
+    const GroupMesh g = extract_group(problem.V, problem.F, faces, patch, roles.constrained,
+                                      roles.interior, incident, params);
     std::vector<Vec3> normals;
     std::vector<double> areas;
     for (Eigen::Index f = 0; f < g.solve_faces; ++f) {

@@ -11,7 +11,7 @@
 namespace qd::bench {
 
 struct BareGroup {
-  int patch = 0;          // patch id (-1 for the joint group of free seams)
+  int patch = 0;  // patch id (-1 for the joint group of free seams)
   long unknowns = 0;
   double factor_ms = 0;    // symbolic analysis + numeric factorisation, median
   double refactor_ms = 0;  // a further numeric factorisation (the analysis reused), median

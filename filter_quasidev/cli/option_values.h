@@ -17,7 +17,7 @@ namespace qd::cli {
 
 [[noreturn]] void usage(const std::string& message);
 
-double number(const std::string& option, const std::string& text);        // finite
+double number(const std::string& option, const std::string& text);  // finite
 // A whole number in [lo, hi].
 int whole_number(const std::string& option, const std::string& text, long long lo, long long hi);
 

@@ -26,7 +26,7 @@ enum class ProgressMode { Auto, On, Off };
 struct JobOptions {
   std::string input;
   std::string output;
-  std::string report;                        // empty = no JSON report
+  std::string report;  // empty = no JSON report
   ProgressMode progress = ProgressMode::Auto;
   bool quiet = false;
   bool overwrite_input = false;

@@ -17,10 +17,14 @@ double degrees(double radians) { return radians * 180.0 / M_PI; }
 
 const char* over_limit_name(OverLimit over) {
   switch (over) {
-    case OverLimit::No: return "";
-    case OverLimit::SmallestSize: return "smallest_size";
-    case OverLimit::SmallPart: return "small_part";
-    case OverLimit::TargetCount: return "target_count";
+    case OverLimit::No:
+      return "";
+    case OverLimit::SmallestSize:
+      return "smallest_size";
+    case OverLimit::SmallPart:
+      return "small_part";
+    case OverLimit::TargetCount:
+      return "target_count";
   }
   return "";
 }
@@ -29,9 +33,10 @@ Json patch(int id, const SegmentPatch& p, const SegmentParams& q) {
   return {{"id", id},
           {"faces", p.faces},
           {"area", p.area},
-          {"proxy", {{"kind", proxy_kind(p.proxy)},
-                     {"axis", {p.proxy.axis.x(), p.proxy.axis.y(), p.proxy.axis.z()}},
-                     {"angle_deg", degrees(p.proxy.angle)}}},
+          {"proxy",
+           {{"kind", proxy_kind(p.proxy)},
+            {"axis", {p.proxy.axis.x(), p.proxy.axis.y(), p.proxy.axis.z()}},
+            {"angle_deg", degrees(p.proxy.angle)}}},
           {"max_error_deg", p.max_error_deg},
           {"rms_error_deg", p.rms_error_deg},
           {"boundary_loops", p.boundary_loops},

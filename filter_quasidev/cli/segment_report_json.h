@@ -16,7 +16,7 @@ struct SegmentReportContext {
   const SegmentOptions& options;
   int vertices;
   int faces;
-  bool has_patch_ids;    // the input has patch ids (used only with --keep-patches)
+  bool has_patch_ids;  // the input has patch ids (used only with --keep-patches)
   int selected_faces;
   const std::vector<std::string>& notes;  // the reader's remarks (e.g. polygons triangulated)
 };

@@ -49,8 +49,8 @@ bool QuasiDevFilterPlugin::applyFilter(QAction* action, MeshDocument& md,
                                        const RichParameterList& par, vcg::CallBackPos* cb) {
   const qdml::FilterSpec& f = spec(*this, action);
   MeshModel& mm = *md.mm();
-  const qdml::FilterRun run = f.run(mm.cm, mm.hasDataMask(MeshModel::MM_FACEQUALITY),
-                                    qdml::read_values(f, mm.cm, par), cb);
+  const qdml::FilterRun run =
+      f.run(mm.cm, mm.hasDataMask(MeshModel::MM_FACEQUALITY), qdml::read_values(f, mm.cm, par), cb);
   for (const std::string& line : run.log) Log(line);
   if (!run.ok) {
     errorMessage = qdml::qs(f.name + " failed: " + run.error);

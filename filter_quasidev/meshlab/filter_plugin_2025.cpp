@@ -15,8 +15,8 @@ QVariant variant(const qdml::Figure& figure) {
       [](const auto& value) {
         using T = std::decay_t<decltype(value)>;
         if constexpr (std::is_same_v<T, std::vector<double>>) {
-          const Eigen::VectorXd v =
-              Eigen::Map<const Eigen::VectorXd>(value.data(), static_cast<Eigen::Index>(value.size()));
+          const Eigen::VectorXd v = Eigen::Map<const Eigen::VectorXd>(
+              value.data(), static_cast<Eigen::Index>(value.size()));
           return QVariant::fromValue(v);
         } else {
           return QVariant(value);
@@ -68,7 +68,8 @@ int QuasiDevFilterPlugin::postCondition(const QAction* action) const {
   return qdml::mesh_mask(spec(*this, action).changes);
 }
 
-RichParameterList QuasiDevFilterPlugin::initParameterList(const QAction* action, const MeshModel& m) {
+RichParameterList QuasiDevFilterPlugin::initParameterList(const QAction* action,
+                                                          const MeshModel& m) {
   RichParameterList list;
   qdml::add_parameters(spec(*this, action), m.cm, list);
   return list;

@@ -7,10 +7,10 @@
 //        figures as std::map<std::string, QVariant> (pymeshlab: a dict).
 #pragma once
 
+#include <common/plugins/interfaces/filter_plugin.h>
+
 #include <map>
 #include <string>
-
-#include <common/plugins/interfaces/filter_plugin.h>
 
 class QuasiDevFilterPlugin : public QObject, public FilterPlugin {
   Q_OBJECT

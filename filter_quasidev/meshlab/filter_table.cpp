@@ -7,7 +7,8 @@
 namespace qdml {
 
 const std::vector<FilterSpec>& filter_table() {
-  static const std::vector<FilterSpec> table = {approximate_filter(), segment_filter(), flatten_filter()};
+  static const std::vector<FilterSpec> table = {approximate_filter(), segment_filter(),
+                                                flatten_filter()};
   return table;
 }
 

@@ -12,8 +12,11 @@
 #include <variant>
 #include <vector>
 
-#include <cstring>          // wrap/callback.h uses strcpy without including <cstring>
+// wrap/callback.h uses strcpy without including <cstring>, so it comes after it.
+// clang-format off
+#include <cstring>
 #include <wrap/callback.h>  // vcg::CallBackPos
+// clang-format on
 
 #include "param.h"
 

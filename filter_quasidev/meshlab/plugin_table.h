@@ -1,8 +1,9 @@
 // What every plugin class does with filter_table(), written once against the names the MeshLab
 // 2020.09 and 2025.07 APIs share (RichParameterList, RichFloat/Int/Bool/Enum, MeshModel::MM_*,
 // the FilterClass bits) and the one they spell differently (the file-save parameter:
-// RichSaveFile in 2020.09, RichFileSave in 2025.07; "RichSaveFile" in .mlx files of both). Included by filter_plugin_2020.cpp and filter_plugin_2025.cpp after
-// their MeshLab interface header, so each compiles it against its own generation.
+// RichSaveFile in 2020.09, RichFileSave in 2025.07; "RichSaveFile" in .mlx files of both). Included
+// by filter_plugin_2020.cpp and filter_plugin_2025.cpp after their MeshLab interface header, so
+// each compiles it against its own generation.
 #pragma once
 
 #include <string>
@@ -24,8 +25,9 @@ inline QString qs(const std::string& s) { return QString::fromStdString(s); }
 // The entry of filter id `id` (its index in filter_table()), or null for an unknown id.
 inline const FilterSpec* filter_spec(int id) {
   const std::vector<FilterSpec>& table = filter_table();
-  return id >= 0 && static_cast<std::size_t>(id) < table.size() ? &table[static_cast<std::size_t>(id)]
-                                                                 : nullptr;
+  return id >= 0 && static_cast<std::size_t>(id) < table.size()
+             ? &table[static_cast<std::size_t>(id)]
+             : nullptr;
 }
 
 // A text of filter `id` (text: &FilterSpec::name, python_name or info); empty for an unknown id.
@@ -40,11 +42,21 @@ template <typename Interface>
 typename Interface::FilterClass filter_class(const FilterSpec& f) {
   int bits = 0;
   for (const FilterCategory c : f.categories) switch (c) {
-      case FilterCategory::Smoothing: bits |= Interface::Smoothing; break;
-      case FilterCategory::Quality: bits |= Interface::Quality; break;
-      case FilterCategory::VertexColoring: bits |= Interface::VertexColoring; break;
-      case FilterCategory::FaceColoring: bits |= Interface::FaceColoring; break;
-      case FilterCategory::Texture: bits |= Interface::Texture; break;
+      case FilterCategory::Smoothing:
+        bits |= Interface::Smoothing;
+        break;
+      case FilterCategory::Quality:
+        bits |= Interface::Quality;
+        break;
+      case FilterCategory::VertexColoring:
+        bits |= Interface::VertexColoring;
+        break;
+      case FilterCategory::FaceColoring:
+        bits |= Interface::FaceColoring;
+        break;
+      case FilterCategory::Texture:
+        bits |= Interface::Texture;
+        break;
     }
   return typename Interface::FilterClass(bits);
 }
@@ -53,14 +65,30 @@ typename Interface::FilterClass filter_class(const FilterSpec& f) {
 inline int mesh_mask(const std::vector<MeshPart>& parts) {
   int mask = MeshModel::MM_NONE;
   for (const MeshPart p : parts) switch (p) {
-      case MeshPart::VertexPositions: mask |= MeshModel::MM_VERTCOORD; break;
-      case MeshPart::VertexNormals: mask |= MeshModel::MM_VERTNORMAL; break;
-      case MeshPart::FaceNormals: mask |= MeshModel::MM_FACENORMAL; break;
-      case MeshPart::VertexQuality: mask |= MeshModel::MM_VERTQUALITY; break;
-      case MeshPart::VertexColor: mask |= MeshModel::MM_VERTCOLOR; break;
-      case MeshPart::FaceQuality: mask |= MeshModel::MM_FACEQUALITY; break;
-      case MeshPart::FaceColor: mask |= MeshModel::MM_FACECOLOR; break;
-      case MeshPart::WedgeTexCoord: mask |= MeshModel::MM_WEDGTEXCOORD; break;
+      case MeshPart::VertexPositions:
+        mask |= MeshModel::MM_VERTCOORD;
+        break;
+      case MeshPart::VertexNormals:
+        mask |= MeshModel::MM_VERTNORMAL;
+        break;
+      case MeshPart::FaceNormals:
+        mask |= MeshModel::MM_FACENORMAL;
+        break;
+      case MeshPart::VertexQuality:
+        mask |= MeshModel::MM_VERTQUALITY;
+        break;
+      case MeshPart::VertexColor:
+        mask |= MeshModel::MM_VERTCOLOR;
+        break;
+      case MeshPart::FaceQuality:
+        mask |= MeshModel::MM_FACEQUALITY;
+        break;
+      case MeshPart::FaceColor:
+        mask |= MeshModel::MM_FACECOLOR;
+        break;
+      case MeshPart::WedgeTexCoord:
+        mask |= MeshModel::MM_WEDGTEXCOORD;
+        break;
     }
   return mask;
 }

@@ -1,12 +1,14 @@
 #include "quasidev_adapter.h"
 
-#include <stdexcept>
-#include <utility>
-
-#include "engine_mesh.h"  // first: MeshLab's mesh type before the vcg algorithms below
-
+// MeshLab's mesh type comes before the vcg algorithms that use it.
+// clang-format off
+#include "engine_mesh.h"
 #include <vcg/complex/algorithms/update/bounding.h>
 #include <vcg/complex/algorithms/update/normal.h>
+// clang-format on
+
+#include <stdexcept>
+#include <utility>
 
 #include "approximate/quasidev.h"
 #include "approximate/validate.h"

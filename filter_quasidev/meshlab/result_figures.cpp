@@ -11,10 +11,14 @@ namespace {
 // "developability" (curve 0, defect 1, both 2); -1 when the patch was left unchanged.
 int developability_code(const qd::PatchReport& p) {
   switch (p.developability) {
-    case qd::Term::Curve: return 0;
-    case qd::Term::Defect: return 1;
-    case qd::Term::Both: return 2;
-    case qd::Term::None: break;
+    case qd::Term::Curve:
+      return 0;
+    case qd::Term::Defect:
+      return 1;
+    case qd::Term::Both:
+      return 2;
+    case qd::Term::None:
+      break;
   }
   return -1;
 }
@@ -52,10 +56,13 @@ std::map<std::string, Figure> result_figures(const qd::Result& r) {
       {"patch_iterations", figure_list(r.patches, [](const P& p) { return p.iterations; })},
       {"patch_abd_reduction", figure_list(r.patches, [](const P& p) { return p.abd_reduction; })},
       {"patch_obd_reduction", figure_list(r.patches, [](const P& p) { return p.obd_reduction; })},
-      {"patch_fit_residual_deg", figure_list(r.patches, [](const P& p) { return p.fit_residual_deg; })},
+      {"patch_fit_residual_deg",
+       figure_list(r.patches, [](const P& p) { return p.fit_residual_deg; })},
       {"patch_developability", figure_list(r.patches, developability_code)},
-      {"patch_max_displacement", figure_list(r.patches, [](const P& p) { return p.after.max_disp; })},
-      {"patch_max_abs_k_after", figure_list(r.patches, [](const P& p) { return p.after.max_abs_k; })},
+      {"patch_max_displacement",
+       figure_list(r.patches, [](const P& p) { return p.after.max_disp; })},
+      {"patch_max_abs_k_after",
+       figure_list(r.patches, [](const P& p) { return p.after.max_abs_k; })},
   };
 }
 

@@ -3,9 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "engine_mesh.h"  // first: MeshLab's mesh type
-
 #include "declared_parameters.h"
+#include "engine_mesh.h"
 #include "jobs.h"
 #include "printf_string.h"
 #include "segment/patch_color.h"

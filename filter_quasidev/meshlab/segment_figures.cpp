@@ -29,7 +29,8 @@ std::map<std::string, Figure> segment_figures(const qd::SegmentResult& r) {
       {"patch_boundary_loops", figure_list(r.patches, [](const P& p) { return p.boundary_loops; })},
       {"patch_disk", figure_list(r.patches, [](const P& p) { return p.disk ? 1 : 0; })},
       {"patch_over_limit",
-       figure_list(r.patches, [](const P& p) { return p.over_limit != qd::OverLimit::No ? 1 : 0; })},
+       figure_list(r.patches,
+                   [](const P& p) { return p.over_limit != qd::OverLimit::No ? 1 : 0; })},
   };
 }
 

@@ -132,8 +132,7 @@ TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
   EXPECT_THROW(approximate(curve), Error);  // the paper cannot fit it: refused, as before
   const Result r = approximate(p);
   EXPECT_EQ(r.patches[0].developability, Term::Defect);
-  EXPECT_NE(term_choice_text(r.patches[0]).find("no Gauss-image curve fits"),
-            std::string::npos);
+  EXPECT_NE(term_choice_text(r.patches[0]).find("no Gauss-image curve fits"), std::string::npos);
   EXPECT_GT(r.abd_reduction, 1.0);
   EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
 }
@@ -152,16 +151,17 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
     EXPECT_NE(term_choice_text(patch).find(term_name(c.term)), std::string::npos);
   }
   EXPECT_EQ(kept, 1);
-  for (const auto& [mode, name] :
-       {std::pair{Developability::Curve, Term::Curve}, std::pair{Developability::Defect, Term::Defect},
-        std::pair{Developability::Both, Term::Both}}) {
+  for (const auto& [mode, name] : {std::pair{Developability::Curve, Term::Curve},
+                                   std::pair{Developability::Defect, Term::Defect},
+                                   std::pair{Developability::Both, Term::Both}}) {
     Problem alone = p;
     alone.params.developability = mode;
     const Result single = approximate(alone);
     if (patch.developability == name) {
       EXPECT_EQ(r.V, single.V) << term_name(name);
     }
-    EXPECT_GE(r.abd_reduction, single.abd_reduction - 2.0) << term_name(name) << ": percentage points";
+    EXPECT_GE(r.abd_reduction, single.abd_reduction - 2.0)
+        << term_name(name) << ": percentage points";
   }
 }
 

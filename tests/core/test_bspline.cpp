@@ -52,7 +52,8 @@ TEST(BSpline, ClampedEndsInterpolateEndControlPoints) {
 
 TEST(BSpline, PeriodicFitClosesAndFollowsACircle) {
   std::vector<Vec2> pts;
-  for (int j = 0; j < 60; ++j) pts.push_back(Vec2(std::cos(2 * kPi * j / 60), std::sin(2 * kPi * j / 60)));
+  for (int j = 0; j < 60; ++j)
+    pts.push_back(Vec2(std::cos(2 * kPi * j / 60), std::sin(2 * kPi * j / 60)));
   const std::vector<double> u = qd::chord_length_params(pts, true);
   const qd::BSpline2 s = qd::fit_bspline(pts, u, 12, 0.0, true);
   // Closes with continuous tangent and curvature.

@@ -21,9 +21,9 @@ TEST(ConjugateGradients, AnExactPreconditionerSolvesInOneIteration) {
   const Eigen::LDLT<Eigen::MatrixXd> exact(M);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(30, -1.0, 2.0);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(30);
-  const CgOutcome out = conjugate_gradients([&](const Eigen::VectorXd& p) -> Eigen::VectorXd { return M * p; },
-                                            [&](const Eigen::VectorXd& r) -> Eigen::VectorXd { return exact.solve(r); },
-                                            b, x, 1e-10, 40);
+  const CgOutcome out = conjugate_gradients(
+      [&](const Eigen::VectorXd& p) -> Eigen::VectorXd { return M * p; },
+      [&](const Eigen::VectorXd& r) -> Eigen::VectorXd { return exact.solve(r); }, b, x, 1e-10, 40);
   EXPECT_TRUE(out.converged);
   EXPECT_EQ(out.iterations, 1);
   EXPECT_LT((M * x - b).norm(), 1e-10 * b.norm());
@@ -57,8 +57,8 @@ TEST(ConjugateGradients, AWarmStartSavesIterationsToTheSameTolerance) {
   const auto solve = [&](const Eigen::VectorXd* guess, Eigen::VectorXd& x) {
     x = x0;
     return conjugate_gradients([&](const Eigen::VectorXd& p) -> Eigen::VectorXd { return M * p; },
-                               [&](const Eigen::VectorXd& r) -> Eigen::VectorXd { return r / 3.0; }, b,
-                               x, 1e-6, 400, guess);
+                               [&](const Eigen::VectorXd& r) -> Eigen::VectorXd { return r / 3.0; },
+                               b, x, 1e-6, 400, guess);
   };
   Eigen::VectorXd cold, warm, ignored;
   const CgOutcome from_reference = solve(nullptr, cold);
@@ -75,14 +75,14 @@ TEST(ConjugateGradients, AWarmStartSavesIterationsToTheSameTolerance) {
 
 TEST(ConjugateGradients, GivesUpEarlyWhenItCannotMakeTheToleranceInTime) {
   const int n = 400;  // eigenvalues spread evenly in log scale over 1 .. 1e6
-  const Eigen::MatrixXd M = Eigen::VectorXd::LinSpaced(n, 0.0, 6.0).unaryExpr([](double e) {
-                              return std::pow(10.0, e);
-                            }).asDiagonal();
+  const Eigen::MatrixXd M = Eigen::VectorXd::LinSpaced(n, 0.0, 6.0)
+                                .unaryExpr([](double e) { return std::pow(10.0, e); })
+                                .asDiagonal();
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(n);
   Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-  const CgOutcome out = conjugate_gradients([&](const Eigen::VectorXd& p) -> Eigen::VectorXd { return M * p; },
-                                            [](const Eigen::VectorXd& r) -> Eigen::VectorXd { return r; },
-                                            b, x, 1e-10, 40);
+  const CgOutcome out = conjugate_gradients(
+      [&](const Eigen::VectorXd& p) -> Eigen::VectorXd { return M * p; },
+      [](const Eigen::VectorXd& r) -> Eigen::VectorXd { return r; }, b, x, 1e-10, 40);
   EXPECT_FALSE(out.converged);
   EXPECT_GE(out.iterations, kCgPatience);
   EXPECT_LT(out.iterations, 40);

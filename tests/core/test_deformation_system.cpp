@@ -41,7 +41,8 @@ struct Fixture {
                                : Vec3(gauss(rng), gauss(rng), gauss(rng)).normalized());
     ref = g.V0;
     for (Eigen::Index v = 0; v < ref.rows(); ++v)
-      if (!g.fixed[static_cast<size_t>(v)]) ref.row(v) += 0.05 * Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
+      if (!g.fixed[static_cast<size_t>(v)])
+        ref.row(v) += 0.05 * Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
   }
 };
 
@@ -88,7 +89,8 @@ void dense_system(const Fixture& s, double w, double alpha, double ae, Eigen::Ma
         free_cols.push_back(3 * v + d);
     }
   A_free.resize(A.rows(), static_cast<Eigen::Index>(free_cols.size()));
-  for (size_t k = 0; k < free_cols.size(); ++k) A_free.col(static_cast<Eigen::Index>(k)) = A.col(free_cols[k]);
+  for (size_t k = 0; k < free_cols.size(); ++k)
+    A_free.col(static_cast<Eigen::Index>(k)) = A.col(free_cols[k]);
 }
 
 // The sparse system and its dense twin for one set of weights, the twin's columns put in the
@@ -113,8 +115,9 @@ struct Both {
   Both(double w, double alpha, double ae, SolverKind solver = SolverKind::Auto,
        SolveMethod method = SolveMethod::Direct, bool smooth = false, bool defect_rows = false)
       : s(smooth), sys(s.g, params(w, alpha, solver, method), ae, rows_of(s, defect_rows)) {
-    sys.set_rows(s.targets, defect_rows ? sys.linearise_defects_at(s.ref, vertex_angles(s.ref, s.g.F))
-                                        : DefectLinearisation{});
+    sys.set_rows(s.targets, defect_rows
+                                ? sys.linearise_defects_at(s.ref, vertex_angles(s.ref, s.g.F))
+                                : DefectLinearisation{});
     Eigen::MatrixXd by_vertex;
     dense_system(s, w, alpha, ae, by_vertex, c);
     if (defect_rows) append_defect_rows(by_vertex);
@@ -162,7 +165,8 @@ struct Both {
   Eigen::VectorXd free_vector(const Positions& X) const {
     Eigen::VectorXd x(A.cols());
     for (size_t v = 0; v < sys.unknown().size(); ++v)
-      if (sys.unknown()[v] >= 0) x.segment<3>(3 * sys.unknown()[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
+      if (sys.unknown()[v] >= 0)
+        x.segment<3>(3 * sys.unknown()[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
     return x;
   }
 };
@@ -172,7 +176,8 @@ TEST(DeformationSystem, SparseEqualsDenseAssembly) {
   auto& [s, sys, A, c] = b;
 
   const Eigen::MatrixXd lower = Eigen::MatrixXd(sys.matrix());
-  const Eigen::MatrixXd M = lower + lower.transpose() - Eigen::MatrixXd(lower.diagonal().asDiagonal());
+  const Eigen::MatrixXd M =
+      lower + lower.transpose() - Eigen::MatrixXd(lower.diagonal().asDiagonal());
   const Eigen::MatrixXd expected = A.transpose() * A;
   ASSERT_EQ(M.rows(), expected.rows());
   EXPECT_LT((M - expected).norm(), 1e-9 * expected.norm());
@@ -206,7 +211,8 @@ TEST_P(EverySolver, DefectRowsSolveIsTheLeastSquaresMinimiser) {
   const Eigen::VectorXd exact = A.colPivHouseholderQr().solve(c);
   Both plain(30.0, 10.0, 0.4, GetParam());  // same unknown order: defect rows leave M's pattern
   const Eigen::VectorXd without = plain.A.colPivHouseholderQr().solve(plain.c);
-  ASSERT_GT((exact - without).cwiseAbs().maxCoeff(), 1e-3) << "the defect rows change the minimiser";
+  ASSERT_GT((exact - without).cwiseAbs().maxCoeff(), 1e-3)
+      << "the defect rows change the minimiser";
   EXPECT_LT((b.free_vector(sys.solve(s.ref)) - exact).cwiseAbs().maxCoeff(), 1e-8);
 }
 
@@ -221,7 +227,8 @@ TEST_P(EverySolver, IterativeSolveIsTheMinimiserToItsTolerance) {
   EXPECT_LT(sys.times().cg_iterations, kCgIterations);
   EXPECT_EQ(sys.times().factorizations, 2) << "two scalar factors, M never factorised";
   const Eigen::MatrixXd lower = Eigen::MatrixXd(sys.matrix());
-  const Eigen::MatrixXd M = lower + lower.transpose() - Eigen::MatrixXd(lower.diagonal().asDiagonal());
+  const Eigen::MatrixXd M =
+      lower + lower.transpose() - Eigen::MatrixXd(lower.diagonal().asDiagonal());
   const auto energy = [&](const Eigen::VectorXd& e) { return std::sqrt(e.dot(M * e)); };
   EXPECT_LT(energy(x - exact), 10 * kCgTolerance * energy(exact - x0));
 }

@@ -38,7 +38,8 @@ double root_weight_near(const qd::DigitalImage& im, const Vec2& tp) {
   const int x0 = static_cast<int>(std::floor(p.x())), y0 = static_cast<int>(std::floor(p.y()));
   double sum = 0;
   for (int y = y0; y <= y0 + 1; ++y)
-    for (int x = x0; x <= x0 + 1; ++x) sum += std::sqrt(im.r[static_cast<size_t>(y) * im.width + x]);
+    for (int x = x0; x <= x0 + 1; ++x)
+      sum += std::sqrt(im.r[static_cast<size_t>(y) * im.width + x]);
   return sum;
 }
 

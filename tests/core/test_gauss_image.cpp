@@ -27,14 +27,16 @@ TEST(GaussImage, MomentsRejectBadInput) {
   EXPECT_THROW(qd::gauss_moments(n, {1, 1, 0}), qd::Error);
   EXPECT_THROW(qd::gauss_moments(n, {1, 1}), qd::Error);
   EXPECT_THROW(qd::gauss_moments(n, {1, 1, std::nan("")}), qd::Error);
-  EXPECT_THROW(qd::gauss_moments({Vec3::UnitX(), Vec3::UnitY(), Vec3(0, 0, 2)}, {1, 1, 1}), qd::Error);
+  EXPECT_THROW(qd::gauss_moments({Vec3::UnitX(), Vec3::UnitY(), Vec3(0, 0, 2)}, {1, 1, 1}),
+               qd::Error);
   const qd::GaussMoments m = qd::gauss_moments(n, {1, 2, 0.5});
   EXPECT_DOUBLE_EQ(m.total_area, 3.5);
   EXPECT_TRUE(m.resultant.isApprox(Vec3(1, 2, 0.5)));
 }
 
 TEST(GaussImage, FillsSphereOnlyForSphereLikeImages) {
-  const Samples sphere = curve_samples(Eigen::Matrix3d::Identity(), 0, 0, [](double) { return 0.0; }, 0, 0, 3000);
+  const Samples sphere = curve_samples(
+      Eigen::Matrix3d::Identity(), 0, 0, [](double) { return 0.0; }, 0, 0, 3000);
   EXPECT_TRUE(qd::fills_sphere(qd::gauss_moments(sphere.normals, sphere.areas)));
   Samples hemisphere = sphere;
   for (Vec3& v : hemisphere.normals) v.z() = std::abs(v.z());
@@ -47,11 +49,14 @@ TEST(GaussImage, PointLikeDetectsPlanesNotShortArcs) {
   const Vec3 n0 = Vec3(1, -2, 0.5).normalized();
   auto flat = [](double) { return 0.0; };
   const Samples plane = curve_samples(frame_for(n0), 0, 0, flat, 500, 0.4 * kDeg);
-  EXPECT_TRUE(qd::is_point_like(plane.normals, plane.areas, qd::gauss_moments(plane.normals, plane.areas)));
+  EXPECT_TRUE(
+      qd::is_point_like(plane.normals, plane.areas, qd::gauss_moments(plane.normals, plane.areas)));
   const Samples blob = curve_samples(frame_for(n0), 0, 0, flat, 500, 3 * kDeg);  // noisy plane
-  EXPECT_TRUE(qd::is_point_like(blob.normals, blob.areas, qd::gauss_moments(blob.normals, blob.areas)));
+  EXPECT_TRUE(
+      qd::is_point_like(blob.normals, blob.areas, qd::gauss_moments(blob.normals, blob.areas)));
   const Samples arc = cylinder(Vec3(0, 0, 1), 0, 12 * kDeg, 500, 0.3 * kDeg);
-  EXPECT_FALSE(qd::is_point_like(arc.normals, arc.areas, qd::gauss_moments(arc.normals, arc.areas)));
+  EXPECT_FALSE(
+      qd::is_point_like(arc.normals, arc.areas, qd::gauss_moments(arc.normals, arc.areas)));
 }
 
 TEST(GaussImage, GreatCirclePoleIsTheCylinderAxisDespiteOutliers) {
@@ -78,12 +83,14 @@ TEST(GaussImage, PoleSignComesFromTheData) {
   // The pole leans towards the normals (Σ a n·p >= 0): flipping the normals flips it.
   for (const Vec3& axis : {Vec3(0, 0, 1), Vec3(0, 0, -1), Vec3(1, 1, 1).normalized()}) {
     Samples s = cone(axis, 70 * kDeg, 0, 150 * kDeg, 1000, 0.5 * kDeg);
-    const Vec3 p = qd::best_great_circle_pole(s.normals, s.areas, qd::gauss_moments(s.normals, s.areas));
+    const Vec3 p =
+        qd::best_great_circle_pole(s.normals, s.areas, qd::gauss_moments(s.normals, s.areas));
     double lean = 0;
     for (size_t i = 0; i < s.normals.size(); ++i) lean += s.areas[i] * s.normals[i].dot(p);
     EXPECT_GT(lean, 0.0);
     for (Vec3& n : s.normals) n = -n;
-    const Vec3 q = qd::best_great_circle_pole(s.normals, s.areas, qd::gauss_moments(s.normals, s.areas));
+    const Vec3 q =
+        qd::best_great_circle_pole(s.normals, s.areas, qd::gauss_moments(s.normals, s.areas));
     EXPECT_LT((p + q).norm(), 1e-9);
   }
 }
@@ -92,7 +99,8 @@ TEST(GaussImage, FrameCentresTheWidestGapOnTheSeam) {
   const Vec3 axis = Vec3(0.3, 0.3, 0.9).normalized();
   const Samples s = cylinder(axis, 1.0, 1.0 + 200 * kDeg, 1000, 0.2 * kDeg, 5);  // 5 stray outliers
   const qd::GaussMoments m = qd::gauss_moments(s.normals, s.areas);
-  const qd::GaussFrame f = qd::gauss_frame(s.normals, s.areas, qd::best_great_circle_pole(s.normals, s.areas, m));
+  const qd::GaussFrame f =
+      qd::gauss_frame(s.normals, s.areas, qd::best_great_circle_pole(s.normals, s.areas, m));
   EXPECT_FALSE(f.closed);
   // The gap may swallow up to 1% of the area (stray outliers, thin ends): 2° of this arc.
   EXPECT_GT(f.gap / kDeg, 160.0 - 0.5);
@@ -119,7 +127,8 @@ TEST(GaussImage, FrameDetectsTubes) {
   const Samples arc = cylinder(Vec3(1, 0, 0), 0, 300 * kDeg, 2000, 0.5 * kDeg);
   for (const Samples* s : {&tube, &arc}) {
     const qd::GaussMoments m = qd::gauss_moments(s->normals, s->areas);
-    const qd::GaussFrame f = qd::gauss_frame(s->normals, s->areas, qd::best_great_circle_pole(s->normals, s->areas, m));
+    const qd::GaussFrame f =
+        qd::gauss_frame(s->normals, s->areas, qd::best_great_circle_pole(s->normals, s->areas, m));
     EXPECT_EQ(f.closed, s == &tube);
   }
 }

@@ -59,18 +59,21 @@ inline Samples curve_samples(const Eigen::Matrix3d& frame, double t0, double t1,
 // Normals of a cylinder with axis `axis` over azimuths [t0, t1]: a great-circle arc.
 inline Samples cylinder(const Vec3& axis, double t0, double t1, int count, double noise_rad,
                         int outliers = 0) {
-  return curve_samples(frame_for(axis), t0, t1, [](double) { return kPi / 2; }, count, noise_rad,
-                       outliers);
+  return curve_samples(
+      frame_for(axis), t0, t1, [](double) { return kPi / 2; }, count, noise_rad, outliers);
 }
 
 // Normals of a cone whose normals make angle `beta` with `axis`: a small circle.
 inline Samples cone(const Vec3& axis, double beta, double t0, double t1, int count,
                     double noise_rad) {
-  return curve_samples(frame_for(axis), t0, t1, [beta](double) { return beta; }, count, noise_rad);
+  return curve_samples(
+      frame_for(axis), t0, t1, [beta](double) { return beta; }, count, noise_rad);
 }
 
 // Angle (radians) between two unit vectors.
-inline double angle(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+inline double angle(const Vec3& a, const Vec3& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b));
+}
 
 // Random rotation (deterministic from the seed).
 inline Eigen::Matrix3d random_rotation(unsigned seed) {

@@ -57,7 +57,8 @@ TEST(Metrics, FanWithObtuseFaces) {
   const double area = 0.25 + std::sqrt(3.0) / 2;
   EXPECT_NEAR(qd::vertex_angles(V, F).defect[0], kPi / 6, 1e-12);
   EXPECT_NEAR(qd::vertex_angles(V, F).area[0], area, 1e-12);
-  EXPECT_NEAR(qd::gaussian_curvature(qd::vertex_angles(V, F), only(0, 4))[0], (kPi / 6) / area, 1e-12);
+  EXPECT_NEAR(qd::gaussian_curvature(qd::vertex_angles(V, F), only(0, 4))[0], (kPi / 6) / area,
+              1e-12);
   // W is an acute corner of both obtuse faces: a quarter of each.
   EXPECT_NEAR(qd::vertex_angles(V, F).area[3], std::sqrt(3.0) / 4, 1e-12);
 }

@@ -17,8 +17,10 @@ namespace {
 
 TEST(SerialLibraries, HelperThreadsRunOpenMpRegionsSerially) {
   using GetCount = int (*)();
-  const auto max_active_levels = reinterpret_cast<GetCount>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
-  if (!max_active_levels) GTEST_SKIP() << "no OpenMP runtime in this process (a build without CHOLMOD)";
+  const auto max_active_levels =
+      reinterpret_cast<GetCount>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+  if (!max_active_levels)
+    GTEST_SKIP() << "no OpenMP runtime in this process (a build without CHOLMOD)";
   const SerialLibraries serial;
   constexpr size_t kThreads = 4;
   std::vector<int> levels(kThreads, -1);
@@ -41,7 +43,8 @@ int threads_in_this_process() {
 }
 
 TEST(SerialLibraries, OpenBlasWorkersStopWhileTheEngineRuns) {
-  if (!dlsym(RTLD_DEFAULT, "blas_thread_shutdown_")) GTEST_SKIP() << "OpenBLAS is not this process's BLAS";
+  if (!dlsym(RTLD_DEFAULT, "blas_thread_shutdown_"))
+    GTEST_SKIP() << "OpenBLAS is not this process's BLAS";
   const int before = threads_in_this_process();
   if (before == 1) GTEST_SKIP() << "OpenBLAS started no workers (one core)";
   {

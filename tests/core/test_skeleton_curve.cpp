@@ -30,19 +30,21 @@ TEST(SkeletonCurve, ChainWithSpurIsOrderedAndSpurDropped) {
   EXPECT_FALSE(c.closed);
   ASSERT_EQ(c.points.size(), 31u);
   const double dir = c.points.back().x() > c.points.front().x() ? 1 : -1;
-  for (size_t k = 1; k < c.points.size(); ++k) EXPECT_DOUBLE_EQ(dir * (c.points[k].x() - c.points[k - 1].x()), 1.0);
+  for (size_t k = 1; k < c.points.size(); ++k)
+    EXPECT_DOUBLE_EQ(dir * (c.points[k].x() - c.points[k - 1].x()), 1.0);
   for (const Vec2& p : c.points) EXPECT_LT(p.y(), 12.0);  // no spur pixel
 }
 
 TEST(SkeletonCurve, SeparateBlobsAreChainedAndWeakOutlierDropped) {
   // Three strong clusters far apart on a line (a coarse mesh's Gauss image) and one faint
   // outlier pixel off the line.
-  std::vector<SkeletonPoint> pts = {pixel(40, 5), pixel(41, 5), pixel(5, 5), pixel(6, 5),
+  std::vector<SkeletonPoint> pts = {pixel(40, 5), pixel(41, 5), pixel(5, 5),        pixel(6, 5),
                                     pixel(22, 5), pixel(23, 5), pixel(22, 30, 0.01)};
   const qd::OrderedSkeleton c = qd::order_skeleton(pts, 64, false);
   ASSERT_EQ(c.points.size(), 6u);
   const double dir = c.points.back().x() > c.points.front().x() ? 1 : -1;
-  for (size_t k = 1; k < c.points.size(); ++k) EXPECT_GT(dir * (c.points[k].x() - c.points[k - 1].x()), 0.0);
+  for (size_t k = 1; k < c.points.size(); ++k)
+    EXPECT_GT(dir * (c.points[k].x() - c.points[k - 1].x()), 0.0);
   for (const Vec2& p : c.points) EXPECT_DOUBLE_EQ(p.y(), 5.5);
 }
 
@@ -55,7 +57,8 @@ TEST(SkeletonCurve, PeriodicLoopIsClosedEvenWithSpur) {
   EXPECT_TRUE(c.closed);
   EXPECT_DOUBLE_EQ(std::abs(c.shift.x()), W);
   ASSERT_EQ(c.points.size(), static_cast<size_t>(W));
-  for (size_t k = 1; k < c.points.size(); ++k) EXPECT_LE((c.points[k] - c.points[k - 1]).norm(), 1.5);
+  for (size_t k = 1; k < c.points.size(); ++k)
+    EXPECT_LE((c.points[k] - c.points[k - 1]).norm(), 1.5);
   // The closing step (last -> first + shift) is short too: no cut at the seam.
   EXPECT_LE((c.points.front() + c.shift - c.points.back()).norm(), 1.5);
 }
@@ -85,7 +88,9 @@ TEST(SkeletonCurve, ExtendEndsReachesTheSamples) {
 TEST(SkeletonCurve, ExtendEndsFollowsCurvature) {
   // A circular arc of radius 30 (120°); samples continue the circle 20° beyond each end.
   const double R = 30;
-  auto at = [&](double deg) { return Vec2(R * std::cos(deg * kPi / 180), R * std::sin(deg * kPi / 180)); };
+  auto at = [&](double deg) {
+    return Vec2(R * std::cos(deg * kPi / 180), R * std::sin(deg * kPi / 180));
+  };
   std::vector<Vec2> arc, samples;
   for (double a = 30; a <= 150; a += 1.5) arc.push_back(at(a));
   for (double a = 10; a <= 170; a += 0.25) samples.push_back(at(a));

@@ -12,14 +12,16 @@ namespace {
 
 std::vector<std::vector<int>> groups_by_patch(const Problem& p, int patches) {
   std::vector<std::vector<int>> groups(static_cast<size_t>(patches));
-  for (size_t f = 0; f < p.patch.size(); ++f) groups[static_cast<size_t>(p.patch[f])].push_back(static_cast<int>(f));
+  for (size_t f = 0; f < p.patch.size(); ++f)
+    groups[static_cast<size_t>(p.patch[f])].push_back(static_cast<int>(f));
   return groups;
 }
 
 TEST(SolveRounds, NeighbouringGroupsNeverShareARound) {
   const Problem p = test::bumpy_cylinder(24, 6, 0.0, 0.0, 6);  // a ring of 6 sectors
   const auto groups = groups_by_patch(p, 6);
-  const auto rounds = solve_rounds(groups, p.F, std::vector<char>(static_cast<size_t>(p.V.rows()), 0));
+  const auto rounds =
+      solve_rounds(groups, p.F, std::vector<char>(static_cast<size_t>(p.V.rows()), 0));
   std::set<size_t> all;
   for (const auto& round : rounds) {
     std::set<int> used;
@@ -28,7 +30,8 @@ TEST(SolveRounds, NeighbouringGroupsNeverShareARound) {
       std::set<int> mine;
       for (int f : groups[g])
         for (int c = 0; c < 3; ++c) mine.insert(p.F(f, c));
-      for (int v : mine) EXPECT_TRUE(used.insert(v).second) << "vertex " << v << " in two groups of a round";
+      for (int v : mine)
+        EXPECT_TRUE(used.insert(v).second) << "vertex " << v << " in two groups of a round";
     }
   }
   EXPECT_EQ(all.size(), 6u);
@@ -42,7 +45,8 @@ TEST(SolveRounds, NeighbouringGroupsNeverShareARound) {
 TEST(SolveRounds, GroupsSharingOnlyHeldVerticesShareARound) {
   const Problem p = test::bumpy_cylinder(24, 6, 0.0, 0.0, 6);
   std::vector<char> held(static_cast<size_t>(p.V.rows()), 0);
-  for (Eigen::Index v = 0; v < p.V.rows(); ++v) held[static_cast<size_t>(v)] = v % 24 % 4 == 0;  // sector borders
+  for (Eigen::Index v = 0; v < p.V.rows(); ++v)
+    held[static_cast<size_t>(v)] = v % 24 % 4 == 0;  // sector borders
   const auto rounds = solve_rounds(groups_by_patch(p, 6), p.F, held);
   ASSERT_EQ(rounds.size(), 1u);
   EXPECT_EQ(rounds[0], (std::vector<size_t>{0, 1, 2, 3, 4, 5}));

@@ -9,8 +9,8 @@
 // box's message) and where a button is; all input still goes through X (xdotool).
 // Built by the tests with g++ against the host's Qt (bookworm's 5.15.8; it loads into sid's
 // 5.15.19 as well); uses no moc.
-#include <QApplication>
 #include <QAbstractButton>
+#include <QApplication>
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QFile>
@@ -23,15 +23,16 @@
 #include <QMenuBar>
 #include <QTimer>
 #include <QWidget>
-
 #include <cstdio>
 
 namespace {
 
 QJsonObject describe(const QWidget* w, const QString& text) {
   const QPoint centre = w->mapToGlobal(w->rect().center());
-  QJsonObject item{{"class", w->metaObject()->className()}, {"text", text},
-                   {"x", centre.x()}, {"y", centre.y()}};
+  QJsonObject item{{"class", w->metaObject()->className()},
+                   {"text", text},
+                   {"x", centre.x()},
+                   {"y", centre.y()}};
   if (const auto* button = qobject_cast<const QAbstractButton*>(w); button && button->isCheckable())
     item["checked"] = button->isChecked();
   return item;
@@ -53,9 +54,12 @@ void appendActions(const Menu* menu, QJsonArray& widgets) {
     const QRect r = menu->actionGeometry(const_cast<QAction*>(action));
     if (r.isEmpty()) continue;
     const QPoint centre = menu->mapToGlobal(r.center());
-    widgets.append(QJsonObject{{"class", "QAction"}, {"text", action->text()},
-                               {"x", centre.x()}, {"y", centre.y()},
-                               {"enabled", action->isEnabled()}, {"submenu", action->menu() != nullptr}});
+    widgets.append(QJsonObject{{"class", "QAction"},
+                               {"text", action->text()},
+                               {"x", centre.x()},
+                               {"y", centre.y()},
+                               {"enabled", action->isEnabled()},
+                               {"submenu", action->menu() != nullptr}});
   }
 }
 
@@ -82,8 +86,10 @@ void snapshot() {
     const QRect frame = top->frameGeometry();
     windows.append(QJsonObject{{"title", top->windowTitle()},
                                {"class", top->metaObject()->className()},
-                               {"x", frame.x()}, {"y", frame.y()},
-                               {"width", frame.width()}, {"height", frame.height()},
+                               {"x", frame.x()},
+                               {"y", frame.y()},
+                               {"width", frame.width()},
+                               {"height", frame.height()},
                                {"widgets", widgets}});
   }
   QFile out(path + ".tmp");
@@ -95,11 +101,14 @@ void snapshot() {
 
 // Called while QApplication is being constructed: the timer starts once its event loop runs.
 void start() {
-  QMetaObject::invokeMethod(qApp, [] {
-    auto* timer = new QTimer(qApp);
-    QObject::connect(timer, &QTimer::timeout, snapshot);
-    timer->start(250);
-  }, Qt::QueuedConnection);
+  QMetaObject::invokeMethod(
+      qApp,
+      [] {
+        auto* timer = new QTimer(qApp);
+        QObject::connect(timer, &QTimer::timeout, snapshot);
+        timer->start(250);
+      },
+      Qt::QueuedConnection);
 }
 
 }  // namespace

@@ -84,7 +84,9 @@ TEST(Adapter2020, TooSmallPatchIsSolvedWithItsNeighbourAndSaysSo) {
   EXPECT_TRUE(out.result.warnings.empty());
   EXPECT_EQ(std::count_if(out.log.begin(), out.log.end(),
                           [](const std::string& line) {
-                            return line.rfind("note: patch 7 (1 face) has most of its vertices on seams", 0) == 0;
+                            return line.rfind(
+                                       "note: patch 7 (1 face) has most of its vertices on seams",
+                                       0) == 0;
                           }),
             1);
 }

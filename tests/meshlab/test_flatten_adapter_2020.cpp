@@ -23,9 +23,10 @@ using qdml::test::snapshot;
 // One directory per test: ctest runs the tests in processes of their own, two of which may start
 // in the same millisecond and so share gtest's time-based random seed.
 std::filesystem::path temp_dir() {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("qd_flatten_adapter_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
-                    ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  const auto dir =
+      std::filesystem::temp_directory_path() /
+      ("qd_flatten_adapter_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+       "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
   std::filesystem::create_directories(dir);
   return dir;
 }
@@ -61,7 +62,8 @@ TEST(FlattenAdapter2020, WritesTexcoordsInModelUnitsStretchAndColourOnly) {
     const CFaceO& face = m.face[f];
     for (int k = 0; k < 3; ++k) {
       const double l3 = static_cast<double>(vcg::Distance(face.cP(k), face.cP((k + 1) % 3)));
-      const double l2 = static_cast<double>(vcg::Distance(face.cWT(k).P(), face.cWT((k + 1) % 3).P()));
+      const double l2 =
+          static_cast<double>(vcg::Distance(face.cWT(k).P(), face.cWT((k + 1) % 3).P()));
       worst = std::max(worst, std::abs(l2 / l3 - 1));
     }
     EXPECT_FLOAT_EQ(face.cQ(), static_cast<float>(out.result.stretch[f]));

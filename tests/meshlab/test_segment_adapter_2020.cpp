@@ -27,19 +27,23 @@ void make_folded_sheet(CMeshO& m, int n = 6) {
     for (int i = 0; i <= n; ++i, ++vi) vi->P() = CMeshO::CoordType(at(i), at(j), 0);
   for (int k = 1; k <= n; ++k)
     for (int j = 0; j <= n; ++j, ++vi) vi->P() = CMeshO::CoordType(1, at(j), at(k));
-  // floor vertex (i, j) = j * row + i; wall vertex (k, j) = floor (n, j) at k = 0, else after the floor
+  // floor vertex (i, j) = j * row + i; wall vertex (k, j) = floor (n, j) at k = 0, else after the
+  // floor
   const auto floor = [row](int i, int j) { return static_cast<size_t>(j * row + i); };
   const auto wall = [row, n](int k, int j) {
-    return k == 0 ? static_cast<size_t>(j * row + n) : static_cast<size_t>(row * row + (k - 1) * row + j);
+    return k == 0 ? static_cast<size_t>(j * row + n)
+                  : static_cast<size_t>(row * row + (k - 1) * row + j);
   };
   const auto quad = [&m](size_t a, size_t b, size_t c, size_t d) {
     vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[a], &m.vert[b], &m.vert[c]);
     vcg::tri::Allocator<CMeshO>::AddFace(m, &m.vert[a], &m.vert[c], &m.vert[d]);
   };
   for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) quad(floor(i, j), floor(i + 1, j), floor(i + 1, j + 1), floor(i, j + 1));
+    for (int i = 0; i < n; ++i)
+      quad(floor(i, j), floor(i + 1, j), floor(i + 1, j + 1), floor(i, j + 1));
   for (int j = 0; j < n; ++j)
-    for (int k = 0; k < n; ++k) quad(wall(k, j), wall(k + 1, j), wall(k + 1, j + 1), wall(k, j + 1));
+    for (int k = 0; k < n; ++k)
+      quad(wall(k, j), wall(k + 1, j), wall(k + 1, j + 1), wall(k, j + 1));
 }
 
 }  // namespace
@@ -57,7 +61,8 @@ TEST(SegmentAdapter2020, ApplyKeepsTheSelectionBorderAndWritesOnlyFaceQualityAnd
   ASSERT_TRUE(m.face.IsQualityEnabled() && m.face.IsColorEnabled());
   ASSERT_EQ(out.result.patches.size(), 2u) << testing::PrintToString(out.log);
   std::set<float> floor_ids, wall_ids;
-  for (size_t f = 0; f < m.face.size(); ++f) (f < half ? floor_ids : wall_ids).insert(m.face[f].Q());
+  for (size_t f = 0; f < m.face.size(); ++f)
+    (f < half ? floor_ids : wall_ids).insert(m.face[f].Q());
   EXPECT_EQ(floor_ids, std::set<float>{0.0f});
   EXPECT_EQ(wall_ids, std::set<float>{1.0f});
   EXPECT_NE(m.face[0].C(), m.face[half].C());

@@ -62,7 +62,8 @@ DefectLinearisation linearise_defects(const DefectStars& rows, const GroupMesh& 
       return static_cast<size_t>(std::find(rows.star.begin() + first, rows.star.begin() + last, u) -
                                  rows.star.begin());
     };
-    for (int k = incident.start[static_cast<size_t>(v)]; k < incident.start[static_cast<size_t>(v) + 1]; ++k) {
+    for (int k = incident.start[static_cast<size_t>(v)];
+         k < incident.start[static_cast<size_t>(v) + 1]; ++k) {
       const int f = incident.faces[static_cast<size_t>(k)];
       const int c = g.F(f, 0) == v ? 0 : g.F(f, 1) == v ? 1 : 2;
       const int j = g.F(f, (c + 1) % 3), l = g.F(f, (c + 2) % 3);
@@ -74,7 +75,7 @@ DefectLinearisation linearise_defects(const DefectStars& rows, const GroupMesh& 
       const Vec3 n = cross / doubled_area;
       const Vec3 dj = -n.cross(ej) / ej.squaredNorm();  // ∂θ/∂x_j
       const Vec3 dl = n.cross(el) / el.squaredNorm();   // ∂θ/∂x_l
-      lin.gradient[entry(j)] -= dj;                      // ∇K_v = −Σ ∂θ/∂x
+      lin.gradient[entry(j)] -= dj;                     // ∇K_v = −Σ ∂θ/∂x
       lin.gradient[entry(l)] -= dl;
       lin.gradient[entry(v)] += dj + dl;
     }

@@ -162,8 +162,8 @@ void DeformationSystem::set_rows(const std::vector<Vec3>& targets,
 // K's unknowns follow M's fill-reducing block order, each row's multiplier right after its
 // vertex's three coordinates. With a vertex's unknowns merged, K's graph is the vertex graph M
 // was ordered on (a row couples its vertex's star), so K needs no order of its own (the
-// alternatives measured: docs/solvers.md). The pattern is built once by Eigen from the entries' places,
-// each entry's value being its source's number, which then tells where each source goes.
+// alternatives measured: docs/solvers.md). The pattern is built once by Eigen from the entries'
+// places, each entry's value being its source's number, which then tells where each source goes.
 void DeformationSystem::build_augmented_pattern() {
   const size_t rows = defects_.vertex.size(), blocks = static_cast<size_t>(blocks_);
   entry_row_.resize(defects_.star.size());

@@ -35,7 +35,8 @@ bool face_flipped(const Triangles& F, Eigen::Index f, const Positions& V0, const
 // faces do not halve the step of the whole patch (issue 11). Repeated while holding back folds
 // further faces, up to kFoldRounds times.
 constexpr int kFoldRounds = 3;
-Positions hold_folding_vertices(const GroupMesh& g, const Positions& current, const Positions& proposed) {
+Positions hold_folding_vertices(const GroupMesh& g, const Positions& current,
+                                const Positions& proposed) {
   Positions step = proposed;
   for (int round = 0; round < kFoldRounds; ++round) {
     bool held = false;
@@ -50,7 +51,8 @@ Positions hold_folding_vertices(const GroupMesh& g, const Positions& current, co
 }
 
 std::string scale_label(double scale) {
-  return scale == 1.0 ? "step ×1" : "step ×1/" + std::to_string(static_cast<int>(std::lround(1 / scale)));
+  return scale == 1.0 ? "step ×1"
+                      : "step ×1/" + std::to_string(static_cast<int>(std::lround(1 / scale)));
 }
 
 }  // namespace
@@ -240,7 +242,8 @@ void Deformation::check_stop(const IterationReport& report) {
   }
   const size_t n = best_track_.size();
   if (n <= static_cast<size_t>(kPlateauIterations)) return;
-  const double removed = decrease_ratio(best_track_[n - 1 - kPlateauIterations], best_track_[n - 1]);
+  const double removed =
+      decrease_ratio(best_track_[n - 1 - kPlateauIterations], best_track_[n - 1]);
   if (removed < params_.stop_abd) {
     out_.stop = StopReason::Plateau;
     out_.plateau_removed = removed;

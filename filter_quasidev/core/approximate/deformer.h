@@ -2,19 +2,19 @@
 // δ_err → accept, until a stop rule ends the run.
 //
 // Acceptance (the never-worse rule, beyond the paper): a candidate step that folds a face (its
-// normal turns against the engine's input one, GroupMesh::V_input) is refused; one whose G_ABD exceeds the best iterate's by more than kRiseAllowance is refused.
-// A refused step is shortened: with angle-defect rows, first with the vertices of its folding
-// faces held back, then halved down to kMinStepScale. The iteration is then solved again with
-// the developability weights (w of Eq. 8 and w_d) divided by kWeightBackoff, down to
-// kMinWeightScale, for this and the later iterations: a weaker pull toward developability
-// gives a smoother step where the strong one folds faces (damping, as in Levenberg–Marquardt).
-// With the curve targets alone a refused full step is solved again at once, before any
-// shortening, while the weights can still go down: on the generated family that took the
-// curve term from 69 % to 99 % on bumps of 1 AE, where the angle-defect rows lost curvature
-// removed that way on the garments (docs/robustness.md). The run returns its best iterate, so it never hands back a
-// mesh with more curvature than it was given. The small allowed rise lets a run leave a kink
-// of G_ABD (a sum of absolute values: a vertex whose defect is 0 rises at first order
-// whichever way it moves), where a strict descent stalls at iteration 1.
+// normal turns against the engine's input one, GroupMesh::V_input) is refused; one whose G_ABD
+// exceeds the best iterate's by more than kRiseAllowance is refused. A refused step is shortened:
+// with angle-defect rows, first with the vertices of its folding faces held back, then halved down
+// to kMinStepScale. The iteration is then solved again with the developability weights (w of Eq. 8
+// and w_d) divided by kWeightBackoff, down to kMinWeightScale, for this and the later iterations: a
+// weaker pull toward developability gives a smoother step where the strong one folds faces
+// (damping, as in Levenberg–Marquardt). With the curve targets alone a refused full step is solved
+// again at once, before any shortening, while the weights can still go down: on the generated
+// family that took the curve term from 69 % to 99 % on bumps of 1 AE, where the angle-defect rows
+// lost curvature removed that way on the garments (docs/robustness.md). The run returns its best
+// iterate, so it never hands back a mesh with more curvature than it was given. The small allowed
+// rise lets a run leave a kink of G_ABD (a sum of absolute values: a vertex whose defect is 0 rises
+// at first order whichever way it moves), where a strict descent stalls at iteration 1.
 //
 // Stop rules (StopRule): Plateau (default) stops when the best G_ABD fell by less than δ_ABD
 // percent over the last kPlateauIterations iterations; Paper stops at the first iteration whose
@@ -47,13 +47,13 @@ using Retarget = std::function<std::vector<Vec3>(const Positions& current)>;
 enum class StopReason { Running, MaxIter, Plateau, RatioAbd, RatioObd, NoStep, NothingToDo };
 
 struct DeformOutcome {
-  Positions V;                        // the best iterate's local positions
+  Positions V;                           // the best iterate's local positions
   std::vector<IterationReport> history;  // accepted iterations up to the best one
-  int iterations_run = 0;             // accepted iterations, including those after the best
+  int iterations_run = 0;                // accepted iterations, including those after the best
   StopReason stop = StopReason::Running;
-  std::string stop_detail;            // NoStep: the refused candidates; NothingToDo: why
-  double plateau_removed = 0;         // Plateau: percent of G_ABD the last iterations removed
-  StageTimes times;                   // assembly, factorisation, solve, re-targeting, metrics
+  std::string stop_detail;     // NoStep: the refused candidates; NothingToDo: why
+  double plateau_removed = 0;  // Plateau: percent of G_ABD the last iterations removed
+  StageTimes times;            // assembly, factorisation, solve, re-targeting, metrics
 };
 
 class DeformationSystem;

@@ -1,11 +1,10 @@
 // Digital image of the DEGI, modified Goshtasby field and skeleton pixels; see digital_image.h.
 #include "approximate/digital_image.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <utility>
-
-#include <Eigen/Core>
 
 namespace qd {
 
@@ -16,7 +15,7 @@ constexpr double kPi = 3.14159265358979323846;
 // local. The samples' longer extent spans kInnerPixels; a tube spans 2π with kTubePixels.
 constexpr int kInnerPixels = 144;
 constexpr int kTubePixels = 240;
-constexpr int kEffectRadius = 4;  // effect region of Eq. 11 (pixels)
+constexpr int kEffectRadius = 4;     // effect region of Eq. 11 (pixels)
 constexpr double kBandPixels = 0.7;  // band thickness (φ standard deviation) in pixels, at most
 constexpr int kMargin = kEffectRadius + 2;
 // Ridge pixels need a field above this fraction of the maximum (ignores the faint rim).
@@ -126,9 +125,10 @@ DigitalImage rasterise(const std::vector<Vec2>& theta_phi, const std::vector<dou
   // Pixel size: the samples' longer extent over kInnerPixels (a tube: 2π over kTubePixels),
   // but at least the band thickness over kBandPixels, so that noise across the curve is
   // smoothed by the effect region instead of breaking the ridge into parallel pieces.
-  const double fine = periodic ? 2 * kPi / kTubePixels
-                               : std::max({extent.x(), extent.y(), 1e-9}) / kInnerPixels;
-  im.pixel = std::max(fine, band_sigma(theta_phi, w, theta_lo, theta_hi, phi.x(), fine) / kBandPixels);
+  const double fine =
+      periodic ? 2 * kPi / kTubePixels : std::max({extent.x(), extent.y(), 1e-9}) / kInnerPixels;
+  im.pixel =
+      std::max(fine, band_sigma(theta_phi, w, theta_lo, theta_hi, phi.x(), fine) / kBandPixels);
   if (periodic) {
     im.width = whole_cells(2 * kPi, im.pixel);
     im.pixel = 2 * kPi / im.width;
@@ -185,7 +185,8 @@ void goshtasby_field(DigitalImage& im) {
   //    effect region ‖p − p_i‖ <= ρ (ρ = effect_radius). This makes the field local and cheap.
   //  * Eq. 10's Σ sqrt(d² + r²) is a sum of convex functions (one minimum, no ridges). We use
   //    the multiquadric turned into a bump that vanishes at the cut-off,
-  //        f(p) = Σ_{‖p−p_i‖<=ρ} r(p_i) · (sqrt(ρ² + s²) − sqrt(‖p − p_i‖² + s²)) / (sqrt(ρ² + s²) − s),
+  //        f(p) = Σ_{‖p−p_i‖<=ρ} r(p_i) · (sqrt(ρ² + s²) − sqrt(‖p − p_i‖² + s²)) / (sqrt(ρ² + s²)
+  //        − s),
   //    with the smoothing constant s = 1 pixel in the root (Goshtasby's constant r) and the
   //    pixel weight r(p_i) of Eq. 12 as amplitude, so more and larger faces pull the ridge.
   const int rho = im.effect_radius;
@@ -209,8 +210,10 @@ void goshtasby_field(DigitalImage& im) {
         if (yy < 0 || yy >= im.height) continue;
         for (int dx = -rho; dx <= rho; ++dx) {
           int xx = x + dx;
-          if (im.periodic) xx = (xx + im.width) % im.width;
-          else if (xx < 0 || xx >= im.width) continue;
+          if (im.periodic)
+            xx = (xx + im.width) % im.width;
+          else if (xx < 0 || xx >= im.width)
+            continue;
           im.field[static_cast<size_t>(yy) * im.width + xx] +=
               r * kernel[static_cast<size_t>(dy + rho) * side + (dx + rho)];
         }
@@ -234,7 +237,8 @@ std::vector<SkeletonPoint> skeleton_pixels(const DigitalImage& im) {
       const Vec2 g(0.5 * (f(x + 1, y) - f(x - 1, y)), 0.5 * (f(x, y + 1) - f(x, y - 1)));
       const double a = f(x + 1, y) - 2 * v + f(x - 1, y);
       const double c = f(x, y + 1) - 2 * v + f(x, y - 1);
-      const double b = 0.25 * (f(x + 1, y + 1) - f(x + 1, y - 1) - f(x - 1, y + 1) + f(x - 1, y - 1));
+      const double b =
+          0.25 * (f(x + 1, y + 1) - f(x + 1, y - 1) - f(x - 1, y + 1) + f(x - 1, y - 1));
       const double mean = 0.5 * (a + c), dev = std::sqrt(0.25 * (a - c) * (a - c) + b * b);
       const double lambda = mean - dev;  // most negative curvature: across the ridge
       if (!(lambda < 0)) continue;

@@ -12,13 +12,13 @@
 namespace qd {
 
 struct DigitalImage {
-  int width = 0, height = 0;     // pixels along θ (x) and φ (y)
-  double theta0 = 0, phi0 = 0;   // (θ, φ) of the image corner (x = y = 0)
-  double pixel = 0;              // pixel size in radians (square pixels)
-  bool periodic = false;         // x wraps: width·pixel = 2π (tube)
-  int effect_radius = 0;         // effect-region radius of Eq. 11, in pixels
-  std::vector<double> r;         // Eq. 12 weight per pixel, index y·width + x
-  std::vector<double> field;     // Eq. 11 field per pixel
+  int width = 0, height = 0;    // pixels along θ (x) and φ (y)
+  double theta0 = 0, phi0 = 0;  // (θ, φ) of the image corner (x = y = 0)
+  double pixel = 0;             // pixel size in radians (square pixels)
+  bool periodic = false;        // x wraps: width·pixel = 2π (tube)
+  int effect_radius = 0;        // effect-region radius of Eq. 11, in pixels
+  std::vector<double> r;        // Eq. 12 weight per pixel, index y·width + x
+  std::vector<double> field;    // Eq. 11 field per pixel
 
   Vec2 to_pixel(const Vec2& theta_phi) const;  // continuous pixel coordinates
   Vec2 to_theta_phi(const Vec2& px) const;

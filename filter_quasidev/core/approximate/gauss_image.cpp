@@ -72,7 +72,8 @@ GaussMoments gauss_moments(const std::vector<Vec3>& normals, const std::vector<d
     if (a == 0) continue;  // zero-area samples weigh 0 (docs/design.md Step 1.1)
     const Vec3& n = normals[i];
     if (!n.allFinite() || std::abs(n.norm() - 1.0) > 1e-6)
-      throw Error("face " + std::to_string(i) + " of the patch has no valid unit normal; "
+      throw Error("face " + std::to_string(i) +
+                  " of the patch has no valid unit normal; "
                   "repair the mesh (remove degenerate/NaN faces)");
     ++positive;
     m.total_area += a;
@@ -112,7 +113,8 @@ bool is_point_like(const std::vector<Vec3>& normals, const std::vector<double>& 
   }
   C /= m.total_area;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C, Eigen::EigenvaluesOnly);
-  const double major = std::max(es.eigenvalues()(2), 0.0), minor = std::max(es.eigenvalues()(1), 0.0);
+  const double major = std::max(es.eigenvalues()(2), 0.0),
+               minor = std::max(es.eigenvalues()(1), 0.0);
   const double spread = std::sqrt(major);
   return spread < kPointSpread || (spread < kBlobSpread && minor > kIsotropy * major);
 }
@@ -158,7 +160,8 @@ Vec3 best_small_circle_pole(const std::vector<Vec3>& normals, const std::vector<
 double great_circle_misfit(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                            const GaussMoments& m, const Vec3& pole) {
   double sum = 0;
-  for (size_t i = 0; i < normals.size(); ++i) sum += areas[i] * normals[i].dot(pole) * normals[i].dot(pole);
+  for (size_t i = 0; i < normals.size(); ++i)
+    sum += areas[i] * normals[i].dot(pole) * normals[i].dot(pole);
   return sum / m.total_area;
 }
 

@@ -14,8 +14,8 @@ namespace qd {
 
 // Area-weighted moments of the DEGI.
 struct GaussMoments {
-  double total_area = 0;                           // Σ a
-  Vec3 resultant = Vec3::Zero();                   // Σ a n
+  double total_area = 0;                              // Σ a
+  Vec3 resultant = Vec3::Zero();                      // Σ a n
   Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();  // Σ a n nᵀ
 };
 
@@ -45,7 +45,8 @@ Vec3 best_great_circle_pole(const std::vector<Vec3>& normals, const std::vector<
 Vec3 best_small_circle_pole(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                             const GaussMoments& m, double& misfit);
 
-// Mean squared distance Σ a (n·p)² / Σ a of the samples to the plane of the great circle with pole p.
+// Mean squared distance Σ a (n·p)² / Σ a of the samples to the plane of the great circle with pole
+// p.
 double great_circle_misfit(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                            const GaussMoments& m, const Vec3& pole);
 

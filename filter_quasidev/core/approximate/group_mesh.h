@@ -1,7 +1,8 @@
 // A solve group: the faces of one patch (its seams fixed or free) or of all patches (free
-// seams' first pass, quasidev.cpp), as a small local mesh with its own vertex numbering, so every step costs O(group size).
-// Its faces are followed by a "ring": the other faces that touch the group's vertices. The ring
-// is measured (so the curvature of seam vertices counts) but never solved or moved.
+// seams' first pass, quasidev.cpp), as a small local mesh with its own vertex numbering, so every
+// step costs O(group size). Its faces are followed by a "ring": the other faces that touch the
+// group's vertices. The ring is measured (so the curvature of seam vertices counts) but never
+// solved or moved.
 #pragma once
 
 #include <vector>
@@ -21,10 +22,10 @@ struct VertexFaces {
 };
 
 struct GroupMesh {
-  Positions V0;                     // positions when the group starts, local numbering
-  Positions V_input;                // the engine's input positions, local numbering: a face
-                                    // whose normal turns against its input one is folded
-  Triangles F;                      // group faces (rows < solve_faces), then the ring faces
+  Positions V0;       // positions when the group starts, local numbering
+  Positions V_input;  // the engine's input positions, local numbering: a face
+                      // whose normal turns against its input one is folded
+  Triangles F;        // group faces (rows < solve_faces), then the ring faces
   Eigen::Index solve_faces = 0;
   Eigen::Index solve_vertices = 0;  // local vertices [0, solve_vertices) touch group faces
   std::vector<int> global_vertex;   // local vertex -> input vertex
@@ -54,8 +55,8 @@ double patch_tolerance(const Params& params, int patch_id);
 // group; face_patch_ids: patch id per input face; constrained and interior (not on an open
 // boundary): per input vertex; incident: faces of each input vertex.
 GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vector<int>& faces,
-                        const std::vector<int>& face_patch_ids, const std::vector<char>& constrained,
-                        const std::vector<char>& interior, const VertexFaces& incident,
-                        const Params& params);
+                        const std::vector<int>& face_patch_ids,
+                        const std::vector<char>& constrained, const std::vector<char>& interior,
+                        const VertexFaces& incident, const Params& params);
 
 }  // namespace qd

@@ -8,10 +8,13 @@
 
 namespace qd {
 
-enum class SeamMode { Fixed, Free };         // seam vertices fixed (paper) or shared unknowns
-enum class ToleranceMode { Step, Total };    // δ_err caps each step (paper) or the total move
-enum class ClampMode { Scale, Vertex };     // δ_err in Step mode: scale the whole step, or
-                                            // clamp each vertex's step (paper §5.2)
+enum class SeamMode { Fixed, Free };       // seam vertices fixed (paper) or shared unknowns
+enum class ToleranceMode { Step, Total };  // δ_err caps each step (paper) or the total move
+enum class ClampMode {
+  Scale,
+  Vertex
+};                                                  // δ_err in Step mode: scale the whole step, or
+                                                    // clamp each vertex's step (paper §5.2)
 enum class TargetMode { Fixed, Reproject, Refit };  // targets once (paper), re-projected, re-fitted
 // When Step 2 stops (deformer.h): when the best G_ABD fell by less than δ_ABD over the last
 // few iterations (beyond the paper), or at the first iteration below δ_ABD / δ_OBD (§5.4).
@@ -26,26 +29,26 @@ enum class SolveMethod { Auto, Direct, Iterative };  // factorise M, or CG with 
 enum class Developability { Curve, Defect, Both, Auto };
 
 struct Params {
-  double tolerance = 0.0;                    // δ_err in model units (> 0)
-  std::map<int, double> patch_tolerance;     // per patch id, overrides tolerance
+  double tolerance = 0.0;                 // δ_err in model units (> 0)
+  std::map<int, double> patch_tolerance;  // per patch id, overrides tolerance
   ToleranceMode tolerance_mode = ToleranceMode::Step;
-  ClampMode clamp = ClampMode::Scale;        // Step mode only; Total mode clamps per vertex
-  int max_iter = 30;                         // stop criterion 1 (the plateau stops most runs sooner)
-  double weight = 30.0;                      // w of Eq. (8): developability vs shape rows
+  ClampMode clamp = ClampMode::Scale;  // Step mode only; Total mode clamps per vertex
+  int max_iter = 30;                   // stop criterion 1 (the plateau stops most runs sooner)
+  double weight = 30.0;                // w of Eq. (8): developability vs shape rows
   Developability developability = Developability::Auto;
-  double defect_weight = 0.03;               // w_d of the angle-defect rows (angle_defect.h)
-  double anchor = 3.0;                       // α of the MLS soft anchor rows (Eq. 15)
+  double defect_weight = 0.03;  // w_d of the angle-defect rows (angle_defect.h)
+  double anchor = 3.0;          // α of the MLS soft anchor rows (Eq. 15)
   SeamMode seams = SeamMode::Fixed;
   SegmentFirst segment_first = SegmentFirst::Auto;  // meshes without patch ids
-  bool keep_boundary = true;                 // open mesh boundary vertices are constrained
+  bool keep_boundary = true;                        // open mesh boundary vertices are constrained
   TargetMode targets = TargetMode::Reproject;
   StopRule stop_rule = StopRule::Plateau;
-  double stop_abd = 1.0;                     // δ_ABD, percent (Eq. 19)
-  double stop_obd = 1.0;                     // δ_OBD, percent (Eq. 20)
-  SolverKind solver = SolverKind::Auto;      // Auto: by size, as measured (positive_definite_factor.h)
-  SolveMethod method = SolveMethod::Auto;    // Auto: by size, as measured (deformation_system.h)
-  int threads = 0;                           // patches solved at once (a lone patch uses them
-                                             // inside); 0 = all cores
+  double stop_abd = 1.0;                 // δ_ABD, percent (Eq. 19)
+  double stop_obd = 1.0;                 // δ_OBD, percent (Eq. 20)
+  SolverKind solver = SolverKind::Auto;  // Auto: by size, as measured (positive_definite_factor.h)
+  SolveMethod method = SolveMethod::Auto;  // Auto: by size, as measured (deformation_system.h)
+  int threads = 0;                         // patches solved at once (a lone patch uses them
+                                           // inside); 0 = all cores
 };
 
 }  // namespace qd

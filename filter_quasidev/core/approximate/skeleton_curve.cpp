@@ -100,9 +100,9 @@ void drop_weak_components(std::vector<SkeletonPoint>& pts, std::vector<Edge>& ed
 // Kruskal minimum spanning tree over `edges`, then the shortest links between the remaining
 // components (so separate blobs of a coarse mesh's Gauss image are chained). Returns the tree
 // adjacency; edges not in the tree are appended to `unused`.
-std::vector<std::vector<std::pair<int, double>>> spanning_tree(const std::vector<SkeletonPoint>& pts,
-                                                               std::vector<Edge> edges, double period,
-                                                               std::vector<Edge>& unused) {
+std::vector<std::vector<std::pair<int, double>>> spanning_tree(
+    const std::vector<SkeletonPoint>& pts, std::vector<Edge> edges, double period,
+    std::vector<Edge>& unused) {
   const int n = static_cast<int>(pts.size());
   std::vector<std::vector<std::pair<int, double>>> adj(n);
   UnionFind uf(n);
@@ -124,7 +124,8 @@ std::vector<std::vector<std::pair<int, double>>> spanning_tree(const std::vector
   if (roots.size() < 2) return adj;
   std::vector<int> comp(n);
   for (int i = 0; i < n; ++i)
-    comp[i] = static_cast<int>(std::lower_bound(roots.begin(), roots.end(), uf.find(i)) - roots.begin());
+    comp[i] =
+        static_cast<int>(std::lower_bound(roots.begin(), roots.end(), uf.find(i)) - roots.begin());
   const size_t c = roots.size();
   std::vector<Edge> best(c * c, Edge{1e300, -1, -1});
   for (int i = 0; i < n; ++i)
@@ -237,7 +238,8 @@ OrderedSkeleton order_skeleton(const std::vector<SkeletonPoint>& input, int widt
   out.points.reserve(order.size());
   out.points.push_back(pts[order[0]].pos);
   for (size_t k = 1; k < order.size(); ++k)
-    out.points.push_back(out.points.back() + delta(pts[order[k - 1]].pos, pts[order[k]].pos, period));
+    out.points.push_back(out.points.back() +
+                         delta(pts[order[k - 1]].pos, pts[order[k]].pos, period));
   if (periodic) {
     const double span = out.points.back().x() - out.points.front().x() +
                         delta(out.points.back(), out.points.front(), period).x();
@@ -271,8 +273,8 @@ void extend_ends(std::vector<Vec2>& polyline, const std::vector<Vec2>& samples, 
     if (chord.norm() == 0) continue;
     double kappa = 0;
     if (previous.norm() > 0) {
-      const double turn = std::atan2(previous.x() * chord.y() - previous.y() * chord.x(),
-                                     previous.dot(chord));
+      const double turn =
+          std::atan2(previous.x() * chord.y() - previous.y() * chord.x(), previous.dot(chord));
       kappa = turn / (0.5 * (chord.norm() + previous.norm()));
     }
     const Vec2 d = rotate(chord.normalized(), 0.5 * kappa * chord.norm());

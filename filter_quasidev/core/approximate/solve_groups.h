@@ -17,9 +17,9 @@
 namespace qd {
 
 struct PatchMerge {
-  int patch = 0;   // a patch id
+  int patch = 0;  // a patch id
   int faces = 0;
-  int group = 0;   // the patch id of the group it is solved in
+  int group = 0;  // the patch id of the group it is solved in
 };
 
 struct SolveGroups {

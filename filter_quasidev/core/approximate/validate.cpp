@@ -95,7 +95,8 @@ void check_free_vertices(const Problem& p, const Topology& t) {
               " selected, " + to_text(n.seams) + " on fixed seams, " + to_text(n.boundary) +
               " on the kept boundary" + kept +
               "), so nothing can move: select fewer vertices, free the seams or let the boundary "
-              "move" + (kept.empty() ? "" : ", or repair the mesh") + ".");
+              "move" +
+              (kept.empty() ? "" : ", or repair the mesh") + ".");
 }
 
 }  // namespace
@@ -107,7 +108,8 @@ Topology validate(const Problem& problem) {
   check_face_indices(problem.F, static_cast<int>(problem.V.rows()));
   check_zero_area(problem.V, problem.F);
   check_params(problem.params);
-  Topology topology = analyse_topology(problem.F, static_cast<int>(problem.V.rows()), problem.patch);
+  Topology topology =
+      analyse_topology(problem.F, static_cast<int>(problem.V.rows()), problem.patch);
   check_duplicate_faces(topology);
   check_patch_sizes(topology);
   check_orientation(topology);

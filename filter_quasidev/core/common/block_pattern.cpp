@@ -12,7 +12,8 @@ BlockPattern lower_pattern(int nodes, const std::vector<std::pair<int, int>>& ed
   std::vector<int> row(static_cast<size_t>(start.back()));
   std::vector<int> next(start.begin(), start.end() - 1);
   for (const auto& [a, b] : edges)
-    if (a != b) row[static_cast<size_t>(next[static_cast<size_t>(std::min(a, b))]++)] = std::max(a, b);
+    if (a != b)
+      row[static_cast<size_t>(next[static_cast<size_t>(std::min(a, b))]++)] = std::max(a, b);
   BlockPattern p;  // each column sorted and without repeats, compacted in place
   p.column_start.assign(static_cast<size_t>(nodes) + 1, 0);
   size_t kept = 0;

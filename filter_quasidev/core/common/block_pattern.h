@@ -30,7 +30,9 @@ BlockPattern lower_pattern(int nodes, const std::vector<std::pair<int, int>>& ed
 Eigen::SparseMatrix<double> scalar_lower(const BlockPattern& p);
 
 // Offset of entry (i, j), i ≥ j, of the diagonal block in column 3k+j of M's values.
-inline int diagonal_entry(const int* outer, int k, int i, int j) { return outer[3 * k + j] + (i - j); }
+inline int diagonal_entry(const int* outer, int k, int i, int j) {
+  return outer[3 * k + j] + (i - j);
+}
 
 // Offset of entry (i, j) of the off-diagonal block in slot s (of block column k) in M's values.
 inline int block_entry(const int* outer, const BlockPattern& p, int k, int s, int i, int j) {

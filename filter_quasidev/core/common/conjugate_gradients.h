@@ -42,7 +42,8 @@ CgOutcome conjugate_gradients(const Multiply& multiply, const Precondition& prec
   const double start = rz, stop = tolerance * tolerance * (reference >= 0 ? reference : rz);
   const auto on_time = [&] {  // √(rz/start) ≤ tolerance^(iterations/max_iterations)
     return out.iterations < kCgPatience ||
-           rz <= start * std::pow(tolerance * tolerance, static_cast<double>(out.iterations) / max_iterations);
+           rz <= start * std::pow(tolerance * tolerance,
+                                  static_cast<double>(out.iterations) / max_iterations);
   };
   Eigen::VectorXd p = z;
   while (rz > stop && out.iterations < max_iterations && on_time()) {

@@ -11,13 +11,13 @@ namespace qd {
 
 // Figures of one set of faces/vertices at one moment (docs/design.md "Metrics").
 struct Figures {
-  double g_abd = 0;          // Σ|K(v)| over owned interior vertices (Eq. 18)
-  double angle_defect = 0;   // Σ|2π − Σθ| over the same vertices (density independent)
-  double max_abs_k = 0;      // max |K(v)|
-  double obd = 0;            // D(P) = Σ d(t) w.r.t. the current targets (Defs. 2–3)
-  double shape = 0;          // S(P) w.r.t. the original positions (Defs. 4–5)
-  double max_disp = 0;       // max |v' − v0|, model units
-  double mean_disp = 0;      // mean |v' − v0| over the group's vertices
+  double g_abd = 0;         // Σ|K(v)| over owned interior vertices (Eq. 18)
+  double angle_defect = 0;  // Σ|2π − Σθ| over the same vertices (density independent)
+  double max_abs_k = 0;     // max |K(v)|
+  double obd = 0;           // D(P) = Σ d(t) w.r.t. the current targets (Defs. 2–3)
+  double shape = 0;         // S(P) w.r.t. the original positions (Defs. 4–5)
+  double max_disp = 0;      // max |v' − v0|, model units
+  double mean_disp = 0;     // mean |v' − v0| over the group's vertices
 };
 
 // Per vertex: the angle defect 2π − Σθ_j (only meaningful for interior vertices) and the mixed
@@ -29,7 +29,8 @@ struct VertexAngles {
 VertexAngles vertex_angles(const Positions& V, const Triangles& F);
 
 // K(v) = (2π − Σθ_j)/A_v (Eq. 18) where interior[v], else 0.
-std::vector<double> gaussian_curvature(const VertexAngles& angles, const std::vector<char>& interior);
+std::vector<double> gaussian_curvature(const VertexAngles& angles,
+                                       const std::vector<char>& interior);
 
 // d(t) = Σ|n_t·e_i| (Def. 2, Eq. 1–2) summed over faces (Def. 3, Eq. 3); targets[i] belongs
 // to faces[i].

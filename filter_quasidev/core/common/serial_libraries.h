@@ -27,8 +27,8 @@ class SerialLibraries {
   SerialLibraries& operator=(const SerialLibraries&) = delete;
 
  private:
-  int saved_blas_threads_ = 0;     // OpenBLAS's thread count before; 0: OpenBLAS is not loaded
-  int saved_omp_levels_ = -1;      // OpenMP's max-active-levels before; -1: OpenMP is not loaded
+  int saved_blas_threads_ = 0;  // OpenBLAS's thread count before; 0: OpenBLAS is not loaded
+  int saved_omp_levels_ = -1;   // OpenMP's max-active-levels before; -1: OpenMP is not loaded
 };
 
 }  // namespace qd

@@ -19,8 +19,9 @@ int count_flags(const std::vector<char>& flags) {
 void check_not_empty(const Positions& V, const Triangles& F) {
   if (V.rows() == 0) throw Error("The mesh has no vertices: load a triangle mesh first.");
   if (F.rows() == 0)
-    throw Error("The mesh has no faces (a point cloud?): the filter needs a triangle mesh; "
-                "reconstruct a surface first.");
+    throw Error(
+        "The mesh has no faces (a point cloud?): the filter needs a triangle mesh; "
+        "reconstruct a surface first.");
 }
 
 void check_coordinates(const Positions& V) {
@@ -70,7 +71,8 @@ void check_zero_area(const Positions& V, const Triangles& F) {
 // Duplicate faces also make their edges look misoriented: a job checks them first.
 void check_duplicate_faces(const Topology& t) {
   if (t.duplicate_faces > 0)
-    throw Error("The mesh has " + count_text(t.duplicate_faces, "duplicate face", "duplicate faces") +
+    throw Error("The mesh has " +
+                count_text(t.duplicate_faces, "duplicate face", "duplicate faces") +
                 " (first: faces " + to_text(t.first_duplicate_faces[0]) + " and " +
                 to_text(t.first_duplicate_faces[1]) +
                 " use the same vertices): remove them first (MeshLab: Filters > Cleaning and "

@@ -13,8 +13,8 @@
 #include <functional>
 #include <string>
 
-#include "flatten/flat_triangles.h"
 #include "common/solver_kind.h"
+#include "flatten/flat_triangles.h"
 
 namespace qd {
 

@@ -4,16 +4,16 @@
 // counts decide whether a piece can be cut out as it is.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace qd {
 
 // segments: boundary edges as vertex pairs into uv. Returns per segment 1 if it properly
 // crosses another segment that shares no vertex with it. A uniform grid of cells about one
 // segment long keeps this near linear in the number of segments.
-std::vector<char> crossing_segments(const Eigen::MatrixX2d& uv, const std::vector<std::array<int, 2>>& segments);
+std::vector<char> crossing_segments(const Eigen::MatrixX2d& uv,
+                                    const std::vector<std::array<int, 2>>& segments);
 
 }  // namespace qd

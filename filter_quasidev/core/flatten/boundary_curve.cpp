@@ -5,7 +5,8 @@
 
 namespace qd {
 
-Eigen::MatrixX2d closed_boundary_curve(const Eigen::VectorXd& lengths, const Eigen::VectorXd& turning) {
+Eigen::MatrixX2d closed_boundary_curve(const Eigen::VectorXd& lengths,
+                                       const Eigen::VectorXd& turning) {
   const Eigen::Index m = lengths.size();
   Eigen::Matrix2Xd T(2, m);
   double phi = 0;

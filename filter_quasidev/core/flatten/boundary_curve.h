@@ -14,6 +14,7 @@ namespace qd {
 // lengths: target length of each edge (> 0); turning: exterior angle κ_i at each vertex
 // (Σ κ_i = 2π for a curve turning counter-clockwise). Returns one row per vertex, vertex 0 at
 // the origin.
-Eigen::MatrixX2d closed_boundary_curve(const Eigen::VectorXd& lengths, const Eigen::VectorXd& turning);
+Eigen::MatrixX2d closed_boundary_curve(const Eigen::VectorXd& lengths,
+                                       const Eigen::VectorXd& turning);
 
 }  // namespace qd

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "flatten/edge_table.h"
 #include "common/mesh.h"
+#include "flatten/edge_table.h"
 
 namespace qd {
 

@@ -10,11 +10,13 @@
 
 namespace qd {
 
-Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTriangles& g, int vertex_count);
+Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTriangles& g,
+                                                int vertex_count);
 
 // The block of M with the rows and columns whose number in `row` / `column` is ≥ 0, renumbered
 // by it (row[i] = new row of row i or −1; `rows`, `columns` the new sizes).
-Eigen::SparseMatrix<double> sparse_block(const Eigen::SparseMatrix<double>& M, const std::vector<int>& row,
-                                         int rows, const std::vector<int>& column, int columns);
+Eigen::SparseMatrix<double> sparse_block(const Eigen::SparseMatrix<double>& M,
+                                         const std::vector<int>& row, int rows,
+                                         const std::vector<int>& column, int columns);
 
 }  // namespace qd

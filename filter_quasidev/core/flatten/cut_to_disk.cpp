@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <sstream>
 
+#include "common/disjoint_sets.h"
 #include "common/error.h"
 #include "flatten/boundary_loops.h"
-#include "common/disjoint_sets.h"
 #include "flatten/shortest_paths.h"
 #include "flatten/split_corners.h"
 
@@ -59,7 +59,8 @@ void join_loops(Piece& p, const Shape& s, DiskCut& tally) {
   const size_t b = s.loops.size();
   std::vector<double> length(b);
   for (size_t k = 0; k < b; ++k) length[k] = loop_length(p.V, s.loops[k]);
-  const size_t longest = static_cast<size_t>(std::max_element(length.begin(), length.end()) - length.begin());
+  const size_t longest =
+      static_cast<size_t>(std::max_element(length.begin(), length.end()) - length.begin());
   std::vector<int> loop_of(static_cast<size_t>(p.V.rows()), -1);
   for (size_t k = 0; k < b; ++k)
     for (const int v : s.loops[k]) loop_of[v] = static_cast<int>(k);
@@ -77,8 +78,10 @@ void join_loops(Piece& p, const Shape& s, DiskCut& tally) {
     cut_along(p, s.edges, path, cut, tally);
     ++tally.joining_paths;
     joined[loop_of[nearest]] = 1;
-    sources.insert(sources.end(), s.loops[loop_of[nearest]].begin(), s.loops[loop_of[nearest]].end());
-    for (const int e : path) sources.insert(sources.end(), s.edges.ends[e].begin(), s.edges.ends[e].end());
+    sources.insert(sources.end(), s.loops[loop_of[nearest]].begin(),
+                   s.loops[loop_of[nearest]].end());
+    for (const int e : path)
+      sources.insert(sources.end(), s.edges.ends[e].begin(), s.edges.ends[e].end());
   }
   open_up(p, s.edges, cut);
 }
@@ -96,7 +99,8 @@ void cut_loops(Piece& p, const Shape& s, const std::vector<int>& sources, DiskCu
   for (int e = 0; e < edges.count(); ++e) {
     if (!edges.interior(e) || in_tree[e]) continue;
     dual.push_back(e);
-    loop[e] = paths.distance[edges.ends[e][0]] + paths.distance[edges.ends[e][1]] + edge_length(p.V, edges, e);
+    loop[e] = paths.distance[edges.ends[e][0]] + paths.distance[edges.ends[e][1]] +
+              edge_length(p.V, edges, e);
   }
   std::stable_sort(dual.begin(), dual.end(), [&](int a, int b) { return loop[a] > loop[b]; });
   DisjointSets faces(static_cast<size_t>(p.F.rows()));
@@ -104,12 +108,15 @@ void cut_loops(Piece& p, const Shape& s, const std::vector<int>& sources, DiskCu
   for (const int e : dual) {
     if (faces.join(edges.faces[e][0], edges.faces[e][1])) continue;
     cut_along(p, edges, {e}, cut, tally);
-    for (const int v : edges.ends[e]) cut_along(p, edges, path_to_source(paths, edges, v), cut, tally);
+    for (const int v : edges.ends[e])
+      cut_along(p, edges, path_to_source(paths, edges, v), cut, tally);
     ++tally.handle_loops;
   }
   if (s.loops.empty() && s.genus == 0) {
     const auto farthest = std::max_element(paths.distance.begin(), paths.distance.end());
-    cut_along(p, edges, path_to_source(paths, edges, static_cast<int>(farthest - paths.distance.begin())), cut, tally);
+    cut_along(p, edges,
+              path_to_source(paths, edges, static_cast<int>(farthest - paths.distance.begin())),
+              cut, tally);
     tally.slit = true;
   }
   open_up(p, edges, cut);
@@ -144,7 +151,8 @@ DiskCut cut_to_disk(Piece& piece) {
   if (s.loops.empty()) {  // closed: loops through, or a slit from, the farthest vertex
     const std::vector<int> from_first = {0};
     const std::vector<double> d = shortest_paths(piece.V, s.edges, from_first).distance;
-    cut_loops(piece, s, {static_cast<int>(std::max_element(d.begin(), d.end()) - d.begin())}, tally);
+    cut_loops(piece, s, {static_cast<int>(std::max_element(d.begin(), d.end()) - d.begin())},
+              tally);
   } else if (s.genus > 0) {
     cut_loops(piece, s, s.loops[0], tally);
   }

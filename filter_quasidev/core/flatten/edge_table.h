@@ -10,11 +10,11 @@
 namespace qd {
 
 struct EdgeTable {
-  std::vector<std::array<int, 2>> ends;   // per edge: its vertices, lower index first
-  std::vector<std::array<int, 2>> faces;  // per edge: its first two faces, −1 where none
-  std::vector<char> nonmanifold;          // per edge: it has more than two faces
+  std::vector<std::array<int, 2>> ends;     // per edge: its vertices, lower index first
+  std::vector<std::array<int, 2>> faces;    // per edge: its first two faces, −1 where none
+  std::vector<char> nonmanifold;            // per edge: it has more than two faces
   std::vector<std::array<int, 3>> of_face;  // per face: edge of corner k → k+1
-  std::vector<int> first;                 // edges at vertex v: at[first[v] .. first[v + 1])
+  std::vector<int> first;                   // edges at vertex v: at[first[v] .. first[v + 1])
   std::vector<int> at;
 
   int count() const { return static_cast<int>(ends.size()); }

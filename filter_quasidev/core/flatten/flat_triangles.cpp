@@ -15,7 +15,8 @@ FlatTriangles flat_triangles(const Positions& V, const Triangles& F) {
   for (int f = 0; f < F.rows(); ++f) {
     const Vec3 a = V.row(F(f, 1)) - V.row(F(f, 0)), b = V.row(F(f, 2)) - V.row(F(f, 0));
     const double length = a.norm(), doubled_area = a.cross(b).norm();
-    const double x2 = length > 0 ? a.dot(b) / length : 0.0, y2 = length > 0 ? doubled_area / length : 0.0;
+    const double x2 = length > 0 ? a.dot(b) / length : 0.0,
+                 y2 = length > 0 ? doubled_area / length : 0.0;
     Eigen::Matrix<double, 2, 3>& x = g.corner[f];
     x << 0, length, x2, 0, 0, y2;
     g.area(f) = 0.5 * doubled_area;
@@ -32,7 +33,8 @@ FlatTriangles flat_triangles(const Positions& V, const Triangles& F) {
   return g;
 }
 
-Eigen::Matrix2d face_jacobian(const FlatTriangles& g, const Triangles& F, const Eigen::MatrixX2d& uv, int f) {
+Eigen::Matrix2d face_jacobian(const FlatTriangles& g, const Triangles& F,
+                              const Eigen::MatrixX2d& uv, int f) {
   Eigen::Matrix2d U;
   U.col(0) = (uv.row(F(f, 1)) - uv.row(F(f, 0))).transpose();
   U.col(1) = (uv.row(F(f, 2)) - uv.row(F(f, 0))).transpose();

@@ -23,6 +23,7 @@ struct FlatTriangles {
 FlatTriangles flat_triangles(const Positions& V, const Triangles& F);
 
 // J of face f for the flat positions uv (one row per vertex).
-Eigen::Matrix2d face_jacobian(const FlatTriangles& g, const Triangles& F, const Eigen::MatrixX2d& uv, int f);
+Eigen::Matrix2d face_jacobian(const FlatTriangles& g, const Triangles& F,
+                              const Eigen::MatrixX2d& uv, int f);
 
 }  // namespace qd

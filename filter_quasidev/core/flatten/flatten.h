@@ -6,9 +6,9 @@
 // overlaps reported.
 #pragma once
 
+#include "common/progress.h"
 #include "flatten/flatten_problem.h"
 #include "flatten/flatten_result.h"
-#include "common/progress.h"
 
 namespace qd {
 

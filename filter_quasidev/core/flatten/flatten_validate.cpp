@@ -21,7 +21,8 @@ void validate_mesh(const FlattenProblem& problem) {
   check_coordinates(problem.V);
   check_face_indices(problem.F, static_cast<int>(problem.V.rows()));
   check_zero_area(problem.V, problem.F);
-  const Topology topology = analyse_topology(problem.F, static_cast<int>(problem.V.rows()), problem.patch);
+  const Topology topology =
+      analyse_topology(problem.F, static_cast<int>(problem.V.rows()), problem.patch);
   check_duplicate_faces(topology);
   check_orientation(topology);
 }
@@ -40,11 +41,14 @@ void check_params(const FlattenParams& q) {
     throw Error("The ARAP tolerance is " + str(q.tolerance) +
                 ": it is a relative change of the energy, use a value in [0, 1), e.g. 1e-4.");
   if (!std::isfinite(q.gap) || q.gap < 0)
-    throw Error("The gap between pieces is " + str(q.gap) + ": use a distance >= 0 (0 = automatic).");
+    throw Error("The gap between pieces is " + str(q.gap) +
+                ": use a distance >= 0 (0 = automatic).");
   if (!std::isfinite(q.notch_spacing) || q.notch_spacing < 0)
-    throw Error("The notch spacing is " + str(q.notch_spacing) + ": use a distance >= 0 (0 = automatic).");
+    throw Error("The notch spacing is " + str(q.notch_spacing) +
+                ": use a distance >= 0 (0 = automatic).");
   if (q.threads < 0)
-    throw Error("The number of threads is " + std::to_string(q.threads) + ": use 0 (all cores) or more.");
+    throw Error("The number of threads is " + std::to_string(q.threads) +
+                ": use 0 (all cores) or more.");
 }
 
 }  // namespace

@@ -24,8 +24,10 @@ Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const Fl
   const double pi = std::acos(-1.0);
   Eigen::VectorXd turning(m), defect(ni);
   for (int v = 0; v < n; ++v) {
-    if (boundary[v] >= 0) turning(boundary[v]) = pi - angle_sum(v);  // κ_B
-    else defect(interior[v]) = 2 * pi - angle_sum(v);                // Ω_I
+    if (boundary[v] >= 0)
+      turning(boundary[v]) = pi - angle_sum(v);  // κ_B
+    else
+      defect(interior[v]) = 2 * pi - angle_sum(v);  // Ω_I
   }
 
   const Eigen::SparseMatrix<double> L_IB = sparse_block(L, interior, ni, boundary, m);
@@ -40,8 +42,10 @@ Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const Fl
   const Eigen::MatrixX2d curve = closed_boundary_curve(lengths, turning);  // step 3
 
   Eigen::MatrixX2d uv(n, 2);
-  const Eigen::MatrixX2d inside = L_II ? Eigen::MatrixX2d(L_II->solve(-(L_IB * curve))) : Eigen::MatrixX2d(0, 2);  // step 4
-  for (int v = 0; v < n; ++v) uv.row(v) = boundary[v] >= 0 ? curve.row(boundary[v]) : inside.row(interior[v]);
+  const Eigen::MatrixX2d inside =
+      L_II ? Eigen::MatrixX2d(L_II->solve(-(L_IB * curve))) : Eigen::MatrixX2d(0, 2);  // step 4
+  for (int v = 0; v < n; ++v)
+    uv.row(v) = boundary[v] >= 0 ? curve.row(boundary[v]) : inside.row(interior[v]);
   return uv;
 }
 

@@ -18,8 +18,8 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "flatten/flat_triangles.h"
 #include "common/solver_kind.h"
+#include "flatten/flat_triangles.h"
 
 namespace qd {
 

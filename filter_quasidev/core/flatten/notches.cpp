@@ -23,9 +23,11 @@ std::vector<std::vector<int>> seam_graph(std::vector<std::array<int, 2>>& edges,
 
 // Marks the chain's vertices nearest to every `spacing` of arc length from its first vertex,
 // and its last vertex (a closed chain's last vertex is its first).
-void mark_chain(const Positions& V, const std::vector<int>& chain, double spacing, std::vector<char>& notch) {
+void mark_chain(const Positions& V, const std::vector<int>& chain, double spacing,
+                std::vector<char>& notch) {
   std::vector<double> at(chain.size(), 0);
-  for (size_t i = 1; i < chain.size(); ++i) at[i] = at[i - 1] + (V.row(chain[i]) - V.row(chain[i - 1])).norm();
+  for (size_t i = 1; i < chain.size(); ++i)
+    at[i] = at[i - 1] + (V.row(chain[i]) - V.row(chain[i - 1])).norm();
   const int parts = std::max(1, static_cast<int>(std::lround(at.back() / spacing)));
   size_t i = 0;
   for (int k = 0; k <= parts; ++k) {
@@ -37,7 +39,8 @@ void mark_chain(const Positions& V, const std::vector<int>& chain, double spacin
 
 }  // namespace
 
-std::vector<char> notch_vertices(const Positions& V, std::vector<std::array<int, 2>> boundary_edges, double spacing) {
+std::vector<char> notch_vertices(const Positions& V, std::vector<std::array<int, 2>> boundary_edges,
+                                 double spacing) {
   const size_t n = static_cast<size_t>(V.rows());
   const std::vector<std::vector<int>> next = seam_graph(boundary_edges, n);
   std::vector<char> notch(n, 0);

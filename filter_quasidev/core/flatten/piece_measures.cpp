@@ -11,7 +11,8 @@ namespace {
 
 // Twice the signed area of face f in the plane.
 double doubled_flat_area(const Triangles& F, const Eigen::MatrixX2d& uv, int f) {
-  const Eigen::RowVector2d a = uv.row(F(f, 1)) - uv.row(F(f, 0)), b = uv.row(F(f, 2)) - uv.row(F(f, 0));
+  const Eigen::RowVector2d a = uv.row(F(f, 1)) - uv.row(F(f, 0)),
+                           b = uv.row(F(f, 2)) - uv.row(F(f, 0));
   return a.x() * b.y() - a.y() * b.x();
 }
 

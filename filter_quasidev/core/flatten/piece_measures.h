@@ -10,13 +10,13 @@
 namespace qd {
 
 struct PieceMeasures {
-  std::vector<double> stretch;   // per face: signed_stretch (face_distortion.h)
-  double max_distortion = 0;     // percent: largest length distortion max(σ1 − 1, 1 − σ2)
-  double mean_distortion = 0;    // percent: its area-weighted mean
-  double area_change = 0;        // percent: (flat area − 3D area) / 3D area, signed areas
-  double boundary_change = 0;    // percent: same for the length of the boundary
-  int flipped = 0;               // faces with det J ≤ 0
-  int overlapping = 0;           // faces with a boundary edge that crosses another one
+  std::vector<double> stretch;  // per face: signed_stretch (face_distortion.h)
+  double max_distortion = 0;    // percent: largest length distortion max(σ1 − 1, 1 − σ2)
+  double mean_distortion = 0;   // percent: its area-weighted mean
+  double area_change = 0;       // percent: (flat area − 3D area) / 3D area, signed areas
+  double boundary_change = 0;   // percent: same for the length of the boundary
+  int flipped = 0;              // faces with det J ≤ 0
+  int overlapping = 0;          // faces with a boundary edge that crosses another one
   bool flattenable() const { return flipped == 0 && overlapping == 0; }
 };
 

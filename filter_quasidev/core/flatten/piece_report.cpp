@@ -5,7 +5,8 @@
 
 namespace qd {
 
-PieceReport piece_report(const FlatPiece& flat, const std::string& label, const Eigen::AlignedBox2d& box) {
+PieceReport piece_report(const FlatPiece& flat, const std::string& label,
+                         const Eigen::AlignedBox2d& box) {
   PieceReport r;
   r.patch = flat.piece.patch;
   r.component = flat.piece.component;
@@ -34,9 +35,9 @@ std::string log_line(const PieceReport& r) {
   s << std::fixed << std::setprecision(2) << "patch " << r.label << ": " << r.faces << " faces";
   if (!r.cut.empty()) s << ", " << r.cut;
   s << "; " << r.iterations << " ARAP iterations (" << r.stop_reason << "); length distortion max "
-    << r.max_distortion << " %, mean " << r.mean_distortion << " %; area " << std::showpos << r.area_change
-    << " %, boundary " << r.boundary_change << " %; " << std::noshowpos << r.flipped << " flipped, "
-    << r.overlapping << " overlapping";
+    << r.max_distortion << " %, mean " << r.mean_distortion << " %; area " << std::showpos
+    << r.area_change << " %, boundary " << r.boundary_change << " %; " << std::noshowpos
+    << r.flipped << " flipped, " << r.overlapping << " overlapping";
   if (!r.flattenable) s << ": not flattenable without a cut";
   return s.str();
 }

@@ -9,7 +9,8 @@
 namespace qd {
 
 // flat: the piece; label: as on the pattern; box: where the layout put it.
-PieceReport piece_report(const FlatPiece& flat, const std::string& label, const Eigen::AlignedBox2d& box);
+PieceReport piece_report(const FlatPiece& flat, const std::string& label,
+                         const Eigen::AlignedBox2d& box);
 
 // "patch 3: 1200 faces, cut …; 12 ARAP iterations (converged); length distortion max …", ending
 // in "not flattenable without a cut" when the piece has flipped or overlapping faces.

@@ -11,9 +11,11 @@ double edge_length(const Positions& V, const EdgeTable& edges, int e) {
   return (V.row(edges.ends[e][0]) - V.row(edges.ends[e][1])).norm();
 }
 
-ShortestPaths shortest_paths(const Positions& V, const EdgeTable& edges, const std::vector<int>& sources) {
+ShortestPaths shortest_paths(const Positions& V, const EdgeTable& edges,
+                             const std::vector<int>& sources) {
   const size_t n = static_cast<size_t>(V.rows());
-  ShortestPaths p{std::vector<double>(n, std::numeric_limits<double>::infinity()), std::vector<int>(n, -1)};
+  ShortestPaths p{std::vector<double>(n, std::numeric_limits<double>::infinity()),
+                  std::vector<int>(n, -1)};
   using Entry = std::pair<double, int>;  // (distance, vertex): equal distances pop by index
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   for (const int s : sources) {

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "flatten/edge_table.h"
 #include "common/mesh.h"
+#include "flatten/edge_table.h"
 
 namespace qd {
 
@@ -15,7 +15,8 @@ struct ShortestPaths {
 
 // From every vertex of `sources` at once (their distance is 0). Ties are broken by vertex
 // index, so the paths depend on the input only.
-ShortestPaths shortest_paths(const Positions& V, const EdgeTable& edges, const std::vector<int>& sources);
+ShortestPaths shortest_paths(const Positions& V, const EdgeTable& edges,
+                             const std::vector<int>& sources);
 
 // The edges of the path from v back to its source, in that order.
 std::vector<int> path_to_source(const ShortestPaths& paths, const EdgeTable& edges, int v);

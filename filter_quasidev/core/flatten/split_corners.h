@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "flatten/edge_table.h"
 #include "common/mesh.h"
+#include "flatten/edge_table.h"
 
 namespace qd {
 
@@ -18,6 +18,7 @@ struct SplitMesh {
 // F with its edge table; cut: per edge, 1 = cut it open (empty = cut nothing, which still
 // separates bow-ties and the faces of non-manifold edges). New vertices are numbered in the
 // order of their first corner (face by face), so the result depends on the input only.
-SplitMesh split_corners(const Triangles& F, const EdgeTable& edges, const std::vector<char>& cut = {});
+SplitMesh split_corners(const Triangles& F, const EdgeTable& edges,
+                        const std::vector<char>& cut = {});
 
 }  // namespace qd

@@ -10,7 +10,8 @@
 
 namespace qd {
 
-constexpr double kStretchRampFloor = 1e-3;  // 0.1 %, the accuracy issue 14 asks of developable patches
+constexpr double kStretchRampFloor =
+    1e-3;  // 0.1 %, the accuracy issue 14 asks of developable patches
 
 QualityRange stretch_ramp_range(const std::vector<double>& stretch);
 

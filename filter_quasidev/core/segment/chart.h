@@ -13,7 +13,7 @@ struct Chart {
 };
 
 // Labels of faces in an assignment other than chart indices.
-constexpr int kFree = -1;    // not in a chart yet
+constexpr int kFree = -1;     // not in a chart yet
 constexpr int kOutside = -2;  // not segmented here (a region kept whole)
 
 }  // namespace qd

@@ -56,9 +56,9 @@ class Grower {
       (h >= 0 && label_[h] == c ? inner : outer) += graph_.side_length[t][k];
     }
     const double distance = (g_.centroid[t] - g_.centroid[chart.seed]).norm();
-    heap_.push({log_growing_cost(deviation, s_.limit, distance, chart.area_hint, outer, inner,
-                                 s_.weights),
-                t, c});
+    heap_.push(
+        {log_growing_cost(deviation, s_.limit, distance, chart.area_hint, outer, inner, s_.weights),
+         t, c});
   }
 
   const FaceGraph& graph_;

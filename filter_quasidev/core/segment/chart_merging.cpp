@@ -36,8 +36,14 @@ class Merger {
  public:
   Merger(Partition& p, const FaceGraph& graph, const FaceGeometry& g, MergeRule rule,
          const MergeSettings& s)
-      : p_(p), g_(g), rule_(rule), s_(s), neighbours_(p.faces.size()),
-        version_(p.faces.size(), 0), moments_(p.faces.size()), area_(p.faces.size()) {
+      : p_(p),
+        g_(g),
+        rule_(rule),
+        s_(s),
+        neighbours_(p.faces.size()),
+        version_(p.faces.size(), 0),
+        moments_(p.faces.size()),
+        area_(p.faces.size()) {
     for (size_t c = 0; c < p.faces.size(); ++c) {
       moments_[c] = normal_moments(g, p.faces[c]);
       area_[c] = moments_[c].area;
@@ -132,7 +138,7 @@ class Merger {
     p_.faces[keep] = std::move(faces);
     p_.faces[gone].clear();
     p_.fit[keep] = c.fit;
-    p_.over[keep] = c.fit.max_error <= s_.limit     ? OverLimit::No
+    p_.over[keep] = c.fit.max_error <= s_.limit       ? OverLimit::No
                     : rule_ == MergeRule::TargetCount ? OverLimit::TargetCount
                     : both_small                      ? OverLimit::SmallestSize
                                                       : OverLimit::SmallPart;

@@ -22,10 +22,10 @@ namespace qd {
 enum class MergeRule { WithinLimit, SmallCharts, TargetCount };
 
 struct MergeSettings {
-  double limit = 0.0;    // radians
-  int min_faces = 1;     // smallest chart
+  double limit = 0.0;  // radians
+  int min_faces = 1;   // smallest chart
   double min_area = 0.0;
-  int target = 0;        // TargetCount: charts wanted
+  int target = 0;  // TargetCount: charts wanted
   int threads = 1;
 };
 

@@ -18,8 +18,7 @@ struct AngleStats {
   double shift = 0, area = 0, first = 0, second = 0;  // α_first, Σa, Σa·β, Σa·β²
   double largest = 0;                                 // max |α − θ| for a given θ
 
-  AngleStats(const FaceGeometry& g, const std::vector<int>& faces, const Vec3& axis,
-             double theta) {
+  AngleStats(const FaceGeometry& g, const std::vector<int>& faces, const Vec3& axis, double theta) {
     if (!faces.empty()) shift = angle_between(g.normal[faces.front()], axis);
     for (const int f : faces) {
       const double alpha = angle_between(g.normal[f], axis), a = g.area[f], beta = alpha - shift;

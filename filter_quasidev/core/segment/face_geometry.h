@@ -8,7 +8,7 @@
 namespace qd {
 
 struct FaceGeometry {
-  std::vector<Vec3> normal;    // unit
+  std::vector<Vec3> normal;  // unit
   std::vector<double> area;
   std::vector<Vec3> centroid;
   double total_area = 0.0;

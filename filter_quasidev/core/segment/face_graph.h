@@ -20,7 +20,7 @@ struct FaceGraph {
   int nonmanifold_edges = 0;
   int misoriented_edges = 0;
   std::vector<std::array<int, 2>> creases;  // the two faces of each crease cut, lower first
-  int region_edges = 0;  // edges between two regions
+  int region_edges = 0;                     // edges between two regions
 };
 
 // region: a label per face (empty = one region).

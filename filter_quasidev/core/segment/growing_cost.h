@@ -27,8 +27,7 @@ inline double log_power(double x, double w) {
 }
 
 inline double log_growing_cost(double deviation, double limit, double seed_distance,
-                               double area_hint, double outer, double inner,
-                               const CostWeights& w) {
+                               double area_hint, double outer, double inner, const CostWeights& w) {
   const double r = deviation / limit;
   const double fit = r * r + kFitFloor * kFitFloor;
   const double compactness = M_PI * seed_distance * seed_distance / area_hint;

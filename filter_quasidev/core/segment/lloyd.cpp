@@ -13,7 +13,7 @@ namespace qd {
 
 namespace {
 
-constexpr int kAdaptRounds = 8;   // refits of a new chart as it grows, at most
+constexpr int kAdaptRounds = 8;      // refits of a new chart as it grows, at most
 constexpr size_t kAdaptGrowth = 20;  // it stops when a refit adds less than 1/20 of its faces
 
 // The cone fitted to `faces` with the chart's previous axis among the candidates. That axis with
@@ -57,9 +57,8 @@ void fill_free(const FaceGraph& graph, const FaceGeometry& g, const GrowSettings
                LloydResult& r) {
   std::vector<int> free = faces_labelled(r.label, kFree);
   const std::vector<int> hops = hops_to_border(graph, r.label, free);
-  std::sort(free.begin(), free.end(), [&](int a, int b) {
-    return hops[a] != hops[b] ? hops[a] > hops[b] : a < b;
-  });
+  std::sort(free.begin(), free.end(),
+            [&](int a, int b) { return hops[a] != hops[b] ? hops[a] > hops[b] : a < b; });
   for (const int seed : free)
     if (r.label[seed] == kFree) add_chart(graph, g, s, seed, r);
 }
@@ -100,8 +99,8 @@ LloydResult lloyd_charts(const FaceGraph& graph, const FaceGeometry& g, std::vec
   r.label = start;
   fill_free(graph, g, settings, r);
   if (progress)
-    progress(percent_from, "Segmenting: first growth, " + std::to_string(r.charts.size()) +
-                               " charts");
+    progress(percent_from,
+             "Segmenting: first growth, " + std::to_string(r.charts.size()) + " charts");
   for (int round = 1; round <= max_rounds; ++round) {
     const std::vector<int> previous = r.label;
     const size_t charts = r.charts.size();

@@ -117,7 +117,8 @@ SegmentResult segment(const SegmentProblem& problem, const Progress& progress) {
   SegmentResult r = patch_report(p, problem, g);
   r.rounds = lloyd.rounds;
   r.warnings = segment_warnings(graph.nonmanifold_edges, graph.misoriented_edges, r, q);
-  r.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  r.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   r.log = segment_log(r, static_cast<int>(problem.F.rows()), q);
   if (progress) progress(100, "Segmenting: done");
   return r;

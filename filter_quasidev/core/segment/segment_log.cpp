@@ -108,8 +108,8 @@ std::vector<std::string> segment_log(const SegmentResult& r, int faces, const Se
   std::snprintf(summary, sizeof summary,
                 "Segmented %d faces into %d patches (%d disks) in %d rounds; largest fit error "
                 "%.2f deg (limit %.4g deg); %.0f ms.",
-                faces, static_cast<int>(r.patches.size()), disks, r.rounds, worst,
-                q.max_error_deg, r.time_ms);
+                faces, static_cast<int>(r.patches.size()), disks, r.rounds, worst, q.max_error_deg,
+                r.time_ms);
   log.push_back(summary);
   return log;
 }

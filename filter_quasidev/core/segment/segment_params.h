@@ -44,7 +44,7 @@ struct SegmentParams {
   // Lloyd rounds after the first growth, at most (they stop earlier once settled, lloyd.h); ten
   // fit better than one and thirty no better than ten (docs/measurements-behind-the-code.md).
   int max_rounds = 10;
-  int threads = 0;      // 0 = all cores
+  int threads = 0;  // 0 = all cores
 };
 
 }  // namespace qd

@@ -24,20 +24,20 @@ struct SegmentPatch {
   double max_error_deg = 0.0;  // largest angle of a face normal to the cone
   double rms_error_deg = 0.0;  // area-weighted root mean square of the same
   int boundary_loops = 0;
-  int euler = 0;               // V − E + F of the patch
-  bool disk = false;           // Euler characteristic 1 and one boundary loop: flattens uncut
-  bool kept = false;           // an input region (existing patch or component) kept whole
-  int source_patch = -1;       // the input patch id of its faces, −1 without input patch ids
+  int euler = 0;          // V − E + F of the patch
+  bool disk = false;      // Euler characteristic 1 and one boundary loop: flattens uncut
+  bool kept = false;      // an input region (existing patch or component) kept whole
+  int source_patch = -1;  // the input patch id of its faces, −1 without input patch ids
   OverLimit over_limit = OverLimit::No;
 };
 
 struct SegmentResult {
-  std::vector<int> patch;              // per face, 0 … k−1; each patch is edge-connected
-  std::vector<SegmentPatch> patches;   // per patch id, numbered in the order of lowest face
-  int rounds = 0;                      // growing rounds of the Lloyd iteration
+  std::vector<int> patch;             // per face, 0 … k−1; each patch is edge-connected
+  std::vector<SegmentPatch> patches;  // per patch id, numbered in the order of lowest face
+  int rounds = 0;                     // growing rounds of the Lloyd iteration
   double time_ms = 0.0;
-  std::vector<std::string> warnings;   // parts of the input handled specially, and what to do
-  std::vector<std::string> log;        // the warnings, one line per patch, a summary
+  std::vector<std::string> warnings;  // parts of the input handled specially, and what to do
+  std::vector<std::string> log;       // the warnings, one line per patch, a summary
 };
 
 }  // namespace qd

@@ -1,5 +1,5 @@
-// The mesh checks every job shares (common/validate_mesh.h), the sizes of the per-face inputs and the
-// parameters of the segmentation.
+// The mesh checks every job shares (common/validate_mesh.h), the sizes of the per-face inputs and
+// the parameters of the segmentation.
 #include "segment/segment_validate.h"
 
 #include <cmath>
@@ -25,8 +25,7 @@ void check_per_face(const std::vector<T>& values, const Triangles& F, const char
 constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 // x in [lo, hi] (or (lo, hi] when lo_open); hi = kNoLimit for no upper limit.
-void check_range(const char* name, double x, double lo, double hi, bool lo_open,
-                 const char* hint) {
+void check_range(const char* name, double x, double lo, double hi, bool lo_open, const char* hint) {
   const bool ok = std::isfinite(x) && (lo_open ? x > lo : x >= lo) && x <= hi;
   if (ok) return;
   const std::string range = hi == kNoLimit ? "of at least " + to_text(lo)

@@ -16,7 +16,12 @@ class SmallChartGrower {
  public:
   SmallChartGrower(Partition& p, const FaceGraph& graph, const FaceGeometry& g,
                    const MinimumSize& size)
-      : p_(p), graph_(graph), g_(g), size_(size), faces_(p.faces.size()), area_(p.faces.size()),
+      : p_(p),
+        graph_(graph),
+        g_(g),
+        size_(size),
+        faces_(p.faces.size()),
+        area_(p.faces.size()),
         touched_(p.faces.size(), 0) {
     for (size_t c = 0; c < p.faces.size(); ++c) {
       faces_[c] = static_cast<int>(p.faces[c].size());
@@ -75,8 +80,7 @@ class SmallChartGrower {
     for (size_t i = 1; i < seen.size() && seen.size() <= kDetour; ++i)
       for (const int h : graph_.neighbour[seen[i]]) {
         if (h == b) return true;
-        if (h >= 0 && p_.label[h] == donor &&
-            std::find(seen.begin(), seen.end(), h) == seen.end())
+        if (h >= 0 && p_.label[h] == donor && std::find(seen.begin(), seen.end(), h) == seen.end())
           seen.push_back(h);
       }
     return false;

@@ -25,8 +25,9 @@ class Splitter {
     for (const int f : faces) label[f] = kFree;
     std::array<int, 2> seed = {interior(p_.label, c, faces, -1), worst(faces, p_.fit[c].proxy)};
     if (seed[0] == seed[1]) seed[0] = interior(p_.label, c, faces, seed[1]);
-    std::vector<Chart> halves = {{seed[0], p_.fit[c].proxy, faces_area(g_, faces) / 2},
-                                 {seed[1], plane_proxy(g_.normal[seed[1]]), faces_area(g_, faces) / 2}};
+    std::vector<Chart> halves = {
+        {seed[0], p_.fit[c].proxy, faces_area(g_, faces) / 2},
+        {seed[1], plane_proxy(g_.normal[seed[1]]), faces_area(g_, faces) / 2}};
     GrowSettings all = s_;
     all.limit = M_PI;  // every face is admitted; the fit term still orders them
     for (int round = 0;; ++round) {
@@ -90,8 +91,8 @@ class Splitter {
 
 }  // namespace
 
-int split_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g,
-                 const GrowSettings& s, const MinimumSize& size, int target) {
+int split_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g, const GrowSettings& s,
+                 const MinimumSize& size, int target) {
   Splitter splitter(p, graph, g, s, size);
   std::vector<char> tried(p.faces.size(), 0);
   int alive = 0;
@@ -101,8 +102,7 @@ int split_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g,
     int pick = -1;
     double pick_area = 0;
     for (size_t c = 0; c < p.faces.size(); ++c) {
-      if (p.faces[c].size() < 2 * static_cast<size_t>(size.faces) ||
-          (c < tried.size() && tried[c]))
+      if (p.faces[c].size() < 2 * static_cast<size_t>(size.faces) || (c < tried.size() && tried[c]))
         continue;
       const double area = faces_area(g, p.faces[c]);
       if (area < 2 * size.area) continue;

@@ -17,7 +17,7 @@ namespace qd {
 constexpr int kSplitRounds = 3;
 
 // Returns the number of charts added. s.limit: the fit limit, radians.
-int split_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g,
-                 const GrowSettings& s, const MinimumSize& size, int target);
+int split_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g, const GrowSettings& s,
+                 const MinimumSize& size, int target);
 
 }  // namespace qd

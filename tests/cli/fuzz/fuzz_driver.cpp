@@ -27,12 +27,24 @@ std::string mutate(std::string s, std::mt19937_64& rng) {
   for (int e = 0; e < edits; ++e) {
     const std::size_t at = s.empty() ? 0 : pick(s.size() - 1);
     switch (pick(5)) {
-      case 0: if (!s.empty()) s[at] = static_cast<char>(pick(255)); break;
-      case 1: s.resize(pick(s.size())); break;
-      case 2: s.insert(at, 1, static_cast<char>(pick(255))); break;
-      case 3: if (!s.empty()) s.erase(at, pick(16)); break;
-      case 4: if (!s.empty()) s.insert(at, s.substr(pick(s.size() - 1), pick(64))); break;
-      default: s.insert(at, std::to_string(static_cast<long long>(rng()) >> pick(60))); break;
+      case 0:
+        if (!s.empty()) s[at] = static_cast<char>(pick(255));
+        break;
+      case 1:
+        s.resize(pick(s.size()));
+        break;
+      case 2:
+        s.insert(at, 1, static_cast<char>(pick(255)));
+        break;
+      case 3:
+        if (!s.empty()) s.erase(at, pick(16));
+        break;
+      case 4:
+        if (!s.empty()) s.insert(at, s.substr(pick(s.size() - 1), pick(64)));
+        break;
+      default:
+        s.insert(at, std::to_string(static_cast<long long>(rng()) >> pick(60)));
+        break;
     }
   }
   return s;
@@ -61,7 +73,8 @@ int main(int argc, char** argv) {
   const auto start = std::chrono::steady_clock::now();
   long done = 0;
   for (; done < runs; ++done) {
-    if (done % 256 == 0 && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds)
+    if (done % 256 == 0 &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds)
       break;
     run(mutate(seeds[rng() % seeds.size()], rng));
   }

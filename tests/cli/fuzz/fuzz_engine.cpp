@@ -31,10 +31,10 @@ qd::Problem problem_from(ByteReader& in) {
   qd::Problem p;
   p.V.resize((n + 1) * (n + 1), 3);
   for (int y = 0; y <= n; ++y)
-    for (int x = 0; x <= n; ++x)
-      p.V.row(y * (n + 1) + x) << x, y, 2 * in.unit() - 1;
+    for (int x = 0; x <= n; ++x) p.V.row(y * (n + 1) + x) << x, y, 2 * in.unit() - 1;
   const unsigned flags = in.next();
-  const int split = 1 + static_cast<int>(in.next() % static_cast<unsigned>(n));  // patch seam column
+  const int split =
+      1 + static_cast<int>(in.next() % static_cast<unsigned>(n));  // patch seam column
   p.F.resize(2 * n * n, 3);
   for (int y = 0; y < n; ++y)
     for (int x = 0; x < n; ++x) {
@@ -45,7 +45,8 @@ qd::Problem problem_from(ByteReader& in) {
     }
   if ((flags & 65) == 65) std::swap(p.F(0, 0), p.F(0, 1));  // inconsistent orientation
   if (flags & 4)
-    for (int v = 0; v < p.V.rows(); ++v) p.constrained.push_back(static_cast<char>(in.next() % 4 == 0));
+    for (int v = 0; v < p.V.rows(); ++v)
+      p.constrained.push_back(static_cast<char>(in.next() % 4 == 0));
   p.params.tolerance = 0.01 + 3 * in.unit();
   p.params.max_iter = 1 + static_cast<int>(in.next() % 4);
   p.params.weight = 1 + 60 * in.unit();

@@ -20,7 +20,8 @@ inline GridMesh cylinder(int columns, int rows, double r, double h, double sweep
 
 // Frustum of a cone: radius r0 at z = 0 to r1 at z = h. Quads are planar isosceles trapezoids,
 // so it is exactly developable (into a sector of an annulus).
-inline GridMesh cone(int columns, int rows, double r0, double r1, double h, double sweep = 2 * M_PI) {
+inline GridMesh cone(int columns, int rows, double r0, double r1, double h,
+                     double sweep = 2 * M_PI) {
   const bool tube = std::abs(sweep - 2 * M_PI) < 1e-12;
   return grid_mesh(columns, rows, tube, [&](int i, int j) {
     const double t = sweep * i / columns, s = static_cast<double>(j) / rows, r = r0 + (r1 - r0) * s;

@@ -19,7 +19,8 @@ struct Strip {
     std::mt19937 random(7);
     std::uniform_real_distribution<double> jitter(-0.02, 0.02);
     Eigen::MatrixX2d uv(m.V.rows(), 2);
-    for (int v = 0; v < m.V.rows(); ++v) uv.row(v) << m.V(v, 0) + jitter(random), m.V(v, 2) + jitter(random);
+    for (int v = 0; v < m.V.rows(); ++v)
+      uv.row(v) << m.V(v, 0) + jitter(random), m.V(v, 2) + jitter(random);
     return uv;
   }
 };

@@ -52,7 +52,7 @@ TEST(CutToDisk, TubeGetsExactlyOneShortestCut) {
   EXPECT_EQ(cut.joining_paths, 1);
   EXPECT_EQ(cut.handle_loops, 0);
   EXPECT_FALSE(cut.slit);
-  EXPECT_EQ(cut.edges, 5);               // straight up one column of vertices
+  EXPECT_EQ(cut.edges, 5);              // straight up one column of vertices
   EXPECT_NEAR(cut.length, 3.0, 1e-12);  // the height: nothing is shorter
   EXPECT_EQ(p.V.rows(), 16 * 6 + 6);
   expect_disk(p);
@@ -77,7 +77,8 @@ TEST(CutToDisk, PanelWithTwoHolesGetsTwoJoiningPaths) {
   qd::Piece p = piece_of(m);
   const qd::DiskCut cut = qd::cut_to_disk(p);
   EXPECT_EQ(cut.joining_paths, 2);
-  EXPECT_NE(cut.note.find("2 shortest paths joining its 3 boundary loops"), std::string::npos) << cut.note;
+  EXPECT_NE(cut.note.find("2 shortest paths joining its 3 boundary loops"), std::string::npos)
+      << cut.note;
   expect_disk(p);
 }
 

@@ -129,7 +129,8 @@ TEST(Flatten, PiecesLieApartAndSeamsGetNotches) {
   for (int f = 0; f < m.F.rows(); ++f) {
     const size_t piece = m.patch[f] == 9 ? 4 : static_cast<size_t>(m.patch[f]);
     for (int k = 0; k < 3; ++k)
-      EXPECT_TRUE(r.pieces[piece].box.contains(Eigen::Vector2d(r.uv.block<1, 2>(f, 2 * k).transpose())));
+      EXPECT_TRUE(
+          r.pieces[piece].box.contains(Eigen::Vector2d(r.uv.block<1, 2>(f, 2 * k).transpose())));
   }
 }
 
@@ -151,7 +152,8 @@ TEST(Flatten, OneTrianglePatchesAreExactPieces) {
 
 TEST(Flatten, ProgressRisesToOneHundred) {
   std::vector<int> percent;
-  qd::flatten(problem_of(five_patches(), 1), [&](int p, const std::string&) { percent.push_back(p); });
+  qd::flatten(problem_of(five_patches(), 1),
+              [&](int p, const std::string&) { percent.push_back(p); });
   ASSERT_FALSE(percent.empty());
   EXPECT_TRUE(std::is_sorted(percent.begin(), percent.end()));
   EXPECT_EQ(percent.back(), 100);
@@ -161,8 +163,10 @@ TEST(Flatten, BadInputFailsWithAReason) {
   qd::FlattenProblem empty;
   EXPECT_THROW(qd::flatten(empty), qd::Error);
   for (const auto& bad : std::vector<std::function<void(qd::FlattenParams&)>>{
-           [](qd::FlattenParams& q) { q.max_iterations = -1; }, [](qd::FlattenParams& q) { q.tolerance = NAN; },
-           [](qd::FlattenParams& q) { q.gap = -1; }, [](qd::FlattenParams& q) { q.notch_spacing = INFINITY; },
+           [](qd::FlattenParams& q) { q.max_iterations = -1; },
+           [](qd::FlattenParams& q) { q.tolerance = NAN; },
+           [](qd::FlattenParams& q) { q.gap = -1; },
+           [](qd::FlattenParams& q) { q.notch_spacing = INFINITY; },
            [](qd::FlattenParams& q) { q.threads = -2; }}) {
     qd::FlattenProblem p = problem_of(qd::test::cylinder(8, 2, 1, 1, 2));
     bad(p.params);

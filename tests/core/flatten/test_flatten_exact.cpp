@@ -62,7 +62,8 @@ TEST(FlattenExact, ConeTubeFlattensToItsSector) {
 
 // The boundary-first start alone (no ARAP iteration) is already the development.
 TEST(FlattenExact, TheStartIsTheDevelopmentAlready) {
-  for (const GridMesh& m : {qd::test::cylinder(32, 8, 1.0, 2.0), qd::test::cone(40, 10, 1.0, 0.4, 1.5)}) {
+  for (const GridMesh& m :
+       {qd::test::cylinder(32, 8, 1.0, 2.0), qd::test::cone(40, 10, 1.0, 0.4, 1.5)}) {
     qd::FlattenProblem p;
     p.V = m.V;
     p.F = m.F;
@@ -75,7 +76,8 @@ TEST(FlattenExact, TheStartIsTheDevelopmentAlready) {
 
 // Open strips need no cut; the pattern is the same rectangle / sector, at true scale.
 TEST(FlattenExact, OpenCylinderAndConeStripsNeedNoCut) {
-  for (const GridMesh& m : {qd::test::cylinder(24, 6, 2.0, 1.0, 2.5), qd::test::cone(24, 6, 2.0, 0.5, 1.0, 3.0)}) {
+  for (const GridMesh& m :
+       {qd::test::cylinder(24, 6, 2.0, 1.0, 2.5), qd::test::cone(24, 6, 2.0, 0.5, 1.0, 3.0)}) {
     const qd::FlattenResult r = run(m);
     ASSERT_EQ(r.pieces.size(), 1u);
     EXPECT_TRUE(r.pieces[0].cut.empty()) << r.pieces[0].cut;

@@ -8,8 +8,8 @@
 #include <iostream>
 #include <polyclipping/clipper.hpp>
 
-#include "minkowski_nfp.h"
 #include "cut_marker.h"
+#include "minkowski_nfp.h"
 #include "nest_marker.h"
 #include "row_marker.h"
 

@@ -10,7 +10,8 @@ qd::Positions points() {
   qd::Positions V(23, 3);
   for (int i = 0; i <= 10; ++i) V.row(i) << i, 0, 0;
   const double r = 12 / (2 * M_PI);
-  for (int i = 0; i < 12; ++i) V.row(11 + i) << r * std::cos(2 * M_PI * i / 12), r * std::sin(2 * M_PI * i / 12), 5;
+  for (int i = 0; i < 12; ++i)
+    V.row(11 + i) << r * std::cos(2 * M_PI * i / 12), r * std::sin(2 * M_PI * i / 12), 5;
   return V;
 }
 
@@ -28,7 +29,8 @@ TEST(Notches, OpenSeamGetsItsEndsAndEveryTwoUnits) {
     edges.push_back({i + 1, i});  // the other side, running the other way
   }
   edges.push_back({3, 15});  // a boundary edge of one piece only: no seam
-  EXPECT_EQ(notched(qd::notch_vertices(points(), edges, 2.0)), (std::vector<int>{0, 2, 4, 6, 8, 10}));
+  EXPECT_EQ(notched(qd::notch_vertices(points(), edges, 2.0)),
+            (std::vector<int>{0, 2, 4, 6, 8, 10}));
 }
 
 TEST(Notches, ClosedSeamStartsAtItsLowestVertex) {

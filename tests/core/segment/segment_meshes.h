@@ -83,8 +83,7 @@ inline MeshBuilder capped_cylinder(int around = 48, int up = 16, int rings = 6) 
 inline MeshBuilder cone_on_cylinder(int around = 48, int up = 12) {
   MeshBuilder b;
   b.grid([](double u, double v) { return ring(u, 1.0, v); }, around, up, 0);
-  b.grid([](double u, double v) { return ring(u, 1.0 - 0.75 * v, 1.0 + 0.75 * v); }, around, up,
-         1);
+  b.grid([](double u, double v) { return ring(u, 1.0 - 0.75 * v, 1.0 + 0.75 * v); }, around, up, 1);
   return b;
 }
 
@@ -92,12 +91,8 @@ inline MeshBuilder cone_on_cylinder(int around = 48, int up = 12) {
 inline MeshBuilder cube(int n = 10) {
   MeshBuilder b;
   const Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();
-  const std::array<std::array<Vec3, 3>, 6> sides = {{{x, y, z},
-                                                     {-x, z, y},
-                                                     {y, z, x},
-                                                     {-y, x, z},
-                                                     {z, x, y},
-                                                     {-z, y, x}}};  // normal, ∂u, ∂v
+  const std::array<std::array<Vec3, 3>, 6> sides = {
+      {{x, y, z}, {-x, z, y}, {y, z, x}, {-y, x, z}, {z, x, y}, {-z, y, x}}};  // normal, ∂u, ∂v
   for (int s = 0; s < 6; ++s) {
     const auto& [normal, du, dv] = sides[s];
     b.grid([&](double u, double v) -> Vec3 { return normal + (2 * u - 1) * du + (2 * v - 1) * dv; },
@@ -110,10 +105,12 @@ inline MeshBuilder cube(int n = 10) {
 // doubly curved in a few dozen faces. height 0: a flat square.
 inline MeshBuilder bumped_plane(int n = 20, double height = 0.5) {
   MeshBuilder b;
-  b.grid([&](double u, double v) -> Vec3 {
-    const double x = 2 * u - 1, y = 2 * v - 1;
-    return {x, y, height * std::exp(-(x * x + y * y) / 0.04)};
-  }, n, n, 0);
+  b.grid(
+      [&](double u, double v) -> Vec3 {
+        const double x = 2 * u - 1, y = 2 * v - 1;
+        return {x, y, height * std::exp(-(x * x + y * y) / 0.04)};
+      },
+      n, n, 0);
   return b;
 }
 

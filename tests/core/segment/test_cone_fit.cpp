@@ -76,8 +76,9 @@ TEST(ConeFit, ApexAngleIsAtMostNinetyDegrees) {
 TEST(ConeFit, LowerBoundNeverExceedsTheLargestError) {
   FaceGeometry g = cone_normals(Vec3::UnitX(), 1.0, 2.0, 50);
   for (int i = 0; i < 50; ++i) {  // deterministic wobble of up to ~11°
-    g.normal[i] = (g.normal[i] + 0.2 * Vec3(std::sin(7.0 * i), std::cos(5.0 * i), std::sin(3.0 * i)))
-                      .normalized();
+    g.normal[i] =
+        (g.normal[i] + 0.2 * Vec3(std::sin(7.0 * i), std::cos(5.0 * i), std::sin(3.0 * i)))
+            .normalized();
     g.area[i] = 1.0 + (i % 3);
   }
   const ConeFit fit = fit_cone(g, all(g), kLimit);
@@ -87,7 +88,7 @@ TEST(ConeFit, LowerBoundNeverExceedsTheLargestError) {
 
 TEST(ConeFit, OverTheLimitAFarFaceDoesNotTiltTheCone) {
   FaceGeometry g = cone_normals(Vec3::UnitZ(), M_PI / 2, 5.5, 40);  // most of a cylinder
-  g.normal.push_back(Vec3::UnitZ());  // one face far off the cylinder
+  g.normal.push_back(Vec3::UnitZ());                                // one face far off the cylinder
   g.area.push_back(1.0);
   const ConeFit fit = fit_cone(g, all(g), kLimit);
   EXPECT_GT(fit.max_error, kLimit);

@@ -123,7 +123,8 @@ TEST(SegmentProperties, TargetCountOutOfReachIsSaid) {
   expect_valid(p, r);
   EXPECT_EQ(r.patches.size(), 3u);
   bool said = false;
-  for (const std::string& line : r.warnings) said = said || line.find("not the target 2") != std::string::npos;
+  for (const std::string& line : r.warnings)
+    said = said || line.find("not the target 2") != std::string::npos;
   EXPECT_TRUE(said);
 }
 
