@@ -20,7 +20,6 @@ namespace qd {
 namespace {
 
 constexpr int kUnblocked = QuasiDefiniteLdlt::kUnblocked;
-constexpr int kUpdateColumns = QuasiDefiniteLdlt::kUpdateColumns;
 
 // C(m×n) = beta·C − A(m×k)·B(n×k)ᵀ, column major.
 void subtract_product(int m, int n, int k, const double* A, int lda, const double* B, int ldb,

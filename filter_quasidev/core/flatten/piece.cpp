@@ -81,14 +81,19 @@ std::vector<Piece> extract_pieces(const Positions& V, const Triangles& F,
     const std::vector<int> of_vertex = linked.numbering(&count);
     std::vector<std::vector<int>> faces_of(static_cast<size_t>(count));
     for (int f = 0; f < whole.F.rows(); ++f) faces_of[of_vertex[whole.F(f, 0)]].push_back(f);
-    std::vector<int> whole_local(count > 1 ? static_cast<size_t>(whole.V.rows()) : 0, -1);
-    for (int c = 0; c < count; ++c) {
-      pieces.push_back(count == 1 ? std::move(whole)
-                                  : component_of(whole, faces_of[c], c, whole_local));
-      pieces.back().components = count;
+    const size_t first = pieces.size();
+    if (count == 1) {
+      pieces.push_back(std::move(whole));
+    } else {
+      std::vector<int> whole_local(static_cast<size_t>(whole.V.rows()), -1);
+      for (int c = 0; c < count; ++c)
+        pieces.push_back(component_of(whole, faces_of[c], c, whole_local));
+    }
+    for (size_t k = first; k < pieces.size(); ++k) {
+      pieces[k].components = count;
       // Every local face and vertex maps to one of the mesh.
-      assert(pieces.back().face.size() == static_cast<size_t>(pieces.back().F.rows()) &&
-             pieces.back().vertex.size() == static_cast<size_t>(pieces.back().V.rows()));
+      assert(pieces[k].face.size() == static_cast<size_t>(pieces[k].F.rows()) &&
+             pieces[k].vertex.size() == static_cast<size_t>(pieces[k].V.rows()));
     }
   }
   return pieces;
