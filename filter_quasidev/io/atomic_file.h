@@ -6,7 +6,7 @@
 
 #include <string>
 
-namespace qd::meshio {
+namespace qd::io {
 
 class PendingFile {
  public:
@@ -23,4 +23,4 @@ class PendingFile {
   bool committed_ = false;
 };
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-namespace qd::meshio {
+namespace qd::io {
 
 std::vector<std::size_t> read_constraint_file(const std::string& path, std::size_t vertex_count);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -8,11 +8,11 @@
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 // The whole content of a file; throws qd::Error if it cannot be read.
 std::string read_file_bytes(const std::string& path);
 
 MeshDocument read_mesh(const std::string& path);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -13,8 +13,8 @@
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 MeshDocument parse_obj(std::string_view bytes);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

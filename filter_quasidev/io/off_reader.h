@@ -8,8 +8,8 @@
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 MeshDocument parse_off(std::string_view bytes);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

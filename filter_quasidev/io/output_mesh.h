@@ -23,16 +23,16 @@
 #include "io/mesh_document.h"
 #include "io/ply_tables.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 enum class Element { Vertex, Face };
 
-void set_positions(MeshDocument& doc, const Positions& V);
+void set_positions(MeshDocument& doc, const common::Positions& V);
 void set_quality(MeshDocument& doc, Element element, const std::vector<double>& quality);
 void set_colors(MeshDocument& doc, Element element,
                 const std::vector<std::array<unsigned char, 3>>& colors);
-void set_texcoords(MeshDocument& doc, const WedgeUV& uv);
+void set_texcoords(MeshDocument& doc, const flatten::WedgeUV& uv);
 
 std::string serialize_ply(const MeshDocument& doc, PlyFormat format);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

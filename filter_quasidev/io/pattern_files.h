@@ -10,9 +10,9 @@
 #include "flatten/pattern.h"
 #include "flatten_settings.h"
 
-namespace qd {
+namespace qd::io {
 
 std::vector<std::pair<std::string, std::string>> pattern_files(
-    const params::FlattenSettings& settings, const Pattern& pattern);
+    const params::FlattenSettings& settings, const flatten::Pattern& pattern);
 
-}  // namespace qd
+}  // namespace qd::io

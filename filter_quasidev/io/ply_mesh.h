@@ -12,11 +12,11 @@
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 // vcg's selection bit in the PLY vertex `flags` property.
 constexpr int kSelectedFlag = 0x20;
 
 MeshDocument parse_ply(std::string_view bytes);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

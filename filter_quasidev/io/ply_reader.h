@@ -9,8 +9,8 @@
 
 #include "io/ply_tables.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 PlyTables parse_ply_tables(std::string_view bytes);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

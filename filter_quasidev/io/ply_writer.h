@@ -8,8 +8,8 @@
 
 #include "io/ply_tables.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 std::string serialize_ply_tables(const PlyTables& ply, PlyFormat format);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -17,11 +17,11 @@
 #include "io/mesh_document.h"
 #include "segment/segment_result.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
-MeshDocument approximated_document(const MeshDocument& mesh, const Result& result,
+MeshDocument approximated_document(const MeshDocument& mesh, const approximate::Result& result,
                                    const params::ApproximateSettings& settings);
-MeshDocument segmented_document(const MeshDocument& mesh, const SegmentResult& result);
-MeshDocument flattened_document(const MeshDocument& mesh, const FlattenResult& result);
+MeshDocument segmented_document(const MeshDocument& mesh, const segment::SegmentResult& result);
+MeshDocument flattened_document(const MeshDocument& mesh, const flatten::FlattenResult& result);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-namespace qd::meshio {
+namespace qd::io {
 
 // In the order of ScalarColumn's alternatives.
 enum class ScalarType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
@@ -40,4 +40,4 @@ class ScalarColumn {
       data_;
 };
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -12,11 +12,11 @@
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 std::vector<std::size_t> add_faces(const PlyProperty& indices, std::size_t face_count,
                                    std::size_t vertex_count,
                                    const std::vector<PlyProperty>& face_columns,
                                    MeshDocument& mesh);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace qd {
+namespace qd::approximate {
 
 using Vec2 = Eigen::Vector2d;
 
@@ -65,4 +65,4 @@ BSpline2 fit_bspline(const std::vector<Vec2>& points, const std::vector<double>&
                      int control_count, double smoothing, bool periodic,
                      const Vec2& period_shift = Vec2::Zero());
 
-}  // namespace qd
+}  // namespace qd::approximate

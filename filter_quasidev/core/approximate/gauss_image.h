@@ -8,9 +8,10 @@
 #include <vector>
 
 #include "approximate/bspline.h"
+#include "approximate/common_names.h"
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // Area-weighted moments of the DEGI.
 struct GaussMoments {
@@ -77,4 +78,4 @@ bool clear_of_poles(const std::vector<Vec3>& normals, const std::vector<double>&
 Vec2 theta_phi(const Vec3& m);
 Vec3 sphere_point(double theta, double phi);
 
-}  // namespace qd
+}  // namespace qd::approximate

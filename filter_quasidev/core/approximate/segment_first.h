@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/problem.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // D-Charts' largest fit error for this path. At 30° the shared spot, rocker arm and cow split
 // into 26, 59 and 77 patches (at the segmentation's own default of 20°: 43, 142 and 140), and
@@ -33,4 +34,4 @@ SegmentFirstPlan plan_segment_first(const Problem& problem, const Topology& topo
 // segmentation cannot run on the mesh.
 Problem segmented(const Problem& problem);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -5,10 +5,11 @@
 #include <memory>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/result.h"
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // The fitted Gauss-image model of one patch: the spherical curve c_3D, or a single
 // direction when the Gauss image is a point (planar patch).
@@ -46,4 +47,4 @@ std::vector<Vec3> project_normals(const GaussModel& model, const std::vector<Vec
 TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                       size_t threads = 1);
 
-}  // namespace qd
+}  // namespace qd::approximate

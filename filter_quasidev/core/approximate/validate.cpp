@@ -6,11 +6,12 @@
 #include <cmath>
 #include <string>
 
+#include "approximate/common_names.h"
 #include "common/error.h"
 #include "common/message_text.h"
 #include "common/validate_mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 namespace {
 
@@ -128,4 +129,4 @@ std::vector<std::string> warnings(const Topology& t) {
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/problem.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // Returns the topology it computed, so callers need not compute it again. Fails only when
 // nothing can be processed: non-manifold edges and patches too small to fit are kept as they
@@ -21,4 +22,4 @@ Topology validate(const Problem& problem);
 // patches of fewer than kMinPatchFaces faces), with a count, the first example and what to do.
 std::vector<std::string> warnings(const Topology& topology);
 
-}  // namespace qd
+}  // namespace qd::approximate

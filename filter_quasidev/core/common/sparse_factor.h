@@ -13,7 +13,7 @@
 
 #include "common/solver_kind.h"
 
-namespace qd {
+namespace qd::common {
 
 enum class FactorBackend { CholmodLlt, SupernodalLdlt, EigenLlt, EigenLdlt };
 
@@ -78,4 +78,4 @@ class SparseFactor {
   int factorizations_ = 0;
 };
 
-}  // namespace qd
+}  // namespace qd::common

@@ -10,7 +10,7 @@
 #include "common/mesh.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::common {
 
 // Zero-area threshold: a face is degenerate when its area < kZeroAreaRatio · AE².
 constexpr double kZeroAreaRatio = 1e-12;
@@ -31,4 +31,4 @@ void check_orientation(const Topology& t);
 // Non-manifold edges: their vertices stay fixed and out of the curvature figures.
 std::vector<std::string> mesh_warnings(const Topology& t);
 
-}  // namespace qd
+}  // namespace qd::common

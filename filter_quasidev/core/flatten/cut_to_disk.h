@@ -17,7 +17,7 @@
 
 #include "flatten/piece.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct DiskCut {
   int joining_paths = 0;  // paths joining boundary loops (b − 1)
@@ -32,4 +32,4 @@ struct DiskCut {
 // disk. Throws qd::Error if the result is no disk (a piece with non-manifold edges left).
 DiskCut cut_to_disk(Piece& piece);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -11,7 +11,7 @@
 #include "flatten/piece.h"
 #include "flatten/piece_measures.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct FlatPiece {
   Piece piece;                          // as cut
@@ -27,4 +27,4 @@ struct FlatPiece {
 FlatPiece flatten_piece(Piece piece, const FlattenParams& params,
                         const std::function<void(int iteration)>& iteration = {});
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -5,8 +5,8 @@
 
 #include "flatten/flatten_problem.h"
 
-namespace qd {
+namespace qd::flatten {
 
 void validate_flatten(const FlattenProblem& problem);
 
-}  // namespace qd
+}  // namespace qd::flatten

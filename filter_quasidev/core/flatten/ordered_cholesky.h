@@ -7,8 +7,9 @@
 #include <Eigen/SparseCore>
 
 #include "common/positive_definite_factor.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 class OrderedCholesky {
  public:
@@ -23,4 +24,4 @@ class OrderedCholesky {
   PositiveDefiniteFactor cholesky_;
 };
 
-}  // namespace qd
+}  // namespace qd::flatten

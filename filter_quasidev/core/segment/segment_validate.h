@@ -5,8 +5,8 @@
 
 #include "segment/segment_problem.h"
 
-namespace qd {
+namespace qd::segment {
 
 void validate_segment(const SegmentProblem& problem);
 
-}  // namespace qd
+}  // namespace qd::segment
