@@ -1,7 +1,7 @@
 // Atomic file output: the content goes to a temporary file in the target's directory, which is
 // renamed over the target only by commit(). Until then the target is untouched; a PendingFile
 // destroyed without commit() removes its temporary file.
-// Throws qd::Error if the temporary file cannot be created or written, or the rename fails.
+// Throws qd::common::Error if the temporary file cannot be created or written, or the rename fails.
 #pragma once
 
 #include <string>

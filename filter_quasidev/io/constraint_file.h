@@ -1,7 +1,7 @@
 // Reads a constraint file: one vertex index (0-based, as in the mesh file) per line; blank lines
 // and text after '#' are ignored. Input: the path and the mesh's vertex count. Output: the
-// indices in file order (duplicates allowed). Throws qd::Error "constraints 'FILE' line N: ..."
-// for a token that is not an index or an index out of range.
+// indices in file order (duplicates allowed). Throws qd::common::Error "constraints 'FILE' line N:
+// ..." for a token that is not an index or an index out of range.
 #pragma once
 
 #include <cstddef>

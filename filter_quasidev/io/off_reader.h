@@ -1,7 +1,7 @@
 // OFF reader for the command (OFF, COFF, NOFF, CNOFF, STOFF variants: the first three numbers of a
 // vertex line are its position, anything after them is ignored; so are colours after a face's
 // indices). Input: the file's bytes. Output: a MeshDocument (polygons fan-triangulated, no patch
-// ids). Throws qd::Error "OFF line N: ..." on malformed, truncated or out-of-range data.
+// ids). Throws qd::common::Error "OFF line N: ..." on malformed, truncated or out-of-range data.
 #pragma once
 
 #include <string_view>

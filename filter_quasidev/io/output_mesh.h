@@ -7,11 +7,10 @@
 //   set_texcoords: face `texcoord` (list uchar float: u0 v0 u1 v1 u2 v2, the type MeshLab reads),
 //     replacing the input's own (an OBJ file's corner_uv or a PLY texcoord).
 // Replaced columns are removed and the new ones appended, so the order is the input's, then
-// texcoord, quality, colours in the order set. Throws qd::Error when a column does not have one
-// value per vertex (per face).
-// serialize_ply writes a document: vertex x y z (position_types) then vertex_extra; face
-// vertex_indices (list uchar int), the corner_uv as `texcoord` (list uchar float), then
-// face_extra; every other element, comment and obj_info line.
+// texcoord, quality, colours in the order set. Throws qd::common::Error when a column does not have
+// one value per vertex (per face). serialize_ply writes a document: vertex x y z (position_types)
+// then vertex_extra; face vertex_indices (list uchar int), the corner_uv as `texcoord` (list uchar
+// float), then face_extra; every other element, comment and obj_info line.
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // The pattern files a flattening's settings ask for (SVG; DXF plain or AAMA/ASTM D6673), as
-// (path, bytes), so every front end writes them the same way. Throws qd::Error for
+// (path, bytes), so every front end writes them the same way. Throws qd::common::Error for
 // an AAMA DXF without a physical unit (aama_dxf_writer.h).
 #pragma once
 

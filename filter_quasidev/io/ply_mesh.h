@@ -4,8 +4,8 @@
 // polygons fan-triangulated), patch ids (face `quality` rounded, else an integer face `patch`),
 // panel names from comments `comment patch <id> <name…>` (the name is the rest of the line; other
 // comments, and these too, are kept as they are), constrained vertices (vertex `flags` bit 0x20,
-// MeshLab's selection) and every other property and element kept for pass-through. Throws qd::Error
-// when the vertex or face element or a coordinate is missing or unusable.
+// MeshLab's selection) and every other property and element kept for pass-through. Throws
+// qd::common::Error when the vertex or face element or a coordinate is missing or unusable.
 #pragma once
 
 #include <string_view>

@@ -5,10 +5,10 @@
 //   or displacement (settings.output_quality) and, with settings.colorize, its colour ramp over
 //   the robust (2nd–98th percentile) range.
 // segmented_document: the input's vertices, per-face quality = patch id and a colour per patch
-//   (qd::patch_color).
+//   (qd::segment::patch_color).
 // flattened_document: the input's vertices, per-face wedge texture coordinates (model units),
 //   quality = signed stretch and its colour ramp (flatten/stretch_ramp.h).
-// Throws qd::Error when the result does not have one entry per vertex (per face).
+// Throws qd::common::Error when the result does not have one entry per vertex (per face).
 #pragma once
 
 #include "approximate/result.h"

@@ -21,7 +21,7 @@ struct GaussMoments {
 };
 
 // Checks the input (sizes, finite unit normals, areas >= 0, at least 3 positive-area samples)
-// and returns the moments. Throws qd::Error with a user-facing message otherwise.
+// and returns the moments. Throws qd::common::Error with a user-facing message otherwise.
 GaussMoments gauss_moments(const std::vector<Vec3>& normals, const std::vector<double>& areas);
 
 // True when the samples fill the sphere: |Σ a n|/Σ a < 0.1 and the smallest eigenvalue of

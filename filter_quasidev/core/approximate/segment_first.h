@@ -30,7 +30,7 @@ struct SegmentFirstPlan {
 // Whether the problem takes the segment-first path, and why.
 SegmentFirstPlan plan_segment_first(const Problem& problem, const Topology& topology);
 
-// The problem with the segmentation's patch ids and free seams. Throws qd::Error when the
+// The problem with the segmentation's patch ids and free seams. Throws qd::common::Error when the
 // segmentation cannot run on the mesh.
 Problem segmented(const Problem& problem);
 

@@ -42,7 +42,7 @@ std::vector<Vec3> project_normals(const GaussModel& model, const std::vector<Vec
                                   size_t threads);
 
 // Fits the model to the samples (normals[i] unit, areas[i] >= 0) and projects every sample
-// (on up to `threads` threads). Throws qd::Error when the samples fill the sphere (far from
+// (on up to `threads` threads). Throws qd::common::Error when the samples fill the sphere (far from
 // developable) or are too few.
 TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                       size_t threads = 1);

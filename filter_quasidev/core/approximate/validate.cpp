@@ -1,6 +1,6 @@
 // Checks of a Problem before any work (docs/design.md "Bad input"): the mesh checks of
-// common/validate_mesh.h and those of the approximation, in one order; each throws qd::Error
-// with one line saying what is wrong and what to do. All checks are O(n log n).
+// common/validate_mesh.h and those of the approximation, in one order; each throws
+// qd::common::Error with one line saying what is wrong and what to do. All checks are O(n log n).
 #include "approximate/validate.h"
 
 #include <cmath>

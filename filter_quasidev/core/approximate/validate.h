@@ -1,6 +1,6 @@
-// Checks a Problem before any work: throws qd::Error with a message that says what was wrong
-// and what to do (docs/design.md "Bad input"). Accepts odd but workable input: silently, or with a
-// warning where part of the mesh is left as it is. The mesh itself is checked by
+// Checks a Problem before any work: throws qd::common::Error with a message that says what was
+// wrong and what to do (docs/design.md "Bad input"). Accepts odd but workable input: silently, or
+// with a warning where part of the mesh is left as it is. The mesh itself is checked by
 // common/validate_mesh.h; this adds the parameters, sizes, patches and free vertices.
 #pragma once
 

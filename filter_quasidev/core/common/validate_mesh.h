@@ -1,6 +1,6 @@
 // Checks of a triangle mesh shared by every job (docs/design.md "Bad input"). Each check_* throws
-// qd::Error with one line saying what is wrong and what to do; mesh_warnings() names the parts
-// of a workable mesh that a job keeps as they are. A job calls the checks in this order,
+// qd::common::Error with one line saying what is wrong and what to do; mesh_warnings() names the
+// parts of a workable mesh that a job keeps as they are. A job calls the checks in this order,
 // interleaved with its own (approximate/validate.h).
 #pragma once
 

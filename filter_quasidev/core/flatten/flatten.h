@@ -13,9 +13,9 @@
 
 namespace qd::flatten {
 
-// Throws qd::Error on bad input (validate.h) or a piece that cannot be flattened; the input is
-// never modified. Pieces are flattened in parallel; the result does not depend on the number
-// of threads.
+// Throws qd::common::Error on bad input (validate.h) or a piece that cannot be flattened; the input
+// is never modified. Pieces are flattened in parallel; the result does not depend on the number of
+// threads.
 FlattenResult flatten(const FlattenProblem& problem, const Progress& progress = {});
 
 }  // namespace qd::flatten

@@ -23,7 +23,7 @@ struct FlatPiece {
   double time_ms = 0;
 };
 
-// iteration(k) is called after ARAP iteration k. Throws qd::Error if a system is singular.
+// iteration(k) is called after ARAP iteration k. Throws qd::common::Error if a system is singular.
 FlatPiece flatten_piece(Piece piece, const FlattenParams& params,
                         const std::function<void(int iteration)>& iteration = {});
 

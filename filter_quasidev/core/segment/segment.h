@@ -18,7 +18,7 @@
 
 namespace qd::segment {
 
-// Throws qd::Error on bad input (segment_validate.h); the input is never modified.
+// Throws qd::common::Error on bad input (segment_validate.h); the input is never modified.
 SegmentResult segment(const SegmentProblem& problem, const Progress& progress = {});
 
 }  // namespace qd::segment
