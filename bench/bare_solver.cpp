@@ -16,6 +16,9 @@
 namespace qd::bench {
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   return v.empty() ? 0.0 : v[v.size() / 2];

@@ -10,6 +10,9 @@
 
 namespace qd::bench {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 struct BareGroup {
   int patch = 0;  // patch id (-1 for the joint group of free seams)
   long unknowns = 0;

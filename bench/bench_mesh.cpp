@@ -5,13 +5,13 @@
 
 namespace qd::bench {
 
-meshio::MeshDocument curved_sheet(long triangles, int patches) {
+io::MeshDocument curved_sheet(long triangles, int patches) {
   const double quads = static_cast<double>(triangles) / 2.0;
   const int columns = std::max(2, static_cast<int>(std::lround(std::sqrt(quads))));
   const int rows = std::max(2, static_cast<int>(std::ceil(quads / columns)));
   const double pi = std::acos(-1.0), angle = pi / 2, height = angle;  // arc length = height
   const double edge = height / rows, bump = 0.3 * edge;
-  meshio::MeshDocument mesh;
+  io::MeshDocument mesh;
   for (int j = 0; j <= rows; ++j)
     for (int i = 0; i <= columns; ++i) {
       const double u = static_cast<double>(i) / columns, v = static_cast<double>(j) / rows;
@@ -36,7 +36,7 @@ namespace {
 // Two triangles per quad (i, j) of a grid of `around` × `rows` quads closed around i, with
 // vertex at(i, j).
 template <typename At>
-void add_closed_quads(meshio::MeshDocument& mesh, int around, int rows, const At& at) {
+void add_closed_quads(io::MeshDocument& mesh, int around, int rows, const At& at) {
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < around; ++i) {
       mesh.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
@@ -46,7 +46,7 @@ void add_closed_quads(meshio::MeshDocument& mesh, int around, int rows, const At
 
 }  // namespace
 
-meshio::MeshDocument noisy_tube(long triangles) {
+io::MeshDocument noisy_tube(long triangles) {
   const double quads = static_cast<double>(triangles) / 2.0;
   const int around = std::max(3, static_cast<int>(std::lround(std::sqrt(quads))));
   const int rows = std::max(1, static_cast<int>(std::lround(quads / around)));
@@ -56,7 +56,7 @@ meshio::MeshDocument noisy_tube(long triangles) {
     state ^= state << 13, state ^= state >> 7, state ^= state << 17;
     return static_cast<double>(state % 2001) / 1000.0 - 1.0;  // in [−1, 1]
   };
-  meshio::MeshDocument mesh;
+  io::MeshDocument mesh;
   for (int j = 0; j <= rows; ++j)
     for (int i = 0; i < around; ++i) {
       const double a = 2 * pi * i / around, r = 1.0 + 0.1 * edge * noise();
@@ -66,12 +66,12 @@ meshio::MeshDocument noisy_tube(long triangles) {
   return mesh;
 }
 
-meshio::MeshDocument torus(long triangles) {
+io::MeshDocument torus(long triangles) {
   const int tube =
       std::max(3, static_cast<int>(std::lround(std::sqrt(static_cast<double>(triangles) / 4.0))));
   const int around = 2 * tube;
   const double pi = std::acos(-1.0);
-  meshio::MeshDocument mesh;
+  io::MeshDocument mesh;
   for (int j = 0; j < tube; ++j)
     for (int i = 0; i < around; ++i) {
       const double u = 2 * pi * i / around, v = 2 * pi * j / tube, r = 2.0 + std::cos(v);

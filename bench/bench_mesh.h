@@ -9,16 +9,16 @@
 namespace qd::bench {
 
 // About `triangles` triangles (2·columns·rows, aspect 1:1), split into `patches` bands.
-meshio::MeshDocument curved_sheet(long triangles, int patches);
+io::MeshDocument curved_sheet(long triangles, int patches);
 
 // A closed tube (a cylinder of radius 1 and height 2π, open at both ends, no seam) of about
 // `triangles` triangles, every vertex moved along the radius by a pseudo-random 0.1 average
 // edge lengths (the same for every call): the noisy tube of issue 11, one patch.
-meshio::MeshDocument noisy_tube(long triangles);
+io::MeshDocument noisy_tube(long triangles);
 
 // A closed torus (radii 2 and 1, no seam) of about `triangles` triangles on a regular grid,
 // twice as many columns around the axis as around the tube: doubly curved everywhere, the
 // segmentation's benchmark (no patch ids).
-meshio::MeshDocument torus(long triangles);
+io::MeshDocument torus(long triangles);
 
 }  // namespace qd::bench

@@ -30,6 +30,9 @@
 
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 using Clock = std::chrono::steady_clock;
 
 double ms_since(Clock::time_point t0) {
@@ -62,7 +65,7 @@ Args parse(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string s = argv[i];
     const auto next = [&]() -> std::string {
-      if (i + 1 >= argc) throw qd::Error(s + " needs a value");
+      if (i + 1 >= argc) throw qd::common::Error(s + " needs a value");
       return argv[++i];
     };
     if (s == "--grid")
@@ -80,18 +83,18 @@ Args parse(int argc, char** argv) {
     else if (s == "--")
       a.quasidev.assign(argv + i + 1, argv + argc), i = argc;
     else
-      throw qd::Error("unknown argument " + s);
+      throw qd::common::Error("unknown argument " + s);
   }
   if (a.grid <= 0 && a.tube <= 0 && a.mesh.empty())
-    throw qd::Error("give --grid TRIANGLES, --tube TRIANGLES or --mesh FILE");
+    throw qd::common::Error("give --grid TRIANGLES, --tube TRIANGLES or --mesh FILE");
   return a;
 }
 
 // The mesh as the binary PLY the command writes.
-std::string serialize(const qd::meshio::MeshDocument& mesh) {
-  qd::meshio::MeshDocument doc = mesh;
-  qd::meshio::set_positions(doc, qd::cli::positions_of(mesh));
-  return qd::meshio::serialize_ply(doc, qd::meshio::PlyFormat::BinaryLittleEndian);
+std::string serialize(const qd::io::MeshDocument& mesh) {
+  qd::io::MeshDocument doc = mesh;
+  qd::io::set_positions(doc, qd::cli::positions_of(mesh));
+  return qd::io::serialize_ply(doc, qd::io::PlyFormat::BinaryLittleEndian);
 }
 
 void run(const Args& a) {
@@ -101,13 +104,13 @@ void run(const Args& a) {
                                               : scratch + "_in.ply";
   const std::string output = scratch + "_out.ply";
   if (a.mesh.empty()) {
-    qd::meshio::MeshDocument generated =
+    qd::io::MeshDocument generated =
         a.tube > 0 ? qd::bench::noisy_tube(a.tube) : qd::bench::curved_sheet(a.grid, a.patches);
     if (!generated.patch.empty())  // patch ids travel as face quality, as MeshLab writes them
-      generated.face_extra.push_back(qd::meshio::scalar_property(
-          "quality", qd::meshio::ScalarType::Float32,
+      generated.face_extra.push_back(qd::io::scalar_property(
+          "quality", qd::io::ScalarType::Float32,
           std::vector<double>(generated.patch.begin(), generated.patch.end())));
-    qd::meshio::PendingFile file(input, serialize(generated));
+    qd::io::PendingFile file(input, serialize(generated));
     file.commit();
   }
   std::vector<std::string> args = {input, output};
@@ -115,18 +118,19 @@ void run(const Args& a) {
   const qd::cli::ApproximateOptions options = qd::cli::parse_command_line(args).approximate;
 
   std::vector<double> read_ms, write_ms, wall_ms, setup, step1, assembly, factor, solve, metrics;
-  qd::Result result;
-  qd::meshio::MeshDocument mesh;
+  qd::approximate::Result result;
+  qd::io::MeshDocument mesh;
   long progress_calls = 0;  // per run: the callback must stay rare (issue 5, bullet 4)
   for (int r = 0; r < a.runs; ++r) {
     auto t0 = Clock::now();
-    mesh = qd::meshio::read_mesh(input);
-    const qd::Problem problem = qd::cli::make_problem(mesh, options);
+    mesh = qd::io::read_mesh(input);
+    const qd::approximate::Problem problem = qd::cli::make_problem(mesh, options);
     read_ms.push_back(ms_since(t0));
 
     t0 = Clock::now();
     progress_calls = 0;
-    result = qd::approximate(problem, [&](int, const std::string&) { ++progress_calls; });
+    result =
+        qd::approximate::approximate(problem, [&](int, const std::string&) { ++progress_calls; });
     wall_ms.push_back(ms_since(t0));
     setup.push_back(result.times.setup);
     step1.push_back(result.times.step1);
@@ -136,31 +140,31 @@ void run(const Args& a) {
     metrics.push_back(result.times.metrics);
 
     t0 = Clock::now();
-    qd::meshio::PendingFile file(
-        output,
-        qd::meshio::serialize_ply(qd::meshio::approximated_document(mesh, result, options.settings),
-                                  qd::meshio::PlyFormat::BinaryLittleEndian));
+    qd::io::PendingFile file(
+        output, qd::io::serialize_ply(qd::io::approximated_document(mesh, result, options.settings),
+                                      qd::io::PlyFormat::BinaryLittleEndian));
     file.commit();
     write_ms.push_back(ms_since(t0));
   }
   const double peak_mb = peak_rss_mb();
 
-  const qd::Problem problem = qd::cli::make_problem(mesh, options);
+  const qd::approximate::Problem problem = qd::cli::make_problem(mesh, options);
   const std::vector<qd::bench::BareGroup> bare = qd::bench::bare_solver_times(problem, a.runs);
   // The floor: per group, the factorisations and solves the method needs (one factorisation
   // with fixed targets, one per solve when the targets change, all but the first reusing the
   // analysis) at the bare solver's speed.
   double bare_factor = 0, bare_refactor = 0, floor = 0, bare_solve_sum = 0;
   long unknowns = 0;
-  const bool fixed_targets = options.settings.engine.targets == qd::TargetMode::Fixed;
+  const bool fixed_targets = options.settings.engine.targets == qd::approximate::TargetMode::Fixed;
   for (const auto& g : bare) {
     bare_factor += g.factor_ms;
     bare_refactor += g.refactor_ms;
     bare_solve_sum += g.solve_ms;
     unknowns = std::max(unknowns, g.unknowns);
-    for (const qd::PatchReport& p : result.patches) {
+    for (const qd::approximate::PatchReport& p : result.patches) {
       if (p.id != g.patch && g.patch >= 0) continue;
-      const bool refused = !p.stops.empty() && p.stops.back().reason == qd::PatchStop::NoStep;
+      const bool refused =
+          !p.stops.empty() && p.stops.back().reason == qd::approximate::PatchStop::NoStep;
       const int solves = p.iterations + (refused ? 1 : 0);  // the refused step was solved too
       const int refactorizations = fixed_targets ? 0 : std::max(0, solves - 1);
       floor += g.factor_ms + refactorizations * g.refactor_ms + solves * g.solve_ms;

@@ -26,12 +26,15 @@
 
 namespace {
 
+using namespace qd::common;
+using namespace qd::flatten;
+
 struct Args {
   long grid = 0;
   int patches = 1;
   std::string mesh, svg, dxf, unit;
   int runs = 1;
-  qd::FlattenParams params;
+  qd::flatten::FlattenParams params;
 };
 
 Args parse(int argc, char** argv) {
@@ -59,22 +62,23 @@ Args parse(int argc, char** argv) {
     else if (key == "--unit")
       a.unit = value;
     else
-      throw qd::Error("unknown option " + key);
+      throw qd::common::Error("unknown option " + key);
   }
-  if ((a.grid > 0) == !a.mesh.empty()) throw qd::Error("give --grid TRIANGLES or --mesh FILE");
+  if ((a.grid > 0) == !a.mesh.empty())
+    throw qd::common::Error("give --grid TRIANGLES or --mesh FILE");
   return a;
 }
 
-qd::FlattenProblem problem_of(const qd::meshio::MeshDocument& mesh) {
-  qd::FlattenProblem p;
+qd::flatten::FlattenProblem problem_of(const qd::io::MeshDocument& mesh) {
+  qd::flatten::FlattenProblem p;
   qd::cli::set_geometry(mesh, p);
   return p;
 }
 
 // Largest |l_pattern − l_reference| / l_reference over every face edge; `reference` per face
 // corner (u, v) or, when empty, the 3D edges.
-double max_edge_error(const qd::FlattenProblem& p, const qd::WedgeUV& uv,
-                      const qd::WedgeUV& reference) {
+double max_edge_error(const qd::flatten::FlattenProblem& p, const qd::flatten::WedgeUV& uv,
+                      const qd::flatten::WedgeUV& reference) {
   double worst = 0;
   for (int f = 0; f < p.F.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -90,10 +94,10 @@ double max_edge_error(const qd::FlattenProblem& p, const qd::WedgeUV& uv,
 }
 
 // The file's per-corner texcoord, or an empty matrix.
-qd::WedgeUV file_texcoords(const qd::meshio::MeshDocument& mesh) {
-  for (const qd::meshio::PlyProperty& prop : mesh.face_extra) {
+qd::flatten::WedgeUV file_texcoords(const qd::io::MeshDocument& mesh) {
+  for (const qd::io::PlyProperty& prop : mesh.face_extra) {
     if (prop.name != "texcoord" || !prop.is_list) continue;
-    qd::WedgeUV uv(static_cast<Eigen::Index>(mesh.triangles.size()), 6);
+    qd::flatten::WedgeUV uv(static_cast<Eigen::Index>(mesh.triangles.size()), 6);
     for (size_t f = 0; f < mesh.triangles.size(); ++f) {
       if (prop.list_size(f) != 6) return {};
       for (int k = 0; k < 6; ++k)
@@ -109,20 +113,20 @@ qd::WedgeUV file_texcoords(const qd::meshio::MeshDocument& mesh) {
 int main(int argc, char** argv) {
   try {
     const Args a = parse(argc, argv);
-    const qd::meshio::MeshDocument mesh =
-        a.grid > 0 ? qd::bench::curved_sheet(a.grid, a.patches) : qd::meshio::read_mesh(a.mesh);
-    qd::FlattenProblem problem = problem_of(mesh);
+    const qd::io::MeshDocument mesh =
+        a.grid > 0 ? qd::bench::curved_sheet(a.grid, a.patches) : qd::io::read_mesh(a.mesh);
+    qd::flatten::FlattenProblem problem = problem_of(mesh);
     problem.params = a.params;
     std::vector<double> ms;
-    qd::FlattenResult r;
+    qd::flatten::FlattenResult r;
     for (int run = 0; run < a.runs; ++run) {
       const auto t0 = std::chrono::steady_clock::now();
-      r = qd::flatten(problem);
+      r = qd::flatten::flatten(problem);
       ms.push_back(
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
     }
     std::sort(ms.begin(), ms.end());
-    const qd::WedgeUV truth = file_texcoords(mesh);
+    const qd::flatten::WedgeUV truth = file_texcoords(mesh);
     std::printf(
         "{\"triangles\": %ld, \"pieces\": %zu, \"median_ms\": %.1f, \"max_edge_error_vs_3d\": %.3e",
         static_cast<long>(problem.F.rows()), r.pieces.size(), ms[ms.size() / 2],
@@ -136,11 +140,11 @@ int main(int argc, char** argv) {
     std::printf("]}\n");
     if (!a.svg.empty()) {
       std::ofstream out(a.svg);
-      qd::write_svg(out, r.pattern, a.unit);
+      qd::io::write_svg(out, r.pattern, a.unit);
     }
     if (!a.dxf.empty()) {
       std::ofstream out(a.dxf);
-      qd::write_dxf(out, r.pattern, a.unit);
+      qd::io::write_dxf(out, r.pattern, a.unit);
     }
     return 0;
   } catch (const std::exception& e) {

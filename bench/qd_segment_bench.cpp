@@ -33,11 +33,15 @@
 
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+using namespace qd::segment;
+
 struct Args {
   std::vector<std::string> meshes;  // "torus:N" or a path
   int runs = 3;
   std::vector<int> threads = {1, 2};
-  qd::SegmentParams params;
+  qd::segment::SegmentParams params;
   bool approximate = false;
   std::vector<std::string> quasidev = {"in.ply", "out.ply"};  // options for --approximate
 };
@@ -70,7 +74,7 @@ Args parse(int argc, char** argv) {
   for (auto it = args.begin(); it != args.end(); ++it) {
     const auto option = kValueOptions.find(*it);
     if (option != kValueOptions.end()) {
-      if (std::next(it) == args.end()) throw qd::Error(*it + " needs a value");
+      if (std::next(it) == args.end()) throw qd::common::Error(*it + " needs a value");
       option->second(a, *++it);
     } else if (*it == "--approximate") {
       a.approximate = true;
@@ -78,22 +82,22 @@ Args parse(int argc, char** argv) {
       a.quasidev.insert(a.quasidev.end(), std::next(it), args.end());
       break;
     } else {
-      throw qd::Error("unknown argument " + *it);
+      throw qd::common::Error("unknown argument " + *it);
     }
   }
-  if (a.meshes.empty()) throw qd::Error("give --torus TRIANGLES or --mesh FILE");
-  if (a.threads.empty()) throw qd::Error("--threads needs a list such as 1,2");
+  if (a.meshes.empty()) throw qd::common::Error("give --torus TRIANGLES or --mesh FILE");
+  if (a.threads.empty()) throw qd::common::Error("--threads needs a list such as 1,2");
   return a;
 }
 
-qd::meshio::MeshDocument load(const std::string& name) {
+qd::io::MeshDocument load(const std::string& name) {
   if (name.rfind("torus:", 0) == 0) return qd::bench::torus(std::stol(name.substr(6)));
-  return qd::meshio::read_mesh(name);
+  return qd::io::read_mesh(name);
 }
 
-qd::SegmentProblem segment_problem(const qd::meshio::MeshDocument& mesh,
-                                   const qd::SegmentParams& q) {
-  qd::SegmentProblem p;
+qd::segment::SegmentProblem segment_problem(const qd::io::MeshDocument& mesh,
+                                            const qd::segment::SegmentParams& q) {
+  qd::segment::SegmentProblem p;
   qd::cli::set_geometry(mesh, p);
   p.params = q;
   return p;
@@ -112,12 +116,13 @@ double median(std::vector<double> v) {
 
 // The approximation with the command's defaults on the segmented mesh: G_ABD reduction in
 // percent and the largest vertex move in average edge lengths.
-std::string approximate(const qd::meshio::MeshDocument& mesh, const std::vector<int>& patch,
+std::string approximate(const qd::io::MeshDocument& mesh, const std::vector<int>& patch,
                         const std::vector<std::string>& quasidev) {
-  qd::meshio::MeshDocument segmented = mesh;
+  qd::io::MeshDocument segmented = mesh;
   segmented.patch = patch;
   const qd::cli::ApproximateOptions options = qd::cli::parse_command_line(quasidev).approximate;
-  const qd::Result r = qd::approximate(qd::cli::make_problem(segmented, options));
+  const qd::approximate::Result r =
+      qd::approximate::approximate(qd::cli::make_problem(segmented, options));
   char text[160];
   std::snprintf(text, sizeof text, ", \"abd_reduction\": %.2f, \"max_move_ae\": %.3f",
                 r.abd_reduction, r.total_after.max_disp / r.average_edge);
@@ -125,17 +130,17 @@ std::string approximate(const qd::meshio::MeshDocument& mesh, const std::vector<
 }
 
 void run(const Args& a, const std::string& name) {
-  const qd::meshio::MeshDocument mesh = load(name);
-  qd::SegmentProblem problem = segment_problem(mesh, a.params);
+  const qd::io::MeshDocument mesh = load(name);
+  qd::segment::SegmentProblem problem = segment_problem(mesh, a.params);
   std::string times;
-  qd::SegmentResult first;
+  qd::segment::SegmentResult first;
   bool same = true;
   for (const int threads : a.threads) {
     problem.params.threads = threads;
     std::vector<double> ms;
     for (int r = 0; r < a.runs; ++r) {
       const auto t0 = std::chrono::steady_clock::now();
-      qd::SegmentResult result = qd::segment(problem);
+      qd::segment::SegmentResult result = qd::segment::segment(problem);
       ms.push_back(
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count());
       if (first.patch.empty())
@@ -148,9 +153,9 @@ void run(const Args& a, const std::string& name) {
   }
   int disks = 0, over = 0;
   double worst = 0;
-  for (const qd::SegmentPatch& s : first.patches) {
+  for (const qd::segment::SegmentPatch& s : first.patches) {
     disks += s.disk;
-    over += s.over_limit != qd::OverLimit::No;
+    over += s.over_limit != qd::segment::OverLimit::No;
     worst = std::max(worst, s.max_error_deg);
   }
   std::printf(

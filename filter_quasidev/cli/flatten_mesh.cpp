@@ -4,8 +4,9 @@
 
 namespace qd::cli {
 
-FlattenProblem make_flatten_problem(const meshio::MeshDocument& mesh, const FlattenOptions& o) {
-  FlattenProblem problem;
+flatten::FlattenProblem make_flatten_problem(const io::MeshDocument& mesh,
+                                             const FlattenOptions& o) {
+  flatten::FlattenProblem problem;
   set_geometry(mesh, problem);
   problem.patch_names = mesh.patch_names;
   problem.params = o.settings.engine;

@@ -1,5 +1,6 @@
 // The bridge between the command's mesh tables and the flattening engine.
-// make_flatten_problem: MeshDocument + FlattenOptions -> qd::FlattenProblem (positions, triangles,
+// make_flatten_problem: MeshDocument + FlattenOptions -> qd::flatten::FlattenProblem (positions,
+// triangles,
 //   patch ids, panel names, parameters as given: the flattening's lengths are in model units).
 #pragma once
 
@@ -9,7 +10,7 @@
 
 namespace qd::cli {
 
-FlattenProblem make_flatten_problem(const meshio::MeshDocument& mesh,
-                                    const FlattenOptions& options);
+flatten::FlattenProblem make_flatten_problem(const io::MeshDocument& mesh,
+                                             const FlattenOptions& options);
 
 }  // namespace qd::cli

@@ -14,7 +14,7 @@ Json box(const Eigen::AlignedBox2d& b) {
   return {{"min", {b.min().x(), b.min().y()}}, {"max", {b.max().x(), b.max().y()}}};
 }
 
-Json piece(const PieceReport& p) {
+Json piece(const flatten::PieceReport& p) {
   return {{"patch", p.patch},
           {"component", p.component},
           {"label", p.label},
@@ -37,8 +37,8 @@ Json piece(const PieceReport& p) {
 
 // A pattern piece's measures, in model units: areas are the outer loop's less the holes',
 // perimeters sum every loop (outline_measures.h).
-Json pattern_piece(const PatternPiece& p, const PieceGroup& group,
-                   const std::vector<PieceReport>& pieces) {
+Json pattern_piece(const flatten::PatternPiece& p, const flatten::PieceGroup& group,
+                   const std::vector<flatten::PieceReport>& pieces) {
   Json members = Json::array();
   for (size_t k = 0; k < group.members.size(); ++k)
     members.push_back({{"label", pieces[static_cast<size_t>(group.members[k])].label},
@@ -47,16 +47,16 @@ Json pattern_piece(const PatternPiece& p, const PieceGroup& group,
           {"name", p.name},
           {"quantity", p.quantity},
           {"mirrored", p.mirrored},
-          {"sew_area", outline_area(p.outlines)},
-          {"sew_perimeter", outline_length(p.outlines)},
-          {"cut_area", outline_area(p.cut_outlines)},
-          {"cut_perimeter", outline_length(p.cut_outlines)},
+          {"sew_area", flatten::outline_area(p.outlines)},
+          {"sew_perimeter", flatten::outline_length(p.outlines)},
+          {"cut_area", flatten::outline_area(p.cut_outlines)},
+          {"cut_perimeter", flatten::outline_length(p.cut_outlines)},
           {"grain", {p.grain.x(), p.grain.y()}},
           {"pieces", members},
           {"difference", group.difference}};
 }
 
-Json marker_json(const Marker& m) {
+Json marker_json(const marker::Marker& m) {
   return {{"width", m.width},
           {"length", m.length},
           {"efficiency", m.efficiency},
@@ -65,7 +65,7 @@ Json marker_json(const Marker& m) {
 }
 
 // The kept marker's figures, which placement it is, and both placements' figures.
-Json marker_json(const MarkerChoice& c) {
+Json marker_json(const marker::MarkerChoice& c) {
   Json j = marker_json(c.kept());
   j["method"] = c.nested_kept ? "nested" : "rows";
   j["nested"] = marker_json(c.nested);
@@ -75,9 +75,10 @@ Json marker_json(const MarkerChoice& c) {
 
 }  // namespace
 
-std::string flatten_report_json(const FlattenResult& result, const FlattenReportContext& c) {
+std::string flatten_report_json(const flatten::FlattenResult& result,
+                                const FlattenReportContext& c) {
   Json pieces = Json::array();
-  for (const PieceReport& p : result.pieces) pieces.push_back(piece(p));
+  for (const flatten::PieceReport& p : result.pieces) pieces.push_back(piece(p));
   Json pattern = Json::array();
   for (size_t i = 0; i < result.pattern.pieces.size(); ++i)
     pattern.push_back(pattern_piece(result.pattern.pieces[i], result.groups[i], result.pieces));

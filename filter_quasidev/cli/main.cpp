@@ -101,21 +101,21 @@ void start_progress(const qd::cli::JobOptions& o) {
     progress_line.enable();
 }
 
-const qd::Progress show_progress = [](int percent, const std::string& message) {
+const qd::common::Progress show_progress = [](int percent, const std::string& message) {
   progress_line.show(percent, message);
 };
 
 // Stages every file of a job (target, content) before renaming any into place, so an error
 // while writing leaves all of them as they were.
 void write_files(const std::vector<std::pair<std::string, std::string>>& files) {
-  std::vector<std::unique_ptr<qd::meshio::PendingFile>> pending;
+  std::vector<std::unique_ptr<qd::io::PendingFile>> pending;
   for (const auto& [target, content] : files)
-    pending.push_back(std::make_unique<qd::meshio::PendingFile>(target, content));
+    pending.push_back(std::make_unique<qd::io::PendingFile>(target, content));
   for (const auto& file : pending) file->commit();
 }
 
-std::string ply_bytes(const qd::meshio::MeshDocument& doc) {
-  return qd::meshio::serialize_ply(doc, qd::meshio::PlyFormat::BinaryLittleEndian);
+std::string ply_bytes(const qd::io::MeshDocument& doc) {
+  return qd::io::serialize_ply(doc, qd::io::PlyFormat::BinaryLittleEndian);
 }
 
 // True when a log line is one of the warnings (the engines log each one, bare or after
@@ -149,7 +149,7 @@ int count_constrained(const std::vector<char>& constrained) {
 template <typename Options, typename MakeProblem, typename Solve>
 auto read_and_solve(const Options& o, MakeProblem make_problem, Solve solve) {
   check_paths(o, qd::cli::output_files(o));
-  qd::meshio::MeshDocument mesh = qd::meshio::read_mesh(o.input);
+  qd::io::MeshDocument mesh = qd::io::read_mesh(o.input);
   auto problem = make_problem(mesh);
   start_progress(o);
   auto result = solve(problem, show_progress);
@@ -167,12 +167,12 @@ std::string option_setting(const std::string& name, const std::string& value) {
 
 void approximate(const qd::cli::ApproximateOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
-      o, [&o](const qd::meshio::MeshDocument& m) { return qd::cli::make_problem(m, o); },
-      [](const qd::Problem& p, const qd::Progress& progress) {
-        return qd::approximate(p, progress, option_setting);
+      o, [&o](const qd::io::MeshDocument& m) { return qd::cli::make_problem(m, o); },
+      [](const qd::approximate::Problem& p, const qd::common::Progress& progress) {
+        return qd::approximate::approximate(p, progress, option_setting);
       });
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(qd::meshio::approximated_document(mesh, result, o.settings))}};
+      {o.output, ply_bytes(qd::io::approximated_document(mesh, result, o.settings))}};
   if (!o.report.empty()) {
     const qd::cli::ReportContext context{o,
                                          static_cast<int>(mesh.positions.size()),
@@ -188,12 +188,12 @@ void approximate(const qd::cli::ApproximateOptions& o) {
 
 void segment(const qd::cli::SegmentOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
-      o, [&o](const qd::meshio::MeshDocument& m) { return qd::cli::make_segment_problem(m, o); },
-      [](const qd::SegmentProblem& p, const qd::Progress& progress) {
-        return qd::segment(p, progress);
+      o, [&o](const qd::io::MeshDocument& m) { return qd::cli::make_segment_problem(m, o); },
+      [](const qd::segment::SegmentProblem& p, const qd::common::Progress& progress) {
+        return qd::segment::segment(p, progress);
       });
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(qd::meshio::segmented_document(mesh, result))}};
+      {o.output, ply_bytes(qd::io::segmented_document(mesh, result))}};
   if (!o.report.empty()) {
     const qd::cli::SegmentReportContext context{o,
                                                 static_cast<int>(mesh.positions.size()),
@@ -210,10 +210,11 @@ void segment(const qd::cli::SegmentOptions& o) {
 // The marker of the pattern on fabric of the asked width (gap: the flatten gap, else 1 % of the
 // width), with both placements' length and efficiency, the one kept and the unplaced pieces on
 // the log.
-qd::MarkerChoice marker_of(const qd::params::FlattenSettings& s, const qd::Pattern& pattern,
-                           std::vector<std::string>& log) {
+qd::marker::MarkerChoice marker_of(const qd::params::FlattenSettings& s,
+                                   const qd::flatten::Pattern& pattern,
+                                   std::vector<std::string>& log) {
   const double gap = s.engine.gap > 0 ? s.engine.gap : 0.01 * s.marker_width;
-  qd::MarkerChoice c = qd::cut_marker(pattern, s.marker_width, gap);
+  qd::marker::MarkerChoice c = qd::marker::cut_marker(pattern, s.marker_width, gap);
   for (const auto& [name, m, kept] : {std::tuple{"nested (libnest2d)", &c.nested, c.nested_kept},
                                       std::tuple{"row by row", &c.rows, !c.nested_kept}}) {
     std::ostringstream line;
@@ -229,31 +230,31 @@ qd::MarkerChoice marker_of(const qd::params::FlattenSettings& s, const qd::Patte
 
 void flatten(const qd::cli::FlattenOptions& o) {
   const auto [mesh, problem, result] = read_and_solve(
-      o, [&o](const qd::meshio::MeshDocument& m) { return qd::cli::make_flatten_problem(m, o); },
-      [](const qd::FlattenProblem& p, const qd::Progress& progress) {
-        return qd::flatten(p, progress);
+      o, [&o](const qd::io::MeshDocument& m) { return qd::cli::make_flatten_problem(m, o); },
+      [](const qd::flatten::FlattenProblem& p, const qd::common::Progress& progress) {
+        return qd::flatten::flatten(p, progress);
       });
   const qd::params::FlattenSettings& s = o.settings;
   std::vector<std::string> log = result.log;
   std::vector<std::pair<std::string, std::string>> files = {
-      {o.output, ply_bytes(qd::meshio::flattened_document(mesh, result))}};
-  for (auto& file : qd::pattern_files(s, result.pattern)) files.push_back(std::move(file));
+      {o.output, ply_bytes(qd::io::flattened_document(mesh, result))}};
+  for (auto& file : qd::io::pattern_files(s, result.pattern)) files.push_back(std::move(file));
   if (!s.pdf_file.empty()) {
     auto pdf = qd::pdf::printable_pdf(result.pattern, s.paper, s.unit);
     files.emplace_back(s.pdf_file, std::move(pdf.bytes));
     log.push_back(pdf.summary);
   }
-  std::optional<qd::MarkerChoice> marker;
+  std::optional<qd::marker::MarkerChoice> marker;
   if (s.marker_width > 0) {
     marker = marker_of(s, result.pattern, log);
     if (!s.marker_svg_file.empty()) {
       std::ostringstream svg;
-      qd::write_marker_svg(svg, marker->kept(), result.pattern);
+      qd::marker::write_marker_svg(svg, marker->kept(), result.pattern);
       files.emplace_back(s.marker_svg_file, svg.str());
     }
     if (!s.marker_dxf_file.empty()) {
       std::ostringstream dxf;
-      qd::write_marker_dxf(dxf, marker->kept(), result.pattern);
+      qd::marker::write_marker_dxf(dxf, marker->kept(), result.pattern);
       files.emplace_back(s.marker_dxf_file, dxf.str());
     }
   }
@@ -300,7 +301,7 @@ int main(int argc, char** argv) {
     return 0;
   } catch (const qd::cli::UsageError& e) {
     return fail(e.what(), 2);
-  } catch (const qd::Error& e) {
+  } catch (const qd::common::Error& e) {
     return fail(e.what(), 1);
   } catch (const std::bad_alloc&) {
     return fail("out of memory (is the mesh too large for this machine?)", 1);

@@ -20,12 +20,12 @@ Matrix matrix_of(const std::vector<Row>& rows) {
 
 }  // namespace
 
-Positions positions_of(const meshio::MeshDocument& mesh) {
-  return matrix_of<Positions>(mesh.positions);
+common::Positions positions_of(const io::MeshDocument& mesh) {
+  return matrix_of<common::Positions>(mesh.positions);
 }
 
-Triangles triangles_of(const meshio::MeshDocument& mesh) {
-  return matrix_of<Triangles>(mesh.triangles);
+common::Triangles triangles_of(const io::MeshDocument& mesh) {
+  return matrix_of<common::Triangles>(mesh.triangles);
 }
 
 }  // namespace qd::cli

@@ -1,5 +1,5 @@
 // The engine's view of a mesh file: positions, triangles and patch ids, as every job's problem
-// (qd::Problem, qd::FlattenProblem) holds them.
+// (qd::approximate::Problem, qd::flatten::FlattenProblem) holds them.
 #pragma once
 
 #include "common/mesh.h"
@@ -7,12 +7,12 @@
 
 namespace qd::cli {
 
-Positions positions_of(const meshio::MeshDocument& mesh);
-Triangles triangles_of(const meshio::MeshDocument& mesh);
+common::Positions positions_of(const io::MeshDocument& mesh);
+common::Triangles triangles_of(const io::MeshDocument& mesh);
 
 // Sets problem.V, problem.F and problem.patch from the mesh.
 template <typename Problem>
-void set_geometry(const meshio::MeshDocument& mesh, Problem& problem) {
+void set_geometry(const io::MeshDocument& mesh, Problem& problem) {
   problem.V = positions_of(mesh);
   problem.F = triangles_of(mesh);
   problem.patch = mesh.patch;

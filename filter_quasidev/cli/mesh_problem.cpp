@@ -8,21 +8,21 @@
 
 namespace qd::cli {
 
-Problem make_problem(const meshio::MeshDocument& mesh, const ApproximateOptions& o) {
-  Problem problem;
+approximate::Problem make_problem(const io::MeshDocument& mesh, const ApproximateOptions& o) {
+  approximate::Problem problem;
   set_geometry(mesh, problem);
   if (!o.settings.use_patches) problem.patch.clear();
   problem.constrained = mesh.constrained;
   if (!o.settings.constraints_file.empty()) {
     problem.constrained.resize(mesh.positions.size(), 0);
     for (std::size_t v :
-         meshio::read_constraint_file(o.settings.constraints_file, mesh.positions.size()))
+         io::read_constraint_file(o.settings.constraints_file, mesh.positions.size()))
       problem.constrained[v] = 1;
   }
-  const double ae = average_edge_length(problem.V, problem.F);
+  const double ae = common::average_edge_length(problem.V, problem.F);
   if (!(ae > 0) || !std::isfinite(ae))
-    throw Error("the mesh's average edge length is " + std::to_string(ae) +
-                " (all vertices coincide?); nothing to approximate");
+    throw common::Error("the mesh's average edge length is " + std::to_string(ae) +
+                        " (all vertices coincide?); nothing to approximate");
   try {
     problem.params = params::engine_params(o.settings, ae, problem.patch);
   } catch (const params::ParamError& e) {

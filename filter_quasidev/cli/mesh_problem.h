@@ -1,8 +1,9 @@
 // The bridge between the command's mesh tables and the approximation engine.
-// make_problem: MeshDocument + ApproximateOptions -> qd::Problem (positions, triangles, patch ids
+// make_problem: MeshDocument + ApproximateOptions -> qd::approximate::Problem (positions,
+// triangles, patch ids
 //   unless --no-use-patches, constrained vertices from the file's selection and the
 //   --constraints-file, parameters with the tolerances in model units: params::engine_params).
-// Throws qd::Error (degenerate mesh, bad constraint file) or UsageError
+// Throws qd::common::Error (degenerate mesh, bad constraint file) or UsageError
 // (--patch-tolerance-ae for a patch the mesh does not have).
 #pragma once
 
@@ -12,6 +13,6 @@
 
 namespace qd::cli {
 
-Problem make_problem(const meshio::MeshDocument& mesh, const ApproximateOptions& options);
+approximate::Problem make_problem(const io::MeshDocument& mesh, const ApproximateOptions& options);
 
 }  // namespace qd::cli

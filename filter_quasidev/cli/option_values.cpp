@@ -11,14 +11,14 @@ void usage(const std::string& message) { throw UsageError(message + " (see quasi
 
 double number(const std::string& option, const std::string& text) {
   double v = 0;
-  if (!meshio::parse_number(text, v) || !std::isfinite(v))
+  if (!io::parse_number(text, v) || !std::isfinite(v))
     usage(option + " expects a finite number, got '" + text + "'");
   return v;
 }
 
 int whole_number(const std::string& option, const std::string& text, long long lo, long long hi) {
   long long v = 0;
-  if (!meshio::parse_integer(text, v) || v < lo || v > hi)
+  if (!io::parse_integer(text, v) || v < lo || v > hi)
     usage(option + " expects a whole number from " + std::to_string(lo) + " to " +
           std::to_string(hi) + ", got '" + text + "'");
   return static_cast<int>(v);

@@ -16,7 +16,7 @@
 
 namespace qd::cli {
 
-struct UsageError : Error {
+struct UsageError : common::Error {
   using Error::Error;
 };
 

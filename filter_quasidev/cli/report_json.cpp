@@ -9,14 +9,14 @@ namespace qd::cli {
 
 namespace {
 
-Json figures(const Figures& f) {
+Json figures(const common::Figures& f) {
   return {{"g_abd", f.g_abd},         {"angle_defect", f.angle_defect},
           {"max_abs_k", f.max_abs_k}, {"obd", f.obd},
           {"shape", f.shape},         {"max_disp", f.max_disp},
           {"mean_disp", f.mean_disp}};
 }
 
-Json iteration(const IterationReport& it) {
+Json iteration(const approximate::IterationReport& it) {
   return {{"iteration", it.iteration},
           {"figures", figures(it.figures)},
           {"ratio_abd", it.ratio_abd},
@@ -27,7 +27,7 @@ Json iteration(const IterationReport& it) {
 }
 
 // Milliseconds per stage, summed over patches and threads (time_ms is the wall clock).
-Json stage_times(const StageTimes& t) {
+Json stage_times(const approximate::StageTimes& t) {
   return {{"setup", t.setup},
           {"step1", t.step1},
           {"assembly", t.assembly},
@@ -39,8 +39,8 @@ Json stage_times(const StageTimes& t) {
           {"cg_iterations", t.cg_iterations}};
 }
 
-Json candidate(const CandidateReport& c) {
-  return {{"term", term_name(c.term)},
+Json candidate(const approximate::CandidateReport& c) {
+  return {{"term", approximate::term_name(c.term)},
           {"iterations", c.iterations},
           {"abd_reduction", c.abd_reduction},
           {"mean_disp", c.mean_disp},
@@ -48,25 +48,25 @@ Json candidate(const CandidateReport& c) {
           {"dropped", c.dropped}};
 }
 
-Json patch(const PatchReport& p, double average_edge) {
+Json patch(const approximate::PatchReport& p, double average_edge) {
   Json history = Json::array();
-  for (const IterationReport& it : p.history) history.push_back(iteration(it));
+  for (const approximate::IterationReport& it : p.history) history.push_back(iteration(it));
   Json candidates = Json::array();
-  for (const CandidateReport& c : p.candidates) candidates.push_back(candidate(c));
+  for (const approximate::CandidateReport& c : p.candidates) candidates.push_back(candidate(c));
   return {{"id", p.id},
           {"faces", p.faces},
           {"vertices", p.vertices},
           {"free_vertices", p.free_vertices},
           {"tolerance_model", p.tolerance},
           {"tolerance_ae", average_edge > 0 ? p.tolerance / average_edge : 0.0},
-          {"target_kind", target_kind_name(p.target_kind)},
-          {"developability", term_name(p.developability)},
-          {"developability_reason", term_choice_text(p)},
+          {"target_kind", approximate::target_kind_name(p.target_kind)},
+          {"developability", approximate::term_name(p.developability)},
+          {"developability_reason", approximate::term_choice_text(p)},
           {"candidates", candidates},
           {"fit_residual_deg", p.fit_residual_deg},
           {"iterations", p.iterations},
           {"iterations_run", p.iterations_run},
-          {"stop_reason", stop_reason_text(p.stops)},
+          {"stop_reason", approximate::stop_reason_text(p.stops)},
           {"before", figures(p.before)},
           {"after", figures(p.after)},
           {"abd_reduction", p.abd_reduction},
@@ -77,9 +77,10 @@ Json patch(const PatchReport& p, double average_edge) {
 
 }  // namespace
 
-std::string report_json(const Result& result, const ReportContext& c) {
+std::string report_json(const approximate::Result& result, const ReportContext& c) {
   Json patches = Json::array();
-  for (const PatchReport& p : result.patches) patches.push_back(patch(p, result.average_edge));
+  for (const approximate::PatchReport& p : result.patches)
+    patches.push_back(patch(p, result.average_edge));
   const Json parameters = params::values_json(params::approximate_params(), c.options.settings);
   const Json report = {{"input", c.options.input},
                        {"output", c.options.output},

@@ -1,7 +1,7 @@
-// The --report JSON: every figure of a qd::Result (input AE, totals before/after, per patch with
-// its per-iteration history and its tolerance in model units and AE, factorisations, time) plus
-// what was run (files, mesh size, every declared parameter). Input: the Result and its context.
-// Output: text.
+// The --report JSON: every figure of a qd::approximate::Result (input AE, totals before/after, per
+// patch with its per-iteration history and its tolerance in model units and AE, factorisations,
+// time) plus what was run (files, mesh size, every declared parameter). Input: the Result and its
+// context. Output: text.
 #pragma once
 
 #include <string>
@@ -21,6 +21,6 @@ struct ReportContext {
   const std::vector<std::string>& notes;  // the reader's remarks (e.g. polygons triangulated)
 };
 
-std::string report_json(const Result& result, const ReportContext& context);
+std::string report_json(const approximate::Result& result, const ReportContext& context);
 
 }  // namespace qd::cli

@@ -8,14 +8,13 @@ namespace qd::cli {
 namespace {
 
 // Per triangle, 1 where the face `flags` have the selection bit; empty when none is selected.
-std::vector<char> selected_faces(const meshio::MeshDocument& mesh) {
-  for (const meshio::PlyProperty& p : mesh.face_extra) {
+std::vector<char> selected_faces(const io::MeshDocument& mesh) {
+  for (const io::PlyProperty& p : mesh.face_extra) {
     if (p.name != "flags" || p.is_list) continue;
     std::vector<char> selected(mesh.triangles.size(), 0);
     bool any = false;
     for (std::size_t f = 0; f < selected.size(); ++f)
-      any |=
-          (selected[f] = (static_cast<long long>(p.values[f]) & meshio::kSelectedFlag) != 0) != 0;
+      any |= (selected[f] = (static_cast<long long>(p.values[f]) & io::kSelectedFlag) != 0) != 0;
     if (any) return selected;
   }
   return {};
@@ -23,8 +22,9 @@ std::vector<char> selected_faces(const meshio::MeshDocument& mesh) {
 
 }  // namespace
 
-SegmentProblem make_segment_problem(const meshio::MeshDocument& mesh, const SegmentOptions& o) {
-  SegmentProblem problem;
+segment::SegmentProblem make_segment_problem(const io::MeshDocument& mesh,
+                                             const SegmentOptions& o) {
+  segment::SegmentProblem problem;
   set_geometry(mesh, problem);
   if (!o.settings.keep_patches) problem.patch.clear();
   if (o.settings.selection_border) problem.selected = selected_faces(mesh);

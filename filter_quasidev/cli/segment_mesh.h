@@ -1,5 +1,6 @@
 // The bridge between the command's mesh tables and the segmentation.
-// make_segment_problem: MeshDocument + SegmentOptions -> qd::SegmentProblem (positions, triangles,
+// make_segment_problem: MeshDocument + SegmentOptions -> qd::segment::SegmentProblem (positions,
+// triangles,
 //   the file's patch ids when --keep-patches, selected faces from the PLY face `flags`
 //   selection bit, parameters).
 #pragma once
@@ -10,7 +11,7 @@
 
 namespace qd::cli {
 
-SegmentProblem make_segment_problem(const meshio::MeshDocument& mesh,
-                                    const SegmentOptions& options);
+segment::SegmentProblem make_segment_problem(const io::MeshDocument& mesh,
+                                             const SegmentOptions& options);
 
 }  // namespace qd::cli

@@ -15,26 +15,26 @@ using Json = nlohmann::ordered_json;  // keys in the order written
 
 double degrees(double radians) { return radians * 180.0 / M_PI; }
 
-const char* over_limit_name(OverLimit over) {
+const char* over_limit_name(segment::OverLimit over) {
   switch (over) {
-    case OverLimit::No:
+    case segment::OverLimit::No:
       return "";
-    case OverLimit::SmallestSize:
+    case segment::OverLimit::SmallestSize:
       return "smallest_size";
-    case OverLimit::SmallPart:
+    case segment::OverLimit::SmallPart:
       return "small_part";
-    case OverLimit::TargetCount:
+    case segment::OverLimit::TargetCount:
       return "target_count";
   }
   return "";
 }
 
-Json patch(int id, const SegmentPatch& p, const SegmentParams& q) {
+Json patch(int id, const segment::SegmentPatch& p, const segment::SegmentParams& q) {
   return {{"id", id},
           {"faces", p.faces},
           {"area", p.area},
           {"proxy",
-           {{"kind", proxy_kind(p.proxy)},
+           {{"kind", segment::proxy_kind(p.proxy)},
             {"axis", {p.proxy.axis.x(), p.proxy.axis.y(), p.proxy.axis.z()}},
             {"angle_deg", degrees(p.proxy.angle)}}},
           {"max_error_deg", p.max_error_deg},
@@ -44,14 +44,14 @@ Json patch(int id, const SegmentPatch& p, const SegmentParams& q) {
           {"disk", p.disk},
           {"kept", p.kept},
           {"source_patch", p.source_patch},
-          {"over_limit", p.over_limit != OverLimit::No},
+          {"over_limit", p.over_limit != segment::OverLimit::No},
           {"over_limit_reason", over_limit_name(p.over_limit)},
-          {"over_limit_text", over_limit_text(p.over_limit, q)}};
+          {"over_limit_text", segment::over_limit_text(p.over_limit, q)}};
 }
 
 }  // namespace
 
-std::string segment_report_json(const SegmentResult& r, const SegmentReportContext& c) {
+std::string segment_report_json(const segment::SegmentResult& r, const SegmentReportContext& c) {
   Json patches = Json::array();
   for (std::size_t id = 0; id < r.patches.size(); ++id)
     patches.push_back(patch(static_cast<int>(id), r.patches[id], c.options.settings.engine));

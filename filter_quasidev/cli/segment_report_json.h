@@ -1,5 +1,5 @@
 // The --report JSON of `quasidev segment`: what was run (files, mesh size, parameters) and every
-// figure of a qd::SegmentResult: per patch its faces, area, fitted proxy (kind, axis, apex
+// figure of a qd::segment::SegmentResult: per patch its faces, area, fitted proxy (kind, axis, apex
 // angle), fit error max/rms in degrees, boundary loops, Euler characteristic, disk or not, and
 // why it is over the limit; the warnings and the log. Input: the result and its context.
 #pragma once
@@ -21,6 +21,7 @@ struct SegmentReportContext {
   const std::vector<std::string>& notes;  // the reader's remarks (e.g. polygons triangulated)
 };
 
-std::string segment_report_json(const SegmentResult& result, const SegmentReportContext& context);
+std::string segment_report_json(const segment::SegmentResult& result,
+                                const SegmentReportContext& context);
 
 }  // namespace qd::cli

@@ -5,7 +5,7 @@
 #include "io/dxf_groups.h"
 #include "io/piece_marks.h"
 
-namespace qd {
+namespace qd::io {
 
 namespace {
 
@@ -24,17 +24,18 @@ FileUnit file_unit(const std::string& unit) {
   if (unit == "mm") return {1, "mm", true};
   if (unit == "cm") return {10, "mm", true};
   if (unit == "in") return {1, "in", false};
-  throw Error("an AAMA DXF needs the pattern's unit (mm, cm or in), not '" +
-              (unit.empty() ? std::string("model") : unit) + "'");
+  throw common::Error("an AAMA DXF needs the pattern's unit (mm, cm or in), not '" +
+                      (unit.empty() ? std::string("model") : unit) + "'");
 }
 
 // The piece moved by −origin and scaled: what its block holds.
-PatternPiece in_block(PatternPiece piece, const Eigen::Vector2d& origin, double scale) {
+flatten::PatternPiece in_block(flatten::PatternPiece piece, const Eigen::Vector2d& origin,
+                               double scale) {
   const auto place = [&](Eigen::Vector2d& p) { p = scale * (p - origin); };
   for (auto* loops : {&piece.outlines, &piece.cut_outlines})
-    for (Outline& loop : *loops)
+    for (flatten::Outline& loop : *loops)
       for (Eigen::Vector2d& p : loop) place(p);
-  for (Notch& n : piece.notches) {
+  for (flatten::Notch& n : piece.notches) {
     place(n.at);
     place(n.cut_at);
   }
@@ -42,23 +43,23 @@ PatternPiece in_block(PatternPiece piece, const Eigen::Vector2d& origin, double 
   return piece;
 }
 
-std::string block_name(const PatternPiece& piece) {
+std::string block_name(const flatten::PatternPiece& piece) {
   std::string name = "PIECE_" + piece.label;
   for (char& c : name)
     if (c == '.') c = '_';
   return name;
 }
 
-void block(DxfGroups& g, const PatternPiece& piece, const std::string& unit, double notch,
+void block(DxfGroups& g, const flatten::PatternPiece& piece, const std::string& unit, double notch,
            double text) {
   const std::string name = block_name(piece);
   g(0, "BLOCK")(8, "0")(2, name)(70, 0).point(10, Eigen::Vector2d::Zero())(3, name);
-  const std::size_t outer = outer_loop(piece.cut_outlines);
+  const std::size_t outer = flatten::outer_loop(piece.cut_outlines);
   for (std::size_t i = 0; i < piece.cut_outlines.size(); ++i)
     g.polyline(i == outer ? kBoundary : kCutOuts, piece.cut_outlines[i]);
   if (piece.cut_outlines != piece.outlines)
-    for (const Outline& loop : piece.outlines) g.polyline(kSew, loop);
-  for (const Notch& n : piece.notches) {
+    for (const flatten::Outline& loop : piece.outlines) g.polyline(kSew, loop);
+  for (const flatten::Notch& n : piece.notches) {
     const Segment2 tick = notch_tick(n, notch);
     g.line(kNotches, tick.from, tick.to);
   }
@@ -76,7 +77,7 @@ void block(DxfGroups& g, const PatternPiece& piece, const std::string& unit, dou
 
 }  // namespace
 
-void write_aama_dxf(std::ostream& out, const Pattern& pattern, const std::string& unit) {
+void write_aama_dxf(std::ostream& out, const flatten::Pattern& pattern, const std::string& unit) {
   const FileUnit u = file_unit(unit);
   DxfGroups g(out);
   const Eigen::AlignedBox2d bounds =
@@ -95,7 +96,7 @@ void write_aama_dxf(std::ostream& out, const Pattern& pattern, const std::string
            kNotch * side);
   std::vector<Eigen::Vector2d> origins;
   g(0, "SECTION")(2, "BLOCKS");
-  for (const PatternPiece& piece : pattern.pieces) {
+  for (const flatten::PatternPiece& piece : pattern.pieces) {
     const Eigen::AlignedBox2d box = cut_box(piece);
     origins.push_back(box.isEmpty() ? Eigen::Vector2d::Zero() : box.min());
     block(g, in_block(piece, origins.back(), u.scale), u.name, kNotch * side, kText * side);
@@ -109,4 +110,4 @@ void write_aama_dxf(std::ostream& out, const Pattern& pattern, const std::string
   g(0, "ENDSEC")(0, "EOF");
 }
 
-}  // namespace qd
+}  // namespace qd::io

@@ -23,10 +23,10 @@
 
 #include "flatten/pattern.h"
 
-namespace qd {
+namespace qd::io {
 
-// unit: the model's length unit, "mm", "cm" or "in"; anything else throws qd::Error
+// unit: the model's length unit, "mm", "cm" or "in"; anything else throws qd::common::Error
 // (an AAMA file must declare its unit and a model unit is none).
-void write_aama_dxf(std::ostream& out, const Pattern& pattern, const std::string& unit);
+void write_aama_dxf(std::ostream& out, const flatten::Pattern& pattern, const std::string& unit);
 
-}  // namespace qd
+}  // namespace qd::io

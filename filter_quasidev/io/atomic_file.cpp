@@ -11,7 +11,7 @@
 
 #include "common/error.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
@@ -44,14 +44,14 @@ PendingFile::PendingFile(const std::string& target, const std::string& content) 
   name.insert(name.end(), suffix.begin(), suffix.end());
   name.push_back('\0');
   const int fd = ::mkstemp(name.data());
-  if (fd < 0) throw Error("cannot create a file next to '" + target + "': " + reason());
+  if (fd < 0) throw common::Error("cannot create a file next to '" + target + "': " + reason());
   temp_ = name.data();
   ::fchmod(fd, new_file_mode());
   const bool ok = write_all(fd, content) && ::fsync(fd) == 0;
   const std::string why = reason();
   if (::close(fd) != 0 || !ok) {
     std::remove(temp_.c_str());
-    throw Error("cannot write '" + target + "': " + why);
+    throw common::Error("cannot write '" + target + "': " + why);
   }
 }
 
@@ -61,8 +61,8 @@ PendingFile::~PendingFile() {
 
 void PendingFile::commit() {
   if (std::rename(temp_.c_str(), target_.c_str()) != 0)
-    throw Error("cannot move the new file into place as '" + target_ + "': " + reason());
+    throw common::Error("cannot move the new file into place as '" + target_ + "': " + reason());
   committed_ = true;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -1,12 +1,12 @@
 // Atomic file output: the content goes to a temporary file in the target's directory, which is
 // renamed over the target only by commit(). Until then the target is untouched; a PendingFile
 // destroyed without commit() removes its temporary file.
-// Throws qd::Error if the temporary file cannot be created or written, or the rename fails.
+// Throws qd::common::Error if the temporary file cannot be created or written, or the rename fails.
 #pragma once
 
 #include <string>
 
-namespace qd::meshio {
+namespace qd::io {
 
 class PendingFile {
  public:
@@ -23,4 +23,4 @@ class PendingFile {
   bool committed_ = false;
 };
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -2,7 +2,7 @@
 
 #include <iomanip>
 
-namespace qd {
+namespace qd::io {
 
 DxfGroups::DxfGroups(std::ostream& out)
     : out_(out),
@@ -55,7 +55,7 @@ void DxfGroups::tables(const std::vector<DxfLayer>& layers, double dash) {
   g(0, "ENDTAB")(0, "ENDSEC");
 }
 
-void DxfGroups::polyline(const std::string& layer, const Outline& loop) {
+void DxfGroups::polyline(const std::string& layer, const flatten::Outline& loop) {
   (*this)(0, "POLYLINE")(8, layer)(66, 1).point(10, Eigen::Vector2d::Zero())(70, 1);
   for (const Eigen::Vector2d& p : loop) (*this)(0, "VERTEX")(8, layer).point(10, p);
   (*this)(0, "SEQEND")(8, layer);
@@ -78,4 +78,4 @@ void DxfGroups::text_lines(const std::string& layer, const Eigen::Vector2d& at, 
     text(layer, {at.x(), top - step * static_cast<double>(i)}, height, lines[i]);
 }
 
-}  // namespace qd
+}  // namespace qd::io

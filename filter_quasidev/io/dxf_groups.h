@@ -11,7 +11,7 @@
 
 #include "flatten/pattern.h"
 
-namespace qd {
+namespace qd::io {
 
 struct DxfLayer {
   std::string name;
@@ -37,7 +37,7 @@ class DxfGroups {
   // TABLES: LTYPE (CONTINUOUS, and DASHED of dash length `dash`) and LAYER.
   void tables(const std::vector<DxfLayer>& layers, double dash);
 
-  void polyline(const std::string& layer, const Outline& loop);  // closed
+  void polyline(const std::string& layer, const flatten::Outline& loop);  // closed
   void line(const std::string& layer, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
   void text(const std::string& layer, const Eigen::Vector2d& at, double height,
             const std::string& value);  // centred on `at`
@@ -51,4 +51,4 @@ class DxfGroups {
   std::streamsize previous_precision_;
 };
 
-}  // namespace qd
+}  // namespace qd::io

@@ -5,7 +5,7 @@
 #include "io/dxf_groups.h"
 #include "io/piece_marks.h"
 
-namespace qd {
+namespace qd::io {
 
 namespace {
 
@@ -16,9 +16,9 @@ std::string sew_layer_of(int patch) { return layer_of(patch) + "_SEW"; }
 std::string notch_layer_of(int patch) { return layer_of(patch) + "_NOTCHES"; }
 std::string grain_layer_of(int patch) { return layer_of(patch) + "_GRAIN"; }
 
-std::vector<DxfLayer> layers_of(const Pattern& pattern) {
+std::vector<DxfLayer> layers_of(const flatten::Pattern& pattern) {
   std::set<int> patches;
-  for (const PatternPiece& piece : pattern.pieces) patches.insert(piece.patch);
+  for (const flatten::PatternPiece& piece : pattern.pieces) patches.insert(piece.patch);
   std::vector<DxfLayer> layers;
   int colour = 0;
   for (const int patch : patches) {
@@ -31,13 +31,13 @@ std::vector<DxfLayer> layers_of(const Pattern& pattern) {
   return layers;
 }
 
-void piece_entities(DxfGroups& g, const PatternPiece& piece, const std::string& unit, double notch,
-                    double text) {
+void piece_entities(DxfGroups& g, const flatten::PatternPiece& piece, const std::string& unit,
+                    double notch, double text) {
   const std::string layer = layer_of(piece.patch);
-  for (const Outline& loop : piece.cut_outlines) g.polyline(layer, loop);
+  for (const flatten::Outline& loop : piece.cut_outlines) g.polyline(layer, loop);
   if (piece.cut_outlines != piece.outlines)
-    for (const Outline& loop : piece.outlines) g.polyline(sew_layer_of(piece.patch), loop);
-  for (const Notch& n : piece.notches) {
+    for (const flatten::Outline& loop : piece.outlines) g.polyline(sew_layer_of(piece.patch), loop);
+  for (const flatten::Notch& n : piece.notches) {
     const Segment2 tick = notch_tick(n, notch);
     g.line(notch_layer_of(piece.patch), tick.from, tick.to);
   }
@@ -49,7 +49,7 @@ void piece_entities(DxfGroups& g, const PatternPiece& piece, const std::string& 
 
 }  // namespace
 
-void write_dxf(std::ostream& out, const Pattern& pattern, const std::string& unit) {
+void write_dxf(std::ostream& out, const flatten::Pattern& pattern, const std::string& unit) {
   DxfGroups g(out);
   const Eigen::AlignedBox2d bounds =
       pattern.bounds.isEmpty()
@@ -59,9 +59,9 @@ void write_dxf(std::ostream& out, const Pattern& pattern, const std::string& uni
   g.header(bounds);
   g.tables(layers_of(pattern), kNotch * side);
   g(0, "SECTION")(2, "ENTITIES");
-  for (const PatternPiece& piece : pattern.pieces)
+  for (const flatten::PatternPiece& piece : pattern.pieces)
     piece_entities(g, piece, unit, kNotch * side, kText * side);
   g(0, "ENDSEC")(0, "EOF");
 }
 
-}  // namespace qd
+}  // namespace qd::io

@@ -15,9 +15,9 @@
 
 #include "flatten/pattern.h"
 
-namespace qd {
+namespace qd::io {
 
 // unit: the model's length unit written in the labels' size ("" = model units).
-void write_dxf(std::ostream& out, const Pattern& pattern, const std::string& unit = "");
+void write_dxf(std::ostream& out, const flatten::Pattern& pattern, const std::string& unit = "");
 
-}  // namespace qd
+}  // namespace qd::io

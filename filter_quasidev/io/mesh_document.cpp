@@ -2,7 +2,7 @@
 
 #include "io/ply_tables.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 PlyProperty scalar_property(const std::string& name, ScalarType type,
                             const std::vector<double>& values) {
@@ -24,4 +24,4 @@ const PlyElement* PlyTables::find(const std::string& element_name) const {
   return nullptr;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

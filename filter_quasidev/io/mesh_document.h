@@ -13,7 +13,7 @@
 
 #include "io/scalar_column.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 // One property of an element: a scalar column, or a list column (values of element i are
 // values[offsets[i] .. offsets[i+1]) ).
@@ -65,4 +65,4 @@ struct MeshDocument {
   std::vector<std::string> notes;          // remarks for the user (e.g. polygons triangulated)
 };
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -13,7 +13,7 @@
 #include "io/off_reader.h"
 #include "io/ply_mesh.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
@@ -41,7 +41,7 @@ MeshDocument parse_by_content(const std::string& bytes, const std::string& path)
     return parse_off(bytes);
   if (ext == "obj") return parse_obj(bytes);
   if (ext == "ply") return parse_ply(bytes);  // gives the PLY magic message
-  throw Error("unknown mesh format (expected a .ply, .obj or .off file)");
+  throw common::Error("unknown mesh format (expected a .ply, .obj or .off file)");
 }
 
 }  // namespace
@@ -49,27 +49,27 @@ MeshDocument parse_by_content(const std::string& bytes, const std::string& path)
 std::string read_file_bytes(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec))
-    throw Error("'" + path + "' is not a regular file");
+    throw common::Error("'" + path + "' is not a regular file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open '" + path + "': " + std::strerror(errno));
+  if (!in) throw common::Error("cannot open '" + path + "': " + std::strerror(errno));
   std::ostringstream content;
   content << in.rdbuf();
-  if (in.bad()) throw Error("cannot read '" + path + "'");
+  if (in.bad()) throw common::Error("cannot read '" + path + "'");
   return content.str();
 }
 
 MeshDocument read_mesh(const std::string& path) {
   const std::string bytes = read_file_bytes(path);
-  if (bytes.empty()) throw Error("'" + path + "' is empty");
+  if (bytes.empty()) throw common::Error("'" + path + "' is empty");
   MeshDocument mesh;
   try {
     mesh = parse_by_content(bytes, path);
-  } catch (const Error& e) {
-    throw Error("'" + path + "': " + e.what());
+  } catch (const common::Error& e) {
+    throw common::Error("'" + path + "': " + e.what());
   }
   if (mesh.triangles.empty())
-    throw Error("'" + path + "' has no faces; quasidev needs a triangle mesh");
+    throw common::Error("'" + path + "' has no faces; quasidev needs a triangle mesh");
   return mesh;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

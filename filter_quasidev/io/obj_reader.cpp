@@ -15,12 +15,12 @@
 #include "io/text_scan.h"
 #include "io/triangulate.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
 [[noreturn]] void fail(int line, const std::string& message) {
-  throw Error("OBJ line " + std::to_string(line) + ": " + message);
+  throw common::Error("OBJ line " + std::to_string(line) + ": " + message);
 }
 
 // Everything gathered while scanning, before triangulation.
@@ -167,4 +167,4 @@ MeshDocument parse_obj(std::string_view bytes) {
   return mesh;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -5,7 +5,8 @@
 // face has texture coordinates, and patch ids from `g` / `o` groups numbered 0, 1, ... in order
 // of first appearance (faces before any group form their own group), each named by its group's
 // name (the words after `g` / `o`; the unnamed group has none). No patch ids without groups.
-// Normals, materials, lines and points are ignored (a note says so). Throws qd::Error "OBJ line N:
+// Normals, materials, lines and points are ignored (a note says so). Throws qd::common::Error "OBJ
+// line N:
 // ..." on malformed or out-of-range data.
 #pragma once
 
@@ -13,8 +14,8 @@
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 MeshDocument parse_obj(std::string_view bytes);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -7,12 +7,12 @@
 #include "io/text_scan.h"
 #include "io/triangulate.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
 [[noreturn]] void fail(int line, const std::string& message) {
-  throw Error("OFF line " + std::to_string(line) + ": " + message);
+  throw common::Error("OFF line " + std::to_string(line) + ": " + message);
 }
 
 // Non-empty lines with comments removed, each with its 1-based line number.
@@ -48,7 +48,7 @@ std::size_t parse_count(std::string_view token, int line, const char* what) {
 
 MeshDocument parse_off(std::string_view bytes) {
   const OffLines lines = significant_lines(bytes);
-  if (lines.words.empty()) throw Error("OFF: the file is empty");
+  if (lines.words.empty()) throw common::Error("OFF: the file is empty");
   std::vector<std::string_view> header = lines.words[0];
   const std::string keyword(header[0]);
   if (keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0 ||
@@ -57,7 +57,7 @@ MeshDocument parse_off(std::string_view bytes) {
   std::size_t next = 1;
   header.erase(header.begin());
   if (header.empty()) {  // counts on their own line
-    if (next >= lines.words.size()) throw Error("OFF: the counts line is missing");
+    if (next >= lines.words.size()) throw common::Error("OFF: the counts line is missing");
     header = lines.words[next++];
   }
   const int count_line = lines.number[next - 1];
@@ -66,9 +66,9 @@ MeshDocument parse_off(std::string_view bytes) {
   const std::size_t nf = parse_count(header[1], count_line, "face");
   const std::size_t available = lines.words.size() - next;
   if (nv > available || nf > available - nv)
-    throw Error("OFF: the header declares " + std::to_string(nv) + " vertices and " +
-                std::to_string(nf) + " faces, but only " + std::to_string(available) +
-                " data lines follow (wrong counts or truncated file)");
+    throw common::Error("OFF: the header declares " + std::to_string(nv) + " vertices and " +
+                        std::to_string(nf) + " faces, but only " + std::to_string(available) +
+                        " data lines follow (wrong counts or truncated file)");
   MeshDocument mesh;
   mesh.positions.resize(nv);
   for (std::size_t i = 0; i < nv; ++i, ++next) {
@@ -99,10 +99,10 @@ MeshDocument parse_off(std::string_view bytes) {
   }
   try {
     add_faces(corners, nf, nv, {}, mesh);
-  } catch (const Error& e) {
-    throw Error(std::string("OFF: ") + e.what());
+  } catch (const common::Error& e) {
+    throw common::Error(std::string("OFF: ") + e.what());
   }
   return mesh;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

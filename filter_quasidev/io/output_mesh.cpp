@@ -7,12 +7,13 @@
 #include "common/error.h"
 #include "io/ply_writer.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
 // Area-weighted vertex normals of the positions V (unit length; zero where undefined).
-std::vector<std::array<double, 3>> vertex_normals(const MeshDocument& mesh, const Positions& V) {
+std::vector<std::array<double, 3>> vertex_normals(const MeshDocument& mesh,
+                                                  const common::Positions& V) {
   const auto at = [&V](int v, Eigen::Index k) { return V(v, k); };
   std::vector<std::array<double, 3>> n(static_cast<std::size_t>(V.rows()), {0, 0, 0});
   for (const std::array<int, 3>& t : mesh.triangles) {
@@ -54,7 +55,8 @@ void remove_columns(std::vector<PlyProperty>& columns, Match matches) {
 
 void check_size(const char* element, std::size_t rows, std::size_t size) {
   if (size != rows)
-    throw Error(std::string("internal error: output fields do not have one value per ") + element);
+    throw common::Error(std::string("internal error: output fields do not have one value per ") +
+                        element);
 }
 
 // The element's columns and its row count, checked against `size`.
@@ -115,7 +117,7 @@ PlyTables tables_of(const MeshDocument& doc) {
 
 }  // namespace
 
-void set_positions(MeshDocument& doc, const Positions& V) {
+void set_positions(MeshDocument& doc, const common::Positions& V) {
   check_size("vertex", doc.positions.size(), static_cast<std::size_t>(V.rows()));
   for (std::size_t i = 0; i < doc.positions.size(); ++i)
     for (std::size_t k = 0; k < 3; ++k)
@@ -154,7 +156,7 @@ void set_colors(MeshDocument& doc, Element element,
       scalar_property("alpha", ScalarType::UInt8, std::vector<double>(colors.size(), 255)));
 }
 
-void set_texcoords(MeshDocument& doc, const WedgeUV& uv) {
+void set_texcoords(MeshDocument& doc, const flatten::WedgeUV& uv) {
   std::vector<PlyProperty>& columns =
       columns_of(doc, Element::Face, static_cast<std::size_t>(uv.rows()));
   doc.corner_uv.clear();
@@ -170,4 +172,4 @@ std::string serialize_ply(const MeshDocument& doc, PlyFormat format) {
   return serialize_ply_tables(tables_of(doc), format);
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -6,10 +6,10 @@
 #include "io/dxf_writer.h"
 #include "io/svg_writer.h"
 
-namespace qd {
+namespace qd::io {
 
 std::vector<std::pair<std::string, std::string>> pattern_files(const params::FlattenSettings& s,
-                                                               const Pattern& pattern) {
+                                                               const flatten::Pattern& pattern) {
   std::vector<std::pair<std::string, std::string>> files;
   const std::string unit = params::svg_unit(s);
   if (!s.svg_file.empty()) {
@@ -28,4 +28,4 @@ std::vector<std::pair<std::string, std::string>> pattern_files(const params::Fla
   return files;
 }
 
-}  // namespace qd
+}  // namespace qd::io

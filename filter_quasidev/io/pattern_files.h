@@ -1,5 +1,5 @@
 // The pattern files a flattening's settings ask for (SVG; DXF plain or AAMA/ASTM D6673), as
-// (path, bytes), so every front end writes them the same way. Throws qd::Error for
+// (path, bytes), so every front end writes them the same way. Throws qd::common::Error for
 // an AAMA DXF without a physical unit (aama_dxf_writer.h).
 #pragma once
 
@@ -10,9 +10,9 @@
 #include "flatten/pattern.h"
 #include "flatten_settings.h"
 
-namespace qd {
+namespace qd::io {
 
 std::vector<std::pair<std::string, std::string>> pattern_files(
-    const params::FlattenSettings& settings, const Pattern& pattern);
+    const params::FlattenSettings& settings, const flatten::Pattern& pattern);
 
-}  // namespace qd
+}  // namespace qd::io

@@ -9,7 +9,7 @@
 
 #include "flatten/outline_measures.h"
 
-namespace qd {
+namespace qd::io {
 
 namespace {
 
@@ -34,11 +34,11 @@ std::string measure_text(double x) {
 
 // How far from `at` along ±d the line first crosses the loops: {before (≤ 0), after (≥ 0)},
 // infinite where it does not.
-std::pair<double, double> crossings(const std::vector<Outline>& loops, const Eigen::Vector2d& at,
-                                    const Eigen::Vector2d& d) {
+std::pair<double, double> crossings(const std::vector<flatten::Outline>& loops,
+                                    const Eigen::Vector2d& at, const Eigen::Vector2d& d) {
   double before = -std::numeric_limits<double>::infinity();
   double after = std::numeric_limits<double>::infinity();
-  for (const Outline& loop : loops)
+  for (const flatten::Outline& loop : loops)
     for (std::size_t i = 0, n = loop.size(); i < n; ++i) {
       const Eigen::Vector2d a = loop[i] - at, e = loop[(i + 1) % n] - loop[i];
       const double det = e.x() * d.y() - e.y() * d.x();  // solve t d = a + s e
@@ -54,11 +54,13 @@ std::pair<double, double> crossings(const std::vector<Outline>& loops, const Eig
 
 }  // namespace
 
-Eigen::AlignedBox2d cut_box(const PatternPiece& piece) { return outline_box(piece.cut_outlines); }
+Eigen::AlignedBox2d cut_box(const flatten::PatternPiece& piece) {
+  return flatten::outline_box(piece.cut_outlines);
+}
 
-Segment2 grainline(const PatternPiece& piece) {
+Segment2 grainline(const flatten::PatternPiece& piece) {
   double low = std::numeric_limits<double>::infinity(), high = -low;
-  for (const Outline& loop : piece.cut_outlines)
+  for (const flatten::Outline& loop : piece.cut_outlines)
     for (const Eigen::Vector2d& p : loop) {
       low = std::min(low, p.dot(piece.grain));
       high = std::max(high, p.dot(piece.grain));
@@ -69,11 +71,11 @@ Segment2 grainline(const PatternPiece& piece) {
           piece.label_at + std::min(half, kInside * after) * piece.grain};
 }
 
-Segment2 notch_tick(const Notch& notch, double beyond) {
+Segment2 notch_tick(const flatten::Notch& notch, double beyond) {
   return {notch.cut_at, notch.at + beyond * notch.inward};
 }
 
-std::vector<std::string> label_lines(const PatternPiece& piece, const std::string& unit,
+std::vector<std::string> label_lines(const flatten::PatternPiece& piece, const std::string& unit,
                                      const std::string& times) {
   std::vector<std::string> lines;
   if (!piece.name.empty()) lines.push_back(piece.name);
@@ -88,9 +90,9 @@ std::vector<std::string> label_lines(const PatternPiece& piece, const std::strin
   return lines;
 }
 
-double label_height(const PatternPiece& piece, const std::vector<std::string>& lines,
+double label_height(const flatten::PatternPiece& piece, const std::vector<std::string>& lines,
                     double height) {
-  const Eigen::AlignedBox2d box = outline_box(piece.outlines);
+  const Eigen::AlignedBox2d box = flatten::outline_box(piece.outlines);
   size_t longest = 1;
   for (const std::string& line : lines) longest = std::max(longest, characters(line));
   const double fit_x = 0.8 * box.sizes().x() / (0.6 * static_cast<double>(longest));
@@ -99,4 +101,4 @@ double label_height(const PatternPiece& piece, const std::vector<std::string>& l
   return std::min(height, std::min(fit_x, fit_y));
 }
 
-}  // namespace qd
+}  // namespace qd::io

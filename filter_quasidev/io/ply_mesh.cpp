@@ -10,11 +10,11 @@
 #include "io/text_scan.h"
 #include "io/triangulate.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& message) { throw Error("PLY: " + message); }
+[[noreturn]] void fail(const std::string& message) { throw common::Error("PLY: " + message); }
 
 // Removes and returns the scalar property `name` of `e`; fails if it is missing or a list.
 PlyProperty take_scalar(PlyElement& e, const std::string& name) {
@@ -84,7 +84,7 @@ void read_faces(PlyElement& face, MeshDocument& mesh) {
         add_faces(indices, face.count, mesh.positions.size(), face.properties, mesh);
     if (!ids.empty())
       for (std::size_t s : source) mesh.patch.push_back(ids[s]);
-  } catch (const Error& e) {
+  } catch (const common::Error& e) {
     fail(e.what());
   }
 }
@@ -130,4 +130,4 @@ MeshDocument parse_ply(std::string_view bytes) {
   return mesh;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

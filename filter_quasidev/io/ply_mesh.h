@@ -4,19 +4,19 @@
 // polygons fan-triangulated), patch ids (face `quality` rounded, else an integer face `patch`),
 // panel names from comments `comment patch <id> <name…>` (the name is the rest of the line; other
 // comments, and these too, are kept as they are), constrained vertices (vertex `flags` bit 0x20,
-// MeshLab's selection) and every other property and element kept for pass-through. Throws qd::Error
-// when the vertex or face element or a coordinate is missing or unusable.
+// MeshLab's selection) and every other property and element kept for pass-through. Throws
+// qd::common::Error when the vertex or face element or a coordinate is missing or unusable.
 #pragma once
 
 #include <string_view>
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 // vcg's selection bit in the PLY vertex `flags` property.
 constexpr int kSelectedFlag = 0x20;
 
 MeshDocument parse_ply(std::string_view bytes);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -15,11 +15,11 @@
 #include "io/scalar_value.h"
 #include "io/text_scan.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& message) { throw Error("PLY: " + message); }
+[[noreturn]] void fail(const std::string& message) { throw common::Error("PLY: " + message); }
 
 bool parse_type(std::string_view word, ScalarType& type) {
   static const std::pair<const char*, ScalarType> names[] = {
@@ -317,4 +317,4 @@ PlyTables parse_ply_tables(std::string_view bytes) {
   return ply;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -9,7 +9,7 @@
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 enum class PlyFormat { Ascii, BinaryLittleEndian, BinaryBigEndian };
 
@@ -23,4 +23,4 @@ struct PlyTables {
   const PlyElement* find(const std::string& element_name) const;
 };
 
-}  // namespace qd::meshio
+}  // namespace qd::io

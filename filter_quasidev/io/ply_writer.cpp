@@ -7,7 +7,7 @@
 #include "common/error.h"
 #include "io/scalar_value.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
@@ -84,8 +84,9 @@ void append_text(ScalarType type, double v, std::string& out) {
 void append_value(ScalarType type, double v, PlyFormat format, const PlyElement& e,
                   const PlyProperty& p, std::size_t i, std::string& out) {
   if (!fits_scalar_type(type, v))
-    throw Error("cannot write property '" + p.name + "' of " + e.name + " " + std::to_string(i) +
-                ": value " + std::to_string(v) + " does not fit type " + scalar_type_name(type));
+    throw common::Error("cannot write property '" + p.name + "' of " + e.name + " " +
+                        std::to_string(i) + ": value " + std::to_string(v) + " does not fit type " +
+                        scalar_type_name(type));
   if (format == PlyFormat::Ascii) {
     append_text(type, v, out);
     out += ' ';
@@ -98,8 +99,8 @@ void append_element(const PlyElement& e, PlyFormat format, std::string& out) {
   for (const PlyProperty& p : e.properties) {
     const std::size_t expected = p.is_list ? e.count + 1 : e.count;
     if ((p.is_list ? p.offsets.size() : p.values.size()) != expected)
-      throw Error("internal error: property '" + p.name + "' of element '" + e.name +
-                  "' does not have one entry per element");
+      throw common::Error("internal error: property '" + p.name + "' of element '" + e.name +
+                          "' does not have one entry per element");
   }
   for (std::size_t i = 0; i < e.count; ++i) {
     for (const PlyProperty& p : e.properties) {
@@ -123,4 +124,4 @@ std::string serialize_ply_tables(const PlyTables& ply, PlyFormat format) {
   return out;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

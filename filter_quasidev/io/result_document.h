@@ -5,10 +5,10 @@
 //   or displacement (settings.output_quality) and, with settings.colorize, its colour ramp over
 //   the robust (2nd–98th percentile) range.
 // segmented_document: the input's vertices, per-face quality = patch id and a colour per patch
-//   (qd::patch_color).
+//   (qd::segment::patch_color).
 // flattened_document: the input's vertices, per-face wedge texture coordinates (model units),
 //   quality = signed stretch and its colour ramp (flatten/stretch_ramp.h).
-// Throws qd::Error when the result does not have one entry per vertex (per face).
+// Throws qd::common::Error when the result does not have one entry per vertex (per face).
 #pragma once
 
 #include "approximate/result.h"
@@ -17,11 +17,11 @@
 #include "io/mesh_document.h"
 #include "segment/segment_result.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
-MeshDocument approximated_document(const MeshDocument& mesh, const Result& result,
+MeshDocument approximated_document(const MeshDocument& mesh, const approximate::Result& result,
                                    const params::ApproximateSettings& settings);
-MeshDocument segmented_document(const MeshDocument& mesh, const SegmentResult& result);
-MeshDocument flattened_document(const MeshDocument& mesh, const FlattenResult& result);
+MeshDocument segmented_document(const MeshDocument& mesh, const segment::SegmentResult& result);
+MeshDocument flattened_document(const MeshDocument& mesh, const flatten::FlattenResult& result);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -5,7 +5,7 @@
 #include "common/error.h"
 #include "io/scalar_value.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
@@ -80,8 +80,8 @@ double ScalarColumn::operator[](std::size_t i) const {
 
 void ScalarColumn::push_back(double value) {
   if (!fits_scalar_type(type(), value))
-    throw Error("value " + std::to_string(value) + " does not fit type " +
-                scalar_type_name(type()));
+    throw common::Error("value " + std::to_string(value) + " does not fit type " +
+                        scalar_type_name(type()));
   std::visit(
       [value](auto& v) {
         v.push_back(static_cast<typename std::decay_t<decltype(v)>::value_type>(value));
@@ -97,4 +97,4 @@ std::vector<double> ScalarColumn::to_doubles() const {
   return std::visit([](const auto& v) { return std::vector<double>(v.begin(), v.end()); }, data_);
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

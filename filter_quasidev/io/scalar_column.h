@@ -8,7 +8,7 @@
 #include <variant>
 #include <vector>
 
-namespace qd::meshio {
+namespace qd::io {
 
 // In the order of ScalarColumn's alternatives.
 enum class ScalarType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
@@ -20,13 +20,13 @@ std::size_t scalar_type_size(ScalarType type);
 class ScalarColumn {
  public:
   explicit ScalarColumn(ScalarType type = ScalarType::Float32);
-  // Throws qd::Error when a value does not fit `type` (scalar_value.h).
+  // Throws qd::common::Error when a value does not fit `type` (scalar_value.h).
   ScalarColumn(ScalarType type, const std::vector<double>& values);
 
   ScalarType type() const { return static_cast<ScalarType>(data_.index()); }
   std::size_t size() const;
   double operator[](std::size_t i) const;
-  // Throws qd::Error when the value does not fit the column's type.
+  // Throws qd::common::Error when the value does not fit the column's type.
   void push_back(double value);
   void reserve(std::size_t n);
   std::vector<double> to_doubles() const;
@@ -40,4 +40,4 @@ class ScalarColumn {
       data_;
 };
 
-}  // namespace qd::meshio
+}  // namespace qd::io

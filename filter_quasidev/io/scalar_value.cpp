@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
@@ -39,4 +39,4 @@ bool fits_scalar_type(ScalarType type, double value) {
   return false;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

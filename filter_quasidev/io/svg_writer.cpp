@@ -10,7 +10,7 @@
 #include "io/piece_marks.h"
 #include "io/xml_text.h"
 
-namespace qd {
+namespace qd::io {
 
 namespace {
 
@@ -42,7 +42,7 @@ std::ostream& operator<<(std::ostream& out, const At& at) {
   return out << at.page.x(at.p) << ' ' << at.page.y(at.p);
 }
 
-void write_loops(std::ostream& out, const std::vector<Outline>& loops, const Page& page) {
+void write_loops(std::ostream& out, const std::vector<flatten::Outline>& loops, const Page& page) {
   for (const auto& loop : loops) {
     for (size_t i = 0; i < loop.size(); ++i) out << (i == 0 ? "M " : " L ") << At{page, loop[i]};
     out << " Z ";
@@ -50,7 +50,8 @@ void write_loops(std::ostream& out, const std::vector<Outline>& loops, const Pag
 }
 
 // The grainline with an arrowhead of length `head` at both ends.
-void write_grainline(std::ostream& out, const PatternPiece& piece, const Page& page, double head) {
+void write_grainline(std::ostream& out, const flatten::PatternPiece& piece, const Page& page,
+                     double head) {
   const Segment2 g = grainline(piece);
   const Eigen::Vector2d along = piece.grain * head, across(-along.y(), along.x());
   out << "<path class=\"grain\" d=\"M " << At{page, g.from} << " L " << At{page, g.to};
@@ -61,8 +62,8 @@ void write_grainline(std::ostream& out, const PatternPiece& piece, const Page& p
   out << "\"/>\n";
 }
 
-void write_piece(std::ostream& out, const PatternPiece& piece, const Page& page, double notch,
-                 double font, const std::string& unit) {
+void write_piece(std::ostream& out, const flatten::PatternPiece& piece, const Page& page,
+                 double notch, double font, const std::string& unit) {
   out << "<g id=\"piece-" << xml_escaped(piece.label) << "\">\n<path class=\"cut\" d=\"";
   write_loops(out, piece.cut_outlines, page);
   out << "\"/>\n";
@@ -73,7 +74,7 @@ void write_piece(std::ostream& out, const PatternPiece& piece, const Page& page,
   }
   if (!piece.notches.empty()) {
     out << "<path class=\"notches\" d=\"";
-    for (const Notch& n : piece.notches) {
+    for (const flatten::Notch& n : piece.notches) {
       const Segment2 tick = notch_tick(n, notch);
       out << "M " << At{page, tick.from} << " L " << At{page, tick.to} << ' ';
     }
@@ -92,7 +93,7 @@ void write_piece(std::ostream& out, const PatternPiece& piece, const Page& page,
 
 }  // namespace
 
-void write_svg(std::ostream& out, const Pattern& pattern, const std::string& unit) {
+void write_svg(std::ostream& out, const flatten::Pattern& pattern, const std::string& unit) {
   const std::locale previous = out.imbue(std::locale::classic());
   const Eigen::AlignedBox2d bounds =
       pattern.bounds.isEmpty()
@@ -113,7 +114,7 @@ void write_svg(std::ostream& out, const Pattern& pattern, const std::string& uni
       << "<g fill=\"none\" stroke=\"black\" stroke-width=\"" << kStroke * side
       << "\" font-family=\"sans-serif\" font-size=\"" << font
       << "\" text-anchor=\"middle\" dominant-baseline=\"middle\">\n";
-  for (const PatternPiece& piece : pattern.pieces)
+  for (const flatten::PatternPiece& piece : pattern.pieces)
     write_piece(out, piece, page, kNotch * side, font, unit);
   const double bar = round_length(
       kScaleBar * bounds.sizes().x() > 0 ? kScaleBar * bounds.sizes().x() : kScaleBar * side);
@@ -129,4 +130,4 @@ void write_svg(std::ostream& out, const Pattern& pattern, const std::string& uni
   out.imbue(previous);
 }
 
-}  // namespace qd
+}  // namespace qd::io

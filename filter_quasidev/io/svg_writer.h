@@ -11,11 +11,11 @@
 
 #include "flatten/pattern.h"
 
-namespace qd {
+namespace qd::io {
 
 // unit: the model's length unit, written on the scale bar and the labels; "mm", "cm" or "in"
 // also give the document that physical size, so it prints at 1:1. Empty: "model units", no
 // physical size.
-void write_svg(std::ostream& out, const Pattern& pattern, const std::string& unit = "");
+void write_svg(std::ostream& out, const flatten::Pattern& pattern, const std::string& unit = "");
 
-}  // namespace qd
+}  // namespace qd::io

@@ -2,7 +2,7 @@
 
 #include <charconv>
 
-namespace qd::meshio {
+namespace qd::io {
 
 bool is_space(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
@@ -42,4 +42,4 @@ bool parse_integer(std::string_view token, long long& value) {
   return !token.empty() && ec == std::errc() && end == token.data() + token.size();
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-namespace qd::meshio {
+namespace qd::io {
 
 bool is_space(char c);
 
@@ -21,4 +21,4 @@ bool parse_number(std::string_view token, double& value);
 // Parses a whole token as a decimal integer (optional sign); false if it is not one.
 bool parse_integer(std::string_view token, long long& value);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -5,24 +5,25 @@
 
 #include "common/error.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 namespace {
 
 void check_face(const PlyProperty& indices, std::size_t f, std::size_t vertex_count) {
   const std::size_t n = indices.list_size(f);
   if (n < 3)
-    throw Error("face " + std::to_string(f) + " has " + std::to_string(n) +
-                " vertices; a face needs at least 3");
+    throw common::Error("face " + std::to_string(f) + " has " + std::to_string(n) +
+                        " vertices; a face needs at least 3");
   for (std::size_t k = indices.offsets[f]; k < indices.offsets[f + 1]; ++k) {
     const double v = indices.values[k];
     if (v != std::floor(v))
-      throw Error("face " + std::to_string(f) + " has vertex index " + std::to_string(v) +
-                  ", which is not a whole number");
+      throw common::Error("face " + std::to_string(f) + " has vertex index " + std::to_string(v) +
+                          ", which is not a whole number");
     if (v < 0 || v >= static_cast<double>(vertex_count))
-      throw Error("face " + std::to_string(f) + " uses vertex index " +
-                  std::to_string(static_cast<long long>(v)) + ", out of range (the file has " +
-                  std::to_string(vertex_count) + " vertices)");
+      throw common::Error("face " + std::to_string(f) + " uses vertex index " +
+                          std::to_string(static_cast<long long>(v)) +
+                          ", out of range (the file has " + std::to_string(vertex_count) +
+                          " vertices)");
   }
 }
 
@@ -84,4 +85,4 @@ std::vector<std::size_t> add_faces(const PlyProperty& indices, std::size_t face_
   return source;
 }
 
-}  // namespace qd::meshio
+}  // namespace qd::io

@@ -4,7 +4,7 @@
 // (a polygon's scalars repeated; a per-corner list, i.e. one whose length is a multiple of the
 // corner count, split to the triangle's corners; any other list repeated), and a note when
 // polygons were fan-triangulated. Returns, per triangle, the index of the face it came from.
-// Throws qd::Error for a face with fewer than 3 corners or an index out of range.
+// Throws qd::common::Error for a face with fewer than 3 corners or an index out of range.
 #pragma once
 
 #include <cstddef>
@@ -12,11 +12,11 @@
 
 #include "io/mesh_document.h"
 
-namespace qd::meshio {
+namespace qd::io {
 
 std::vector<std::size_t> add_faces(const PlyProperty& indices, std::size_t face_count,
                                    std::size_t vertex_count,
                                    const std::vector<PlyProperty>& face_columns,
                                    MeshDocument& mesh);
 
-}  // namespace qd::meshio
+}  // namespace qd::io

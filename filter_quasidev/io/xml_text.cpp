@@ -1,6 +1,6 @@
 #include "io/xml_text.h"
 
-namespace qd {
+namespace qd::io {
 
 std::string xml_escaped(const std::string& text) {
   std::string out;
@@ -19,4 +19,4 @@ std::string xml_escaped(const std::string& text) {
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::io

@@ -4,8 +4,8 @@
 
 #include <string>
 
-namespace qd {
+namespace qd::io {
 
 std::string xml_escaped(const std::string& text);
 
-}  // namespace qd
+}  // namespace qd::io

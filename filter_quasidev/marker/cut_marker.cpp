@@ -3,9 +3,9 @@
 #include "nest_marker.h"
 #include "row_marker.h"
 
-namespace qd {
+namespace qd::marker {
 
-MarkerChoice cut_marker(const Pattern& pattern, double width, double gap) {
+MarkerChoice cut_marker(const flatten::Pattern& pattern, double width, double gap) {
   MarkerChoice c{nest_marker(pattern, width, gap), row_marker(pattern, width, gap)};
   // More pieces placed wins; among equal counts, the shorter.
   const size_t nested = c.nested.placements.size(), rows = c.rows.placements.size();
@@ -13,4 +13,4 @@ MarkerChoice cut_marker(const Pattern& pattern, double width, double gap) {
   return c;
 }
 
-}  // namespace qd
+}  // namespace qd::marker

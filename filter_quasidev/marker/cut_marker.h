@@ -5,7 +5,7 @@
 
 #include "marker.h"
 
-namespace qd {
+namespace qd::marker {
 
 struct MarkerChoice {
   Marker nested, rows;
@@ -14,6 +14,6 @@ struct MarkerChoice {
 };
 
 // width: the fabric's width (> 0); gap: the space between pieces.
-MarkerChoice cut_marker(const Pattern& pattern, double width, double gap);
+MarkerChoice cut_marker(const flatten::Pattern& pattern, double width, double gap);
 
-}  // namespace qd
+}  // namespace qd::marker

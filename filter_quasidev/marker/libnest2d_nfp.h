@@ -23,7 +23,8 @@ struct MaxNfpLevel<PolygonImpl> {
 inline NfpResult<PolygonImpl> minkowski_nfp(const PolygonImpl& stationary,
                                             const PolygonImpl& orbiter) {
   const PointImpl reference = rightmostUpVertex(orbiter);
-  ClipperLib::Path contour = qd::no_fit_polygon(stationary.Contour, orbiter.Contour, reference);
+  ClipperLib::Path contour =
+      qd::marker::no_fit_polygon(stationary.Contour, orbiter.Contour, reference);
   std::reverse(contour.begin(), contour.end());  // clockwise and closed, as libnest2d holds them
   if (!contour.empty()) contour.push_back(contour.front());
   const PointImpl touch = rightmostUpVertex(stationary) - leftmostDownVertex(orbiter);

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-namespace qd {
+namespace qd::marker {
 
 namespace {
 
-double area(const Outline& o) {
+double area(const flatten::Outline& o) {
   double a = 0;
   for (size_t i = 0, j = o.size() - 1; i < o.size(); j = i++)
     a += o[j].x() * o[i].y() - o[i].x() * o[j].y();
@@ -32,4 +32,4 @@ void note_unplaced(Marker& marker, const std::string& label) {
     marker.unplaced.push_back(label);
 }
 
-}  // namespace qd
+}  // namespace qd::marker

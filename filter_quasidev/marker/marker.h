@@ -8,7 +8,7 @@
 
 #include "flatten/pattern.h"
 
-namespace qd {
+namespace qd::marker {
 
 struct MarkerPlacement {
   int piece = 0;          // index into Pattern::pieces
@@ -16,7 +16,7 @@ struct MarkerPlacement {
   double rotation = 0;    // radians, counter-clockwise, from the sheet to the marker
   Eigen::Vector2d offset =
       Eigen::Vector2d::Zero();  // marker = rotation * (mirror * sheet) + offset
-  Outline outline;              // the placed cut line
+  flatten::Outline outline;     // the placed cut line
 };
 
 struct Marker {
@@ -33,4 +33,4 @@ void measure_marker(Marker& marker);
 // Adds a piece's label to Marker::unplaced, once.
 void note_unplaced(Marker& marker, const std::string& label);
 
-}  // namespace qd
+}  // namespace qd::marker

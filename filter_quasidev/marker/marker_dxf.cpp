@@ -5,11 +5,11 @@
 
 #include "io/dxf_groups.h"
 
-namespace qd {
+namespace qd::marker {
 
 namespace {
 
-std::string layer_of(const PatternPiece& piece) {
+std::string layer_of(const flatten::PatternPiece& piece) {
   std::string layer = "PIECE_" + piece.label;
   for (char& c : layer)
     if (c == '.') c = '_';
@@ -18,15 +18,15 @@ std::string layer_of(const PatternPiece& piece) {
 
 }  // namespace
 
-void write_marker_dxf(std::ostream& out, const Marker& marker, const Pattern& pattern) {
+void write_marker_dxf(std::ostream& out, const Marker& marker, const flatten::Pattern& pattern) {
   std::set<std::string> names;
   for (const MarkerPlacement& p : marker.placements)
     names.insert(layer_of(pattern.pieces[static_cast<size_t>(p.piece)]));
-  std::vector<DxfLayer> layers = {{"FABRIC", 5}};
+  std::vector<io::DxfLayer> layers = {{"FABRIC", 5}};
   for (const std::string& name : names)
     layers.push_back({name, 1 + static_cast<int>(layers.size() - 1) % 7});
   const double w = marker.width, l = marker.length;
-  DxfGroups g(out);
+  io::DxfGroups g(out);
   g.header(Eigen::AlignedBox2d(Eigen::Vector2d::Zero(), Eigen::Vector2d(l, w)));
   g.tables(layers, 0.01 * w);
   g(0, "SECTION")(2, "ENTITIES");
@@ -36,4 +36,4 @@ void write_marker_dxf(std::ostream& out, const Marker& marker, const Pattern& pa
   g(0, "ENDSEC")(0, "EOF");
 }
 
-}  // namespace qd
+}  // namespace qd::marker

@@ -7,8 +7,8 @@
 
 #include "marker.h"
 
-namespace qd {
+namespace qd::marker {
 
-void write_marker_dxf(std::ostream& out, const Marker& marker, const Pattern& pattern);
+void write_marker_dxf(std::ostream& out, const Marker& marker, const flatten::Pattern& pattern);
 
-}  // namespace qd
+}  // namespace qd::marker

@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
-namespace qd {
+namespace qd::marker {
 
 namespace {
 
-MarkerPlacement item(const Pattern& pattern, int index, bool mirrored) {
-  const PatternPiece& piece = pattern.pieces[static_cast<size_t>(index)];
+MarkerPlacement item(const flatten::Pattern& pattern, int index, bool mirrored) {
+  const flatten::PatternPiece& piece = pattern.pieces[static_cast<size_t>(index)];
   const Eigen::Vector2d flip(mirrored ? -1 : 1, 1);
   const Eigen::Vector2d grain = piece.grain.cwiseProduct(flip);
   MarkerPlacement p;
@@ -24,10 +24,10 @@ MarkerPlacement item(const Pattern& pattern, int index, bool mirrored) {
 
 }  // namespace
 
-std::vector<MarkerPlacement> marker_items(const Pattern& pattern) {
+std::vector<MarkerPlacement> marker_items(const flatten::Pattern& pattern) {
   std::vector<MarkerPlacement> items;
   for (int i = 0; i < static_cast<int>(pattern.pieces.size()); ++i) {
-    const PatternPiece& piece = pattern.pieces[static_cast<size_t>(i)];
+    const flatten::PatternPiece& piece = pattern.pieces[static_cast<size_t>(i)];
     if (piece.cut_outlines.empty() || piece.cut_outlines.front().size() < 3) continue;
     for (int copy = 0; copy < piece.quantity; ++copy)
       items.push_back(item(pattern, i, copy < piece.mirrored));
@@ -40,4 +40,4 @@ void translate_placement(MarkerPlacement& p, const Eigen::Vector2d& d) {
   for (Eigen::Vector2d& q : p.outline) q += d;
 }
 
-}  // namespace qd
+}  // namespace qd::marker

@@ -7,13 +7,13 @@
 
 #include "marker.h"
 
-namespace qd {
+namespace qd::marker {
 
 // One copy of a piece before placement: its cut line (the outer loop) mirrored and turned,
 // as a placement with a zero offset.
-std::vector<MarkerPlacement> marker_items(const Pattern& pattern);
+std::vector<MarkerPlacement> marker_items(const flatten::Pattern& pattern);
 
 // Moves a placement by d.
 void translate_placement(MarkerPlacement& p, const Eigen::Vector2d& d);
 
-}  // namespace qd
+}  // namespace qd::marker

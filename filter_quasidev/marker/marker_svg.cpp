@@ -5,7 +5,7 @@
 
 #include "io/xml_text.h"
 
-namespace qd {
+namespace qd::marker {
 
 namespace {
 
@@ -13,7 +13,7 @@ constexpr double kMargin = 0.02, kStroke = 0.002, kFont = 0.03;  // of the fabri
 
 }  // namespace
 
-void write_marker_svg(std::ostream& out, const Marker& marker, const Pattern& pattern) {
+void write_marker_svg(std::ostream& out, const Marker& marker, const flatten::Pattern& pattern) {
   const std::locale previous = out.imbue(std::locale::classic());
   out.precision(8);
   const double margin = kMargin * marker.width;
@@ -32,8 +32,8 @@ void write_marker_svg(std::ostream& out, const Marker& marker, const Pattern& pa
       << "<rect id=\"fabric\" x=\"" << margin << "\" y=\"" << margin << "\" width=\""
       << marker.length << "\" height=\"" << marker.width << "\" stroke=\"blue\"/>\n";
   for (const MarkerPlacement& p : marker.placements) {
-    const std::string label =
-        xml_escaped(pattern.pieces[static_cast<size_t>(p.piece)].label) + (p.mirrored ? "m" : "");
+    const std::string label = io::xml_escaped(pattern.pieces[static_cast<size_t>(p.piece)].label) +
+                              (p.mirrored ? "m" : "");
     Eigen::Vector2d centre = Eigen::Vector2d::Zero();
     out << "<g class=\"piece\" id=\"piece-" << label << "\">\n<path d=\"";
     for (size_t i = 0; i < p.outline.size(); ++i) {
@@ -47,4 +47,4 @@ void write_marker_svg(std::ostream& out, const Marker& marker, const Pattern& pa
   out.imbue(previous);
 }
 
-}  // namespace qd
+}  // namespace qd::marker

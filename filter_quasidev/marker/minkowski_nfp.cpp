@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace qd {
+namespace qd::marker {
 
 namespace {
 
@@ -36,4 +36,4 @@ ClipperLib::Path no_fit_polygon(const ClipperLib::Path& stationary, const Clippe
   return outer;
 }
 
-}  // namespace qd
+}  // namespace qd::marker

@@ -6,7 +6,7 @@
 
 #include <polyclipping/clipper.hpp>
 
-namespace qd {
+namespace qd::marker {
 
 // stationary, orbiter: simple polygons in Clipper's integer coordinates, either orientation, a
 // repeated closing point allowed. The orbiter's point `reference` (in the orbiter's current
@@ -17,4 +17,4 @@ namespace qd {
 ClipperLib::Path no_fit_polygon(const ClipperLib::Path& stationary, const ClipperLib::Path& orbiter,
                                 const ClipperLib::IntPoint& reference);
 
-}  // namespace qd
+}  // namespace qd::marker

@@ -9,7 +9,7 @@
 #include "libnest2d_nfp.h"
 #include "marker_items.h"
 
-namespace qd {
+namespace qd::marker {
 
 namespace {
 
@@ -78,7 +78,7 @@ ln::NfpPlacer::Config placer_config(const ln::Box& bin) {
 
 }  // namespace
 
-Marker nest_marker(const Pattern& pattern, double width, double gap) {
+Marker nest_marker(const flatten::Pattern& pattern, double width, double gap) {
   Marker marker;
   marker.width = width;
   std::vector<MarkerPlacement> placements = marker_items(pattern);
@@ -130,4 +130,4 @@ Marker nest_marker(const Pattern& pattern, double width, double gap) {
   return marker;
 }
 
-}  // namespace qd
+}  // namespace qd::marker

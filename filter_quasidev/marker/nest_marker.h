@@ -11,10 +11,10 @@
 
 #include "marker.h"
 
-namespace qd {
+namespace qd::marker {
 
 // width: the fabric's width (> 0); gap: the space left between pieces and from the selvages
 // (>= 0). Pieces wider than the fabric (less the gap) are listed in Marker::unplaced.
-Marker nest_marker(const Pattern& pattern, double width, double gap);
+Marker nest_marker(const flatten::Pattern& pattern, double width, double gap);
 
-}  // namespace qd
+}  // namespace qd::marker

@@ -5,19 +5,19 @@
 #include "flatten/outline_measures.h"
 #include "marker_items.h"
 
-namespace qd {
+namespace qd::marker {
 
-Marker row_marker(const Pattern& pattern, double width, double gap) {
+Marker row_marker(const flatten::Pattern& pattern, double width, double gap) {
   Marker marker;
   marker.width = width;
   std::vector<MarkerPlacement> items = marker_items(pattern);
-  std::stable_sort(items.begin(), items.end(),
-                   [](const MarkerPlacement& a, const MarkerPlacement& b) {
-                     return loop_box(a.outline).sizes().x() > loop_box(b.outline).sizes().x();
-                   });
+  std::stable_sort(
+      items.begin(), items.end(), [](const MarkerPlacement& a, const MarkerPlacement& b) {
+        return flatten::loop_box(a.outline).sizes().x() > flatten::loop_box(b.outline).sizes().x();
+      });
   double row_x = 0, row_length = 0, y = 0;
   for (MarkerPlacement& p : items) {
-    const Eigen::AlignedBox2d box = loop_box(p.outline);
+    const Eigen::AlignedBox2d box = flatten::loop_box(p.outline);
     if (box.sizes().y() > width) {
       note_unplaced(marker, pattern.pieces[static_cast<size_t>(p.piece)].label);
       continue;
@@ -36,4 +36,4 @@ Marker row_marker(const Pattern& pattern, double width, double gap) {
   return marker;
 }
 
-}  // namespace qd
+}  // namespace qd::marker

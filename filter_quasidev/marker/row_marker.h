@@ -6,9 +6,9 @@
 
 #include "marker.h"
 
-namespace qd {
+namespace qd::marker {
 
 // width: the fabric's width (> 0); gap: the space left between pieces and rows.
-Marker row_marker(const Pattern& pattern, double width, double gap);
+Marker row_marker(const flatten::Pattern& pattern, double width, double gap);
 
-}  // namespace qd
+}  // namespace qd::marker

@@ -23,13 +23,13 @@ qd::params::Value declared_value(const qd::params::ParamInfo& p, const ParamValu
   if (p.type == Type::Choice) {
     const long k = std::lround(v);
     if (k < 0 || k >= static_cast<long>(p.choices.size()))
-      throw qd::Error(parameter_title(p) + " has no value number " + number_text(v));
+      throw qd::common::Error(parameter_title(p) + " has no value number " + number_text(v));
     return p.choices[static_cast<std::size_t>(k)];
   }
   if (p.type == Type::Real || p.type == Type::Integer) {
     const std::string wrong = qd::params::range_violation(p.range, v);
     if (!wrong.empty())
-      throw qd::Error(parameter_title(p) + " " + wrong + ", got " + number_text(v));
+      throw qd::common::Error(parameter_title(p) + " " + wrong + ", got " + number_text(v));
   }
   return v;
 }

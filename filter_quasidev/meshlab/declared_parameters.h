@@ -25,14 +25,14 @@ std::vector<qd::params::ParamInfo> filter_parameters(
 int choice_index(const qd::params::ParamInfo& p, const std::string& value);
 
 // The declared value of p from MeshLab's (a Choice's enum index becomes its name); throws
-// qd::Error naming p when the value is out of p's range or not one of its choices.
+// qd::common::Error naming p when the value is out of p's range or not one of its choices.
 qd::params::Value declared_value(const qd::params::ParamInfo& p, const ParamValue& given);
 
 // "Label (name)", how a message names parameter p.
 std::string parameter_title(const qd::params::ParamInfo& p);
 
-// The settings from `values` (a parameter missing there keeps its default); throws qd::Error
-// naming the first bad parameter.
+// The settings from `values` (a parameter missing there keeps its default); throws
+// qd::common::Error naming the first bad parameter.
 template <typename S>
 S declared_settings(const std::vector<qd::params::Param<S>>& declared, const ParamValues& values) {
   S settings;
@@ -42,7 +42,7 @@ S declared_settings(const std::vector<qd::params::Param<S>>& declared, const Par
     try {
       p.set(settings, declared_value(p, it->second));
     } catch (const qd::params::ParamError& e) {
-      throw qd::Error(parameter_title(p) + " " + e.what());
+      throw qd::common::Error(parameter_title(p) + " " + e.what());
     }
   }
   return settings;
@@ -56,7 +56,7 @@ FilterRun run_declared(const std::vector<qd::params::Param<S>>& declared, const 
   S settings;
   try {
     settings = declared_settings(declared, values);
-  } catch (const qd::Error& e) {
+  } catch (const qd::common::Error& e) {
     FilterRun refused;
     refused.error = e.what();
     return refused;

@@ -9,7 +9,7 @@
 
 namespace qdml {
 
-EngineMesh read_geometry(const CMeshO& m, qd::Positions& V, qd::Triangles& F) {
+EngineMesh read_geometry(const CMeshO& m, qd::common::Positions& V, qd::common::Triangles& F) {
   EngineMesh e;
   std::vector<int> compact(m.vert.size(), -1);
   for (std::size_t i = 0; i < m.vert.size(); ++i)
@@ -42,7 +42,7 @@ std::vector<int> read_patch_ids(const CMeshO& m, const EngineMesh& e, bool has_f
   for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
     const double q = static_cast<double>(m.face[e.face_slot[f]].cQ());
     if (!std::isfinite(q) || std::fabs(q) > std::numeric_limits<int>::max())
-      throw qd::Error(
+      throw qd::common::Error(
           format("face %zu has per-face quality %g, which is not a patch id: set the "
                  "per-face quality to an integer patch id per face",
                  f, q));
@@ -53,7 +53,7 @@ std::vector<int> read_patch_ids(const CMeshO& m, const EngineMesh& e, bool has_f
   return patch;
 }
 
-qd::Progress progress_of(vcg::CallBackPos* cb) {
+qd::common::Progress progress_of(vcg::CallBackPos* cb) {
   return [cb](int percent, const std::string& message) {
     if (cb) cb(percent, message.c_str());
   };

@@ -1,7 +1,7 @@
 // What every adapter hands the engine from MeshLab, one source for each MeshLab generation: the
-// live (not deleted) vertices and faces of a CMeshO as qd::Positions / qd::Triangles, where each
-// lives in m.vert / m.face (so results are written back in place), the patch id per face, and
-// MeshLab's progress callback as the engine's.
+// live (not deleted) vertices and faces of a CMeshO as qd::common::Positions /
+// qd::common::Triangles, where each lives in m.vert / m.face (so results are written back in
+// place), the patch id per face, and MeshLab's progress callback as the engine's.
 #pragma once
 
 #include <string>
@@ -24,11 +24,11 @@ struct EngineMesh {
 };
 
 // The one CMeshO -> engine copy: the live vertices and faces straight into V and F.
-EngineMesh read_geometry(const CMeshO& m, qd::Positions& V, qd::Triangles& F);
+EngineMesh read_geometry(const CMeshO& m, qd::common::Positions& V, qd::common::Triangles& F);
 
 // Patch id per engine face = the per-face quality rounded to the nearest integer, when the mesh
 // has per-face quality and use_patches; else empty (the whole mesh is one patch). Says which in
-// `log`. Throws qd::Error for a quality that is not a number or too large for a patch id.
+// `log`. Throws qd::common::Error for a quality that is not a number or too large for a patch id.
 std::vector<int> read_patch_ids(const CMeshO& m, const EngineMesh& e, bool has_face_quality,
                                 bool use_patches, std::vector<std::string>& log);
 
@@ -48,6 +48,6 @@ std::vector<char> read_selected(const Elements& elements, const std::vector<std:
 }
 
 // The engine's progress reports passed on to cb (which may be null).
-qd::Progress progress_of(vcg::CallBackPos* cb);
+qd::common::Progress progress_of(vcg::CallBackPos* cb);
 
 }  // namespace qdml

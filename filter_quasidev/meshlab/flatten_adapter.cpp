@@ -21,7 +21,7 @@ namespace {
 // Writes the engine's texture coordinates, stretch and its colour on every live face of m,
 // enabling m's per-wedge texture coordinates, face quality and face colour first. Touches
 // nothing else.
-void write_back(CMeshO& m, const EngineMesh& e, const qd::FlattenResult& r) {
+void write_back(CMeshO& m, const EngineMesh& e, const qd::flatten::FlattenResult& r) {
   using Quality = CMeshO::FaceType::QualityType;
   using TexScalar = CMeshO::FaceType::TexCoordType::ScalarType;
   if (static_cast<std::size_t>(r.uv.rows()) != e.face_slot.size() ||
@@ -30,7 +30,7 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::FlattenResult& r) {
   if (!m.face.IsWedgeTexCoordEnabled()) m.face.EnableWedgeTexCoord();
   if (!m.face.IsQualityEnabled()) m.face.EnableQuality();
   if (!m.face.IsColorEnabled()) m.face.EnableColor();
-  const qd::QualityRange range = qd::stretch_ramp_range(r.stretch);
+  const qd::common::QualityRange range = qd::flatten::stretch_ramp_range(r.stretch);
   for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
     CMeshO::FaceType& face = m.face[e.face_slot[f]];
     const auto row = static_cast<Eigen::Index>(f);
@@ -40,17 +40,17 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::FlattenResult& r) {
       face.WT(k).N() = 0;
     }
     face.Q() = static_cast<Quality>(r.stretch[f]);
-    const std::array<unsigned char, 3> c = qd::ramp_color(r.stretch[f], range);
+    const std::array<unsigned char, 3> c = qd::common::ramp_color(r.stretch[f], range);
     face.C() = vcg::Color4b(c[0], c[1], c[2], 255);
   }
 }
 
 // The pattern files asked for, staged (written beside their targets, not yet in place).
-std::vector<std::unique_ptr<qd::meshio::PendingFile>> stage_pattern(
-    const qd::FlattenResult& r, const qd::params::FlattenSettings& s) {
-  std::vector<std::unique_ptr<qd::meshio::PendingFile>> files;
-  for (const auto& [path, bytes] : qd::pattern_files(s, r.pattern))
-    files.push_back(std::make_unique<qd::meshio::PendingFile>(path, bytes));
+std::vector<std::unique_ptr<qd::io::PendingFile>> stage_pattern(
+    const qd::flatten::FlattenResult& r, const qd::params::FlattenSettings& s) {
+  std::vector<std::unique_ptr<qd::io::PendingFile>> files;
+  for (const auto& [path, bytes] : qd::io::pattern_files(s, r.pattern))
+    files.push_back(std::make_unique<qd::io::PendingFile>(path, bytes));
   return files;
 }
 
@@ -90,12 +90,12 @@ FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::
 
 FlattenOutcome apply_flatten(CMeshO& m, bool has_face_quality, const qd::params::FlattenSettings& s,
                              vcg::CallBackPos* cb) {
-  return guarded_run<qd::FlattenResult>([&](FlattenOutcome& out) {
-    qd::FlattenProblem problem;
+  return guarded_run<qd::flatten::FlattenResult>([&](FlattenOutcome& out) {
+    qd::flatten::FlattenProblem problem;
     const EngineMesh e = read_geometry(m, problem.V, problem.F);
     problem.patch = read_patch_ids(m, e, has_face_quality, true, out.log);
     problem.params = s.engine;
-    out.result = qd::flatten(problem, progress_of(cb));
+    out.result = qd::flatten::flatten(problem, progress_of(cb));
     const auto files = stage_pattern(out.result, s);
     for (const auto& file : files) file->commit();
     write_back(m, e, out.result);

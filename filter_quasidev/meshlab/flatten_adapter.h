@@ -1,8 +1,9 @@
 // The shared MeshLab adapter of the flattening (core/flatten): one source for every MeshLab
 // generation, compiled once per plugin variant against its CMeshO. It holds the filter's entry
 // in filter_table() (texts, parameters from params/flatten_params.h, figures), the conversion
-// CMeshO -> qd::FlattenProblem and the write-back of qd::FlattenResult. No numerics (the engine
-// does them) and no plugin-API types (the per-generation plugin files map them).
+// CMeshO -> qd::flatten::FlattenProblem and the write-back of qd::flatten::FlattenResult. No
+// numerics (the engine does them) and no plugin-API types (the per-generation plugin files map
+// them).
 #pragma once
 
 #include <string>
@@ -18,7 +19,7 @@ namespace qdml {
 // The filter's entry in filter_table().
 FilterSpec flatten_filter();
 
-using FlattenOutcome = RunOutcome<qd::FlattenResult>;
+using FlattenOutcome = RunOutcome<qd::flatten::FlattenResult>;
 
 // Reads m (positions, faces; patch id per face = rounded per-face quality when has_face_quality,
 // else one patch; deleted elements skipped), flattens it, writes the pattern files asked for

@@ -2,8 +2,8 @@
 
 namespace qdml {
 
-std::map<std::string, Figure> flatten_figures(const qd::FlattenResult& r) {
-  using P = qd::PieceReport;
+std::map<std::string, Figure> flatten_figures(const qd::flatten::FlattenResult& r) {
+  using P = qd::flatten::PieceReport;
   const Eigen::AlignedBox2d& sheet = r.pattern.bounds;
   return {
       {"pieces", static_cast<int>(r.pieces.size())},

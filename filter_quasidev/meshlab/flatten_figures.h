@@ -12,6 +12,6 @@
 
 namespace qdml {
 
-std::map<std::string, Figure> flatten_figures(const qd::FlattenResult& r);
+std::map<std::string, Figure> flatten_figures(const qd::flatten::FlattenResult& r);
 
 }  // namespace qdml

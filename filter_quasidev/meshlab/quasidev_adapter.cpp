@@ -40,13 +40,14 @@ std::size_t count_selected(const std::vector<char>& constrained) {
 }
 
 // Average edge length AE of the live mesh (0 for a mesh without faces).
-double average_edge(const qd::Problem& p) {
-  return p.F.rows() > 0 ? qd::average_edge_length(p.V, p.F) : 0.0;
+double average_edge(const qd::approximate::Problem& p) {
+  return p.F.rows() > 0 ? qd::common::average_edge_length(p.V, p.F) : 0.0;
 }
 
 // Writes the engine's positions, per-vertex quality and (optionally) colours into m, then
 // refreshes normals and the bounding box. Touches nothing else.
-void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Settings& s) {
+void write_back(CMeshO& m, const EngineMesh& e, const qd::approximate::Result& r,
+                const Settings& s) {
   using Scalar = CMeshO::ScalarType;
   using Quality = CMeshO::VertexType::QualityType;
   const std::vector<double>& quality =
@@ -54,7 +55,7 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Setti
   if (static_cast<std::size_t>(r.V.rows()) != e.vertex_slot.size() ||
       quality.size() != e.vertex_slot.size())
     throw std::logic_error("the engine returned a result of the wrong size");
-  const qd::QualityRange range = qd::robust_quality_range(quality);
+  const qd::common::QualityRange range = qd::common::robust_quality_range(quality);
   for (std::size_t i = 0; i < e.vertex_slot.size(); ++i) {
     CMeshO::VertexType& v = m.vert[e.vertex_slot[i]];
     const auto row = static_cast<Eigen::Index>(i);
@@ -62,7 +63,7 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Setti
                               static_cast<Scalar>(r.V(row, 2)));
     v.Q() = static_cast<Quality>(quality[i]);
     if (s.colorize) {
-      const std::array<unsigned char, 3> c = qd::ramp_color(quality[i], range);
+      const std::array<unsigned char, 3> c = qd::common::ramp_color(quality[i], range);
       v.C() = vcg::Color4b(c[0], c[1], c[2], 255);
     }
   }
@@ -75,19 +76,20 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::Result& r, const Setti
 // in `log`. The mesh is validated before the parameters (with a placeholder tolerance): a
 // tolerance derived from a broken mesh (NaN coordinates give a NaN AE) would otherwise hide
 // what is really wrong.
-qd::Problem make_problem(const CMeshO& m, bool has_face_quality, const Settings& s,
-                         std::vector<std::string>& log, EngineMesh& e) {
-  qd::Problem problem;
+qd::approximate::Problem make_problem(const CMeshO& m, bool has_face_quality, const Settings& s,
+                                      std::vector<std::string>& log, EngineMesh& e) {
+  qd::approximate::Problem problem;
   e = read_geometry(m, problem.V, problem.F);
   problem.patch = read_patch_ids(m, e, has_face_quality, s.use_patches, log);
   problem.constrained = read_selected(m.vert, e.vertex_slot);
   problem.params = s.engine;
   problem.params.tolerance = 1;
-  qd::validate(problem);
+  qd::approximate::validate(problem);
   try {
     problem.params = qd::params::engine_params(s, average_edge(problem), problem.patch);
   } catch (const qd::params::ParamError& error) {
-    throw qd::Error("Per-patch tolerance (AE) (patch_tolerance_ae) " + std::string(error.what()));
+    throw qd::common::Error("Per-patch tolerance (AE) (patch_tolerance_ae) " +
+                            std::string(error.what()));
   }
   log.push_back(format("%zu selected vertices kept fixed; tolerance %g model units",
                        count_selected(problem.constrained), problem.params.tolerance));
@@ -131,7 +133,7 @@ FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::
 }  // namespace
 
 std::vector<qd::params::ParamInfo> approximate_parameters(const CMeshO& m) {
-  qd::Problem geometry;
+  qd::approximate::Problem geometry;
   read_geometry(m, geometry.V, geometry.F);
   const std::string ae = format(" This mesh: AE = %g model units.", average_edge(geometry));
   std::vector<qd::params::ParamInfo> parameters =
@@ -142,10 +144,10 @@ std::vector<qd::params::ParamInfo> approximate_parameters(const CMeshO& m) {
 }
 
 Outcome apply(CMeshO& m, bool has_face_quality, const Settings& s, vcg::CallBackPos* cb) {
-  return guarded_run<qd::Result>([&](Outcome& out) {
+  return guarded_run<qd::approximate::Result>([&](Outcome& out) {
     EngineMesh e;
-    const qd::Problem problem = make_problem(m, has_face_quality, s, out.log, e);
-    out.result = qd::approximate(problem, progress_of(cb), label_setting);
+    const qd::approximate::Problem problem = make_problem(m, has_face_quality, s, out.log, e);
+    out.result = qd::approximate::approximate(problem, progress_of(cb), label_setting);
     write_back(m, e, out.result, s);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
   });

@@ -1,9 +1,10 @@
 // The shared MeshLab adapter of the quasi-developable approximation: one source for every MeshLab
 // generation (compiled once per plugin variant against that variant's CMeshO: 2020.09 float,
 // 2025.07 float, 2025.07d double). It holds the filter's entry in filter_table() (texts,
-// parameters from params/approximate_params.h, figures), the conversion CMeshO <-> qd::Problem /
-// qd::Result and the write-back. No numerics (the engine does them) and no plugin-API types (the
-// per-generation plugin files map RichParameterList, logging and error reporting).
+// parameters from params/approximate_params.h, figures), the conversion CMeshO <->
+// qd::approximate::Problem / qd::approximate::Result and the write-back. No numerics (the engine
+// does them) and no plugin-API types (the per-generation plugin files map RichParameterList,
+// logging and error reporting).
 #pragma once
 
 #include <string>
@@ -24,7 +25,7 @@ FilterSpec approximate_filter();
 // edge length AE.
 std::vector<qd::params::ParamInfo> approximate_parameters(const CMeshO& m);
 
-using Outcome = RunOutcome<qd::Result>;
+using Outcome = RunOutcome<qd::approximate::Result>;
 
 // Reads m (positions, faces; patch id per face = rounded per-face quality when has_face_quality
 // and s.use_patches, else one patch; constrained = selected vertices; deleted elements skipped),

@@ -1,4 +1,4 @@
-// The figures of a qd::Result as the filter returns them (see result_figures.h).
+// The figures of a qd::approximate::Result as the filter returns them (see result_figures.h).
 #include "result_figures.h"
 
 #include <algorithm>
@@ -9,15 +9,15 @@ namespace {
 
 // The developability term a patch used, as the index of that value of the parameter
 // "developability" (curve 0, defect 1, both 2); -1 when the patch was left unchanged.
-int developability_code(const qd::PatchReport& p) {
+int developability_code(const qd::approximate::PatchReport& p) {
   switch (p.developability) {
-    case qd::Term::Curve:
+    case qd::approximate::Term::Curve:
       return 0;
-    case qd::Term::Defect:
+    case qd::approximate::Term::Defect:
       return 1;
-    case qd::Term::Both:
+    case qd::approximate::Term::Both:
       return 2;
-    case qd::Term::None:
+    case qd::approximate::Term::None:
       break;
   }
   return -1;
@@ -25,15 +25,16 @@ int developability_code(const qd::PatchReport& p) {
 
 }  // namespace
 
-std::map<std::string, Figure> result_figures(const qd::Result& r) {
-  const qd::Figures& before = r.total_before;
-  const qd::Figures& after = r.total_after;
+std::map<std::string, Figure> result_figures(const qd::approximate::Result& r) {
+  const qd::common::Figures& before = r.total_before;
+  const qd::common::Figures& after = r.total_after;
   int iterations = 0;
-  for (const qd::PatchReport& p : r.patches) iterations = std::max(iterations, p.iterations);
+  for (const qd::approximate::PatchReport& p : r.patches)
+    iterations = std::max(iterations, p.iterations);
   // Eq. (20) over the whole run; both OBDs are measured against the initial targets.
   const double obd_reduction = before.obd > 0 ? 100.0 * (before.obd - after.obd) / before.obd : 0.0;
   const double ae = r.average_edge;
-  using P = qd::PatchReport;
+  using P = qd::approximate::PatchReport;
   return {
       {"abd_reduction", r.abd_reduction},
       {"obd_reduction", obd_reduction},

@@ -12,6 +12,6 @@
 
 namespace qdml {
 
-std::map<std::string, Figure> result_figures(const qd::Result& r);
+std::map<std::string, Figure> result_figures(const qd::approximate::Result& r);
 
 }  // namespace qdml

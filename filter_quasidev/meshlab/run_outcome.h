@@ -1,7 +1,7 @@
 // What one run of an adapter returns, and the two steps every adapter's run shares: running its
-// job with whatever it throws turned into the message the user reads (the engine's qd::Error
-// verbatim, running out of memory with what to try, anything else as an internal error to
-// report), and handing the outcome to the filter table as a FilterRun.
+// job with whatever it throws turned into the message the user reads (the engine's
+// qd::common::Error verbatim, running out of memory with what to try, anything else as an internal
+// error to report), and handing the outcome to the filter table as a FilterRun.
 #pragma once
 
 #include <exception>
@@ -30,7 +30,7 @@ RunOutcome<Result> guarded_run(Job&& job) {
   try {
     job(out);
     out.ok = true;
-  } catch (const qd::Error& error) {
+  } catch (const qd::common::Error& error) {
     out.error = error.what();
   } catch (const std::bad_alloc&) {
     out.error = "out of memory: try a smaller mesh or split it into smaller patches";

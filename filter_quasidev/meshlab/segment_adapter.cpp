@@ -17,7 +17,7 @@ namespace qdml {
 namespace {
 
 // Enables per-face quality and colour if needed, then writes the patch id and its colour.
-void write_back(CMeshO& m, const EngineMesh& e, const qd::SegmentResult& r) {
+void write_back(CMeshO& m, const EngineMesh& e, const qd::segment::SegmentResult& r) {
   if (r.patch.size() != e.face_slot.size())
     throw std::logic_error("the segmentation returned a result of the wrong size");
   if (!m.face.IsQualityEnabled()) m.face.EnableQuality();
@@ -25,7 +25,7 @@ void write_back(CMeshO& m, const EngineMesh& e, const qd::SegmentResult& r) {
   for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
     CMeshO::FaceType& face = m.face[e.face_slot[f]];
     face.Q() = static_cast<CMeshO::FaceType::QualityType>(r.patch[f]);
-    const std::array<unsigned char, 3> c = qd::patch_color(r.patch[f]);
+    const std::array<unsigned char, 3> c = qd::segment::patch_color(r.patch[f]);
     face.C() = vcg::Color4b(c[0], c[1], c[2], 255);
   }
 }
@@ -62,8 +62,8 @@ FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::
 
 SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const qd::params::SegmentSettings& s,
                              vcg::CallBackPos* cb) {
-  return guarded_run<qd::SegmentResult>([&](SegmentOutcome& out) {
-    qd::SegmentProblem problem;
+  return guarded_run<qd::segment::SegmentResult>([&](SegmentOutcome& out) {
+    qd::segment::SegmentProblem problem;
     const EngineMesh e = read_geometry(m, problem.V, problem.F);
     if (s.keep_patches) problem.patch = read_patch_ids(m, e, has_face_quality, true, out.log);
     if (s.selection_border) problem.selected = read_selected(m.face, e.face_slot);
@@ -72,7 +72,7 @@ SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const qd::params:
                                static_cast<std::size_t>(std::count(problem.selected.begin(),
                                                                    problem.selected.end(), 1))));
     problem.params = s.engine;
-    out.result = qd::segment(problem, progress_of(cb));
+    out.result = qd::segment::segment(problem, progress_of(cb));
     write_back(m, e, out.result);
     out.log.insert(out.log.end(), out.result.log.begin(), out.result.log.end());
   });

@@ -1,8 +1,8 @@
 // The MeshLab adapter of the segmentation into nearly developable patches (qd::segment), one
 // source for every MeshLab generation like quasidev_adapter.h: the filter's entry in
 // filter_table() (texts, classes, parameters from params/segment_params.h, figures), CMeshO ->
-// qd::SegmentProblem and the write-back of per-face quality = patch id and a colour per patch. No
-// numerics, no plugin-API types.
+// qd::segment::SegmentProblem and the write-back of per-face quality = patch id and a colour per
+// patch. No numerics, no plugin-API types.
 #pragma once
 
 #include <string>
@@ -19,7 +19,7 @@ namespace qdml {
 // compute_segmentation_quasi_developable.
 FilterSpec segment_filter();
 
-using SegmentOutcome = RunOutcome<qd::SegmentResult>;
+using SegmentOutcome = RunOutcome<qd::segment::SegmentResult>;
 
 // Reads m (live vertices and faces; patch ids from the per-face quality when has_face_quality
 // and s.keep_patches; selected faces when s.selection_border), runs the segmentation and ONLY on

@@ -5,14 +5,14 @@
 
 namespace qdml {
 
-std::map<std::string, Figure> segment_figures(const qd::SegmentResult& r) {
-  using P = qd::SegmentPatch;
+std::map<std::string, Figure> segment_figures(const qd::segment::SegmentResult& r) {
+  using P = qd::segment::SegmentPatch;
   double worst = 0;
   int disks = 0, over = 0;
   for (const P& p : r.patches) {
     worst = std::max(worst, p.max_error_deg);
     disks += p.disk ? 1 : 0;
-    over += p.over_limit != qd::OverLimit::No ? 1 : 0;
+    over += p.over_limit != qd::segment::OverLimit::No ? 1 : 0;
   }
   return {
       {"patches", static_cast<int>(r.patches.size())},
@@ -30,7 +30,7 @@ std::map<std::string, Figure> segment_figures(const qd::SegmentResult& r) {
       {"patch_disk", figure_list(r.patches, [](const P& p) { return p.disk ? 1 : 0; })},
       {"patch_over_limit",
        figure_list(r.patches,
-                   [](const P& p) { return p.over_limit != qd::OverLimit::No ? 1 : 0; })},
+                   [](const P& p) { return p.over_limit != qd::segment::OverLimit::No ? 1 : 0; })},
   };
 }
 

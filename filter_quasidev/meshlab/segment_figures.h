@@ -12,6 +12,6 @@
 
 namespace qdml {
 
-std::map<std::string, Figure> segment_figures(const qd::SegmentResult& r);
+std::map<std::string, Figure> segment_figures(const qd::segment::SegmentResult& r);
 
 }  // namespace qdml

@@ -1,5 +1,5 @@
-// The approximation's parameters, in the MeshLab dialog's order. Defaults: qd::Params and
-// ApproximateSettings.
+// The approximation's parameters, in the MeshLab dialog's order. Defaults: qd::approximate::Params
+// and ApproximateSettings.
 #include "approximate_params.h"
 
 #include <sstream>
@@ -17,7 +17,7 @@ using S = ApproximateSettings;
 std::string solver_help() {
   return "The sparse Cholesky back end: cholmod (SuiteSparse's supernodal), eigen-llt or "
          "eigen-ldlt (Eigen's simplicial), or auto (eigen-ldlt below " +
-         std::to_string(kCholmodFromUnknowns) +
+         std::to_string(common::kCholmodFromUnknowns) +
          " unknowns per patch, else cholmod); the result is the same. Patches with angle-defect "
          "rows solve their quasi-definite system by LDLT: our supernodal one (auto, cholmod) or "
          "Eigen's simplicial one (eigen-llt, eigen-ldlt).";
@@ -27,7 +27,8 @@ std::string method_help() {
   std::ostringstream out;
   out << "direct: factorise each patch's coupled system; iterative: conjugate gradients with two "
          "scalar factors, to a relative error of "
-      << kCgTolerance << "; auto: iterative from " << kIterativeFromUnknowns
+      << approximate::kCgTolerance << "; auto: iterative from "
+      << approximate::kIterativeFromUnknowns
       << " unknowns per patch. Patches with angle-defect rows are always factorised.";
   return out.str();
 }

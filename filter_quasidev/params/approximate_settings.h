@@ -13,6 +13,8 @@
 
 namespace qd::params {
 
+using approximate::Params;
+
 struct ApproximateSettings {
   Params engine;                             // tolerance and patch_tolerance: see engine_params()
   double tolerance_ae = 1.0;                 // δ_err in units of AE

@@ -9,6 +9,16 @@
 
 namespace qd::params {
 
+using approximate::ClampMode;
+using approximate::Developability;
+using approximate::SeamMode;
+using approximate::SegmentFirst;
+using approximate::SolveMethod;
+using approximate::SolverKind;
+using approximate::StopRule;
+using approximate::TargetMode;
+using approximate::ToleranceMode;
+
 enum class QualityKind { Curvature, Displacement };  // what the output's vertex quality holds
 enum class PatternUnit { Model, Millimetre, Centimetre, Inch };  // the model's length unit
 enum class DxfStyle { Plain, Aama };  // the DXF pattern's layout: plain R12, or AAMA/ASTM D6673

@@ -1,5 +1,5 @@
-// The flattening's parameters, in the MeshLab dialog's order. Defaults: qd::FlattenParams and
-// FlattenSettings.
+// The flattening's parameters, in the MeshLab dialog's order. Defaults: qd::flatten::FlattenParams
+// and FlattenSettings.
 #include "flatten_params.h"
 
 #include "declare.h"

@@ -9,6 +9,8 @@
 
 namespace qd::params {
 
+using flatten::FlattenParams;
+
 struct FlattenSettings {
   FlattenParams engine;
   std::string svg_file;  // "" = no SVG pattern

@@ -18,6 +18,8 @@
 
 namespace qd::params {
 
+using common::Error;
+
 // A value a parameter refuses (Text: bad syntax); the message says what is wrong but not the
 // parameter's name, which each front end writes in its own spelling.
 struct ParamError : Error {
@@ -81,7 +83,7 @@ template <typename S>
 struct Param : ParamInfo {
   std::function<Value(const S&)> get;
   // Stores a value of the parameter's type that lies in its range (Choice: one of its names).
-  // Text: parses it and throws ParamError (a qd::Error) on bad syntax.
+  // Text: parses it and throws ParamError (a qd::common::Error) on bad syntax.
   std::function<void(S&, const Value&)> set;
 
   // Builders for a declaration list.

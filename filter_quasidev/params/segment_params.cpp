@@ -1,5 +1,5 @@
-// The segmentation's parameters, in the MeshLab dialog's order. Defaults: qd::SegmentParams and
-// SegmentSettings.
+// The segmentation's parameters, in the MeshLab dialog's order. Defaults:
+// qd::segment::SegmentParams and SegmentSettings.
 #include "segment_params.h"
 
 #include "declare.h"

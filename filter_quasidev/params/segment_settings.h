@@ -6,6 +6,8 @@
 
 namespace qd::params {
 
+using segment::SegmentParams;
+
 struct SegmentSettings {
   SegmentParams engine;
   bool keep_patches = false;     // the input's patch ids are patches, kept where they fit

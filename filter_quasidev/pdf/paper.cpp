@@ -27,7 +27,7 @@ double points_per_unit(params::PatternUnit unit) {
     case params::PatternUnit::Model:
       break;
   }
-  throw Error("a printable PDF needs the model's length unit: pass --unit mm, cm or in");
+  throw common::Error("a printable PDF needs the model's length unit: pass --unit mm, cm or in");
 }
 
 }  // namespace qd::pdf

@@ -10,7 +10,7 @@ namespace qd::pdf {
 // Portrait `paper` with the default margin and overlap.
 PageSpec page_spec(params::Paper paper);
 
-// Points per model unit; throws qd::Error for PatternUnit::Model (no physical size).
+// Points per model unit; throws qd::common::Error for PatternUnit::Model (no physical size).
 double points_per_unit(params::PatternUnit unit);
 
 }  // namespace qd::pdf

@@ -39,8 +39,8 @@ struct View {
 void move_to(cairo_t* cr, const Eigen::Vector2d& p) { cairo_move_to(cr, p.x(), p.y()); }
 void line_to(cairo_t* cr, const Eigen::Vector2d& p) { cairo_line_to(cr, p.x(), p.y()); }
 
-void stroke_outlines(cairo_t* cr, const View& view, const std::vector<Outline>& outlines) {
-  for (const Outline& outline : outlines) {
+void stroke_outlines(cairo_t* cr, const View& view, const std::vector<flatten::Outline>& outlines) {
+  for (const flatten::Outline& outline : outlines) {
     for (std::size_t i = 0; i < outline.size(); ++i)
       (i == 0 ? move_to : line_to)(cr, view(outline[i]));
     cairo_close_path(cr);
@@ -78,7 +78,8 @@ void arrow(cairo_t* cr, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
 
 // One piece at true scale: cut lines solid, sew lines dashed where they differ, notches through
 // the allowance, grainline, label.
-void draw_piece(cairo_t* cr, const View& view, const PatternPiece& piece, const std::string& unit) {
+void draw_piece(cairo_t* cr, const View& view, const flatten::PatternPiece& piece,
+                const std::string& unit) {
   cairo_set_line_width(cr, kCutLine);
   stroke_outlines(cr, view, piece.cut_outlines);
   if (piece.cut_outlines != piece.outlines) {
@@ -89,16 +90,16 @@ void draw_piece(cairo_t* cr, const View& view, const PatternPiece& piece, const 
     cairo_set_dash(cr, nullptr, 0, 0);
   }
   cairo_set_line_width(cr, kCutLine);
-  for (const Notch& n : piece.notches) {
-    const Segment2 tick = notch_tick(n, kNotch / view.scale);
+  for (const flatten::Notch& n : piece.notches) {
+    const io::Segment2 tick = io::notch_tick(n, kNotch / view.scale);
     move_to(cr, view(tick.from));
     line_to(cr, view(tick.to));
   }
   cairo_stroke(cr);
   cairo_set_line_width(cr, kThinLine);
-  const Segment2 grain = grainline(piece);
+  const io::Segment2 grain = io::grainline(piece);
   if ((view(grain.to) - view(grain.from)).norm() > 20) arrow(cr, view(grain.from), view(grain.to));
-  const std::vector<std::string> lines = label_lines(piece, unit, "\u00d7");
+  const std::vector<std::string> lines = io::label_lines(piece, unit, "\u00d7");
   const Eigen::Vector2d at = view(piece.label_at);
   for (size_t i = 0; i < lines.size(); ++i)
     text(cr, lines[i], at.x() + 4,
@@ -120,7 +121,8 @@ std::string millimetres(double points, int decimals) {
 
 // Page 1: title, the whole pattern scaled into the space left above the test square, each
 // tile's rectangle with its name and page number, and the test square.
-void map_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const PageSpec& page) {
+void map_page(cairo_t* cr, const flatten::Pattern& pattern, const TileGrid& grid,
+              const PageSpec& page) {
   const double top = page.margin + 3 * kFont,
                bottom = page.height - page.margin - kTestSquare - 2 * kFont;
   const Eigen::AlignedBox2d& first = grid.tiles.front().area;
@@ -139,7 +141,8 @@ void map_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const P
            millimetres(page.overlap, 0) + " mm",
        page.margin, page.margin + kFont, kFont);
   cairo_set_line_width(cr, kThinLine);
-  for (const PatternPiece& piece : pattern.pieces) stroke_outlines(cr, view, piece.cut_outlines);
+  for (const flatten::PatternPiece& piece : pattern.pieces)
+    stroke_outlines(cr, view, piece.cut_outlines);
   cairo_set_source_rgb(cr, 0.2, 0.3, 0.8);
   for (std::size_t i = 0; i < grid.tiles.size(); ++i) {
     const Tile& tile = grid.tiles[i];
@@ -167,8 +170,8 @@ void map_page(cairo_t* cr, const Pattern& pattern, const TileGrid& grid, const P
 
 // Tile i: its share of the pattern clipped to the drawing area, the overlap borders (dashed)
 // with the neighbours' names in the margins, its name and page number.
-void tile_page(cairo_t* cr, const Pattern& pattern, const std::string& unit, const TileGrid& grid,
-               const PageSpec& page, std::size_t i) {
+void tile_page(cairo_t* cr, const flatten::Pattern& pattern, const std::string& unit,
+               const TileGrid& grid, const PageSpec& page, std::size_t i) {
   const Tile& tile = grid.tiles[i];
   const double left = page.margin, top = page.margin, right = page.width - page.margin,
                bottom = page.height - page.margin;
@@ -176,7 +179,7 @@ void tile_page(cairo_t* cr, const Pattern& pattern, const std::string& unit, con
   cairo_rectangle(cr, left, top, page.area_width(), page.area_height());
   cairo_clip(cr);
   const View view{{tile.area.min().x(), tile.area.max().y()}, {left, top}, grid.points_per_unit};
-  for (const PatternPiece& piece : pattern.pieces) draw_piece(cr, view, piece, unit);
+  for (const flatten::PatternPiece& piece : pattern.pieces) draw_piece(cr, view, piece, unit);
   cairo_restore(cr);
 
   cairo_set_source_rgb(cr, 0.5, 0.5, 0.5);
@@ -219,8 +222,8 @@ void tile_page(cairo_t* cr, const Pattern& pattern, const std::string& unit, con
 
 }  // namespace
 
-std::string pattern_pdf(const Pattern& pattern, const std::string& unit, const TileGrid& grid,
-                        const PageSpec& page) {
+std::string pattern_pdf(const flatten::Pattern& pattern, const std::string& unit,
+                        const TileGrid& grid, const PageSpec& page) {
   std::string bytes;
   {
     const Surface surface(
@@ -240,7 +243,7 @@ std::string pattern_pdf(const Pattern& pattern, const std::string& unit, const T
     cairo_surface_finish(surface.get());
     const cairo_status_t status = cairo_surface_status(surface.get());
     if (status != CAIRO_STATUS_SUCCESS)
-      throw Error(std::string("could not draw the PDF: ") + cairo_status_to_string(status));
+      throw common::Error(std::string("could not draw the PDF: ") + cairo_status_to_string(status));
   }
   return bytes;
 }

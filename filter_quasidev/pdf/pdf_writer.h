@@ -16,8 +16,8 @@ namespace qd::pdf {
 constexpr double kTestSquare = 50 * kPointsPerMm;  // the test square's side, pt
 
 // The PDF document's bytes; unit: the model's length unit for the pieces' sizes; grid =
-// tile_pages(pattern.bounds, ..., page). Throws qd::Error if cairo fails.
-std::string pattern_pdf(const Pattern& pattern, const std::string& unit, const TileGrid& grid,
-                        const PageSpec& page);
+// tile_pages(pattern.bounds, ..., page). Throws qd::common::Error if cairo fails.
+std::string pattern_pdf(const flatten::Pattern& pattern, const std::string& unit,
+                        const TileGrid& grid, const PageSpec& page);
 
 }  // namespace qd::pdf

@@ -7,12 +7,13 @@
 
 namespace qd::pdf {
 
-PrintablePdf printable_pdf(const Pattern& pattern, params::Paper paper, params::PatternUnit unit) {
+PrintablePdf printable_pdf(const flatten::Pattern& pattern, params::Paper paper,
+                           params::PatternUnit unit) {
   const PageSpec page = page_spec(paper);
   TileGrid grid = tile_pages(pattern.bounds, points_per_unit(unit), page);
   const size_t all = grid.tiles.size();
   std::vector<Eigen::AlignedBox2d> boxes;
-  for (const PatternPiece& piece : pattern.pieces) boxes.push_back(cut_box(piece));
+  for (const flatten::PatternPiece& piece : pattern.pieces) boxes.push_back(io::cut_box(piece));
   drop_empty_tiles(grid, boxes);
   const std::string pages = std::to_string(grid.tiles.size() + 1);
   const std::string layout = std::to_string(grid.tiles.size()) + " tiles of a " +
@@ -20,8 +21,8 @@ PrintablePdf printable_pdf(const Pattern& pattern, params::Paper paper, params::
                              " grid, " + std::to_string(all - grid.tiles.size()) +
                              " empty left out";
   if (grid.tiles.size() + 1 > kMaxPages)
-    throw Error("the printable PDF would take " + pages + " pages (" + layout +
-                "): is --unit the model's unit?");
+    throw common::Error("the printable PDF would take " + pages + " pages (" + layout +
+                        "): is --unit the model's unit?");
   return {pattern_pdf(pattern, name_of(params::kPatternUnits, unit), grid, page),
           "pdf: " + pages + " pages of " + params::name_of(params::kPapers, paper) +
               " (assembly map + " + layout + ")"};

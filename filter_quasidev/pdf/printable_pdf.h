@@ -17,7 +17,8 @@ struct PrintablePdf {
   std::string summary;  // "pdf: 7 pages of a4 (assembly map + 2 rows x 3 columns of tiles)"
 };
 
-// Throws qd::Error for PatternUnit::Model or when it would take more than kMaxPages pages.
-PrintablePdf printable_pdf(const Pattern& pattern, params::Paper paper, params::PatternUnit unit);
+// Throws qd::common::Error for PatternUnit::Model or when it would take more than kMaxPages pages.
+PrintablePdf printable_pdf(const flatten::Pattern& pattern, params::Paper paper,
+                           params::PatternUnit unit);
 
 }  // namespace qd::pdf

@@ -3,7 +3,7 @@
 #include "io/ply_mesh.h"
 #include "io/ply_reader.h"
 
-namespace qd::meshio::test {
+namespace qd::io::test {
 
 PlyProperty list(const std::string& name, ScalarType count_type, ScalarType type,
                  const std::vector<std::vector<double>>& lists) {
@@ -52,4 +52,4 @@ PlyTables sample_ply() {
 
 MeshDocument mesh_of(const std::string& bytes) { return parse_ply(bytes); }
 
-}  // namespace qd::meshio::test
+}  // namespace qd::io::test

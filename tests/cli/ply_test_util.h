@@ -7,7 +7,7 @@
 #include "io/mesh_document.h"
 #include "io/ply_tables.h"
 
-namespace qd::meshio::test {
+namespace qd::io::test {
 
 PlyProperty list(const std::string& name, ScalarType count_type, ScalarType type,
                  const std::vector<std::vector<double>>& lists);
@@ -19,7 +19,7 @@ PlyTables sample_ply();
 // The document of a PLY file's bytes (parse_ply).
 MeshDocument mesh_of(const std::string& bytes);
 
-// The message of the qd::Error that `f` throws ("" if it throws none).
+// The message of the qd::common::Error that `f` throws ("" if it throws none).
 template <typename F>
 std::string error_of(F f) {
   try {
@@ -30,4 +30,4 @@ std::string error_of(F f) {
   return "";
 }
 
-}  // namespace qd::meshio::test
+}  // namespace qd::io::test

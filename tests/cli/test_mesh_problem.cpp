@@ -9,13 +9,13 @@
 #include "ply_test_util.h"
 
 using namespace qd;
-using qd::meshio::test::error_of;
+using qd::io::test::error_of;
 
 namespace {
 
 // Unit square split along its diagonal: 5 edges, 4 of length 1 and one of √2.
-meshio::MeshDocument square() {
-  meshio::MeshDocument m;
+io::MeshDocument square() {
+  io::MeshDocument m;
   m.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   m.triangles = {{0, 1, 2}, {0, 2, 3}};
   m.patch = {4, 9};
@@ -30,7 +30,7 @@ cli::ApproximateOptions options(std::vector<std::string> args) {
 TEST(MeshProblem, TolerancesAreInUnitsOfTheAverageEdge) {
   cli::ApproximateOptions o = options({"a.ply", "b.ply", "--tolerance-ae", "0.5",
                                        "--patch-tolerance-ae", "9=2", "--max-iter", "4"});
-  const Problem p = cli::make_problem(square(), o);
+  const approximate::Problem p = cli::make_problem(square(), o);
   const double ae = (4 + std::sqrt(2.0)) / 5;
   EXPECT_NEAR(p.params.tolerance, 0.5 * ae, 1e-15);
   ASSERT_EQ(p.params.patch_tolerance.size(), 1u);
@@ -59,7 +59,7 @@ TEST(MeshProblem, ConstraintFileAddsToTheSelection) {
 }
 
 TEST(MeshProblem, DegenerateMeshIsRefused) {
-  meshio::MeshDocument m = square();
+  io::MeshDocument m = square();
   for (auto& p : m.positions) p = {1, 2, 3};
   const cli::ApproximateOptions o = options({"a.ply", "b.ply"});
   EXPECT_NE(error_of([&] { cli::make_problem(m, o); }).find("average edge length is 0"),

@@ -8,8 +8,8 @@
 #include "io/ply_reader.h"
 #include "ply_test_util.h"
 
-using namespace qd::meshio;
-using qd::meshio::test::error_of;
+using namespace qd::io;
+using qd::io::test::error_of;
 
 namespace {
 

@@ -103,8 +103,8 @@ TEST(Options, OlderSpellingsKeepWorking) {
           .approximate.settings;
   EXPECT_EQ(a.tolerance_ae, 0.5);
   EXPECT_EQ(a.patch_tolerance_ae, (std::map<int, double>{{-1, 3.0}, {2, 0.01}}));
-  EXPECT_EQ(a.engine.targets, qd::TargetMode::Refit);
-  EXPECT_EQ(a.engine.seams, qd::SeamMode::Free);
+  EXPECT_EQ(a.engine.targets, qd::approximate::TargetMode::Refit);
+  EXPECT_EQ(a.engine.seams, qd::approximate::SeamMode::Free);
   EXPECT_FALSE(a.engine.keep_boundary);
   EXPECT_EQ(a.output_quality, qd::params::QualityKind::Displacement);
   EXPECT_FALSE(a.colorize);

@@ -16,15 +16,17 @@
 #include "io/ply_writer.h"
 #include "ply_test_util.h"
 
-using namespace qd::meshio;
-using namespace qd::meshio::test;
+using namespace qd::io;
+using namespace qd::io::test;
 
 namespace {
+
+using namespace qd::common;
 
 // The output of `m` moved up by 0.1, with vertex quality 0.5 i and, if asked, colours.
 MeshDocument shifted(const MeshDocument& m, bool colors) {
   MeshDocument out = m;
-  qd::Positions V(static_cast<Eigen::Index>(m.positions.size()), 3);
+  qd::common::Positions V(static_cast<Eigen::Index>(m.positions.size()), 3);
   std::vector<double> quality;
   for (std::size_t i = 0; i < m.positions.size(); ++i) {
     const auto& p = m.positions[i];
@@ -85,7 +87,7 @@ TEST(OutputMesh, PerFaceFieldsReplaceTheirOwnAndKeepTheVertices) {
   const MeshDocument mesh = mesh_of(serialize_ply_tables(in, PlyFormat::BinaryLittleEndian));
   const std::size_t nf = mesh.triangles.size();
   MeshDocument written = mesh;
-  qd::WedgeUV uv(static_cast<Eigen::Index>(nf), 6);
+  qd::flatten::WedgeUV uv(static_cast<Eigen::Index>(nf), 6);
   uv.rowwise() = Eigen::Matrix<double, 1, 6>(0.5, 1, 1.5, 2, 2.5, 3);
   set_texcoords(written, uv);
   set_quality(written, Element::Face, std::vector<double>(nf, -0.25));
@@ -116,7 +118,7 @@ TEST(OutputMesh, PerFaceFieldsReplaceTheirOwnAndKeepTheVertices) {
             std::vector<double>(4, -0.25));
   EXPECT_EQ(face.properties[face.find("green")].values.to_doubles(), std::vector<double>(4, 2));
   EXPECT_EQ(face.properties[face.find("alpha")].values.to_doubles(), std::vector<double>(4, 255));
-  EXPECT_THROW(set_quality(written, Element::Face, {1.0}), qd::Error);
+  EXPECT_THROW(set_quality(written, Element::Face, {1.0}), qd::common::Error);
 }
 
 TEST(OutputMesh, VertexNormalsAreRecomputed) {
@@ -129,7 +131,7 @@ TEST(OutputMesh, VertexNormalsAreRecomputed) {
   const MeshDocument mesh = mesh_of(text);
   ASSERT_EQ(mesh.vertex_extra.size(), 3u);  // nx ny nz
   MeshDocument out = mesh;
-  qd::Positions V(3, 3);
+  qd::common::Positions V(3, 3);
   V << 0, 0, 0, 0, 1, 0, 0, 0, 1;  // now in the x = 0 plane, normal +x
   set_positions(out, V);
   EXPECT_EQ(out.position_types[0], ScalarType::Float64);

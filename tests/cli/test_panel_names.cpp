@@ -4,7 +4,7 @@
 #include "io/obj_reader.h"
 #include "io/ply_mesh.h"
 
-using namespace qd::meshio;
+using namespace qd::io;
 
 namespace {
 

@@ -1,5 +1,5 @@
-// PLY reader: every malformed, truncated or absurd file gives a qd::Error with a precise message,
-// and arbitrary truncation or corruption of a valid file never crashes.
+// PLY reader: every malformed, truncated or absurd file gives a qd::common::Error with a precise
+// message, and arbitrary truncation or corruption of a valid file never crashes.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -9,10 +9,12 @@
 #include "io/ply_writer.h"
 #include "ply_test_util.h"
 
-using namespace qd::meshio;
-using namespace qd::meshio::test;
+using namespace qd::io;
+using namespace qd::io::test;
 
 namespace {
+
+using namespace qd::common;
 
 const std::string kHeader =
     "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
@@ -137,7 +139,7 @@ TEST(PlyErrors, UnusableMeshesGiveTheirMessage) {
   }
 }
 
-// Every prefix and many random corruptions of a valid file either parse or throw qd::Error.
+// Every prefix and many random corruptions of a valid file either parse or throw qd::common::Error.
 TEST(PlyErrors, TruncationAndCorruptionNeverCrash) {
   for (PlyFormat format :
        {PlyFormat::Ascii, PlyFormat::BinaryLittleEndian, PlyFormat::BinaryBigEndian}) {
@@ -146,7 +148,7 @@ TEST(PlyErrors, TruncationAndCorruptionNeverCrash) {
     for (std::size_t n = 0; n < good.size(); ++n) {
       try {
         mesh_of(good.substr(0, n));
-      } catch (const qd::Error&) {
+      } catch (const qd::common::Error&) {
         ++failures;
       }
     }
@@ -161,7 +163,7 @@ TEST(PlyErrors, TruncationAndCorruptionNeverCrash) {
       bad[at] = static_cast<char>(std::uniform_int_distribution<int>(0, 255)(rng));
       try {
         mesh_of(bad);
-      } catch (const qd::Error&) {
+      } catch (const qd::common::Error&) {
       }
     }
   }

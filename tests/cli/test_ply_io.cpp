@@ -6,8 +6,8 @@
 #include "io/ply_writer.h"
 #include "ply_test_util.h"
 
-using namespace qd::meshio;
-using namespace qd::meshio::test;
+using namespace qd::io;
+using namespace qd::io::test;
 
 namespace {
 

@@ -14,17 +14,17 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-qd::Result sample_result() {
-  qd::Result r;
+qd::approximate::Result sample_result() {
+  qd::approximate::Result r;
   r.average_edge = 0.1;
   r.abd_reduction = 100.0 / 3.0;
   r.total_before.g_abd = 1e-300;
   r.total_after.max_abs_k = std::numeric_limits<double>::quiet_NaN();
-  qd::PatchReport p;
+  qd::approximate::PatchReport p;
   p.id = 7;
   p.tolerance = 0.3;
-  p.developability = qd::Term::Defect;
-  qd::IterationReport it;
+  p.developability = qd::approximate::Term::Defect;
+  qd::approximate::IterationReport it;
   it.iteration = 1;
   it.ratio_abd = 2.0 / 3.0;
   it.note = "quote \" backslash \\ newline \n";
@@ -34,7 +34,7 @@ qd::Result sample_result() {
   return r;
 }
 
-Json report(const qd::Result& r, const std::vector<std::string>& notes) {
+Json report(const qd::approximate::Result& r, const std::vector<std::string>& notes) {
   qd::cli::ApproximateOptions o;
   o.input = "in\xff.ply";  // not UTF-8
   o.output = "out.ply";
@@ -44,7 +44,7 @@ Json report(const qd::Result& r, const std::vector<std::string>& notes) {
 }
 
 TEST(ReportJson, ReadsBackBitIdentical) {
-  const qd::Result r = sample_result();
+  const qd::approximate::Result r = sample_result();
   const Json j = report(r, {"polygons fan-triangulated"});
   EXPECT_EQ(j["average_edge"].get<double>(), 0.1);
   EXPECT_EQ(j["abd_reduction"].get<double>(), r.abd_reduction);
@@ -60,7 +60,7 @@ TEST(ReportJson, ReadsBackBitIdentical) {
   EXPECT_EQ(j["parameters"]["patch_tolerance_ae"], "7=3");
   EXPECT_EQ(j["parameters"]["seam_mode"], "fixed");
   EXPECT_EQ(j["parameters"]["output_quality"], "curvature");
-  EXPECT_EQ(j["parameters"]["max_iter"], qd::Params().max_iter);  // a whole number
+  EXPECT_EQ(j["parameters"]["max_iter"], qd::approximate::Params().max_iter);  // a whole number
   EXPECT_EQ(j["parameters"]["keep_boundary"], true);
   std::vector<std::string> names;  // every declared parameter, in order
   for (const auto& item : j["parameters"].items()) names.push_back(item.key());
@@ -100,8 +100,8 @@ TEST(ReportJson, KeepsTheKeyOrderAndWritesValidUtf8) {
 }
 
 TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
-  qd::FlattenResult r;
-  qd::PieceReport p;
+  qd::flatten::FlattenResult r;
+  qd::flatten::PieceReport p;
   p.patch = 3;
   p.component = 1;
   p.label = "3.1";
@@ -113,7 +113,7 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   r.pieces.push_back(p);
   r.max_distortion = p.max_distortion;
   r.pattern.bounds = p.box;
-  qd::PatternPiece square;  // a 2×2 square sewn, cut with an allowance of 0.5
+  qd::flatten::PatternPiece square;  // a 2×2 square sewn, cut with an allowance of 0.5
   square.label = "3.1";
   square.quantity = 2;
   square.mirrored = 1;
@@ -128,7 +128,7 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   o.settings.unit = qd::params::PatternUnit::Centimetre;
   o.settings.engine.gap = 0.5;
   const std::vector<std::string> notes = {"polygons fan-triangulated"};
-  qd::MarkerChoice marker;
+  qd::marker::MarkerChoice marker;
   marker.rows.width = 150;
   marker.rows.length = 80;
   marker.rows.efficiency = 0.75;
@@ -171,7 +171,7 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   EXPECT_EQ(j["parameters"]["gap"].get<double>(), 0.5);
   EXPECT_EQ(j["sheet"]["min"][1].get<double>(), 1.0);
   EXPECT_EQ(j["parameters"]["svg_file"], "p.svg");
-  EXPECT_EQ(j["parameters"]["arap_max_iter"], qd::FlattenParams().max_iterations);
+  EXPECT_EQ(j["parameters"]["arap_max_iter"], qd::flatten::FlattenParams().max_iterations);
   EXPECT_EQ(j["log"][1], "flattened 1 pieces");
   EXPECT_EQ(j["notes"][0], notes[0]);
 }

@@ -7,6 +7,8 @@
 
 namespace qd::test {
 
+using namespace qd::common;
+
 struct GridMesh {
   Positions V;
   Triangles F;

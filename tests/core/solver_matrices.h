@@ -15,6 +15,8 @@
 
 namespace qd::test {
 
+using namespace qd::common;
+
 using Edges = std::vector<std::pair<int, int>>;
 
 inline Edges path_edges(int n) {

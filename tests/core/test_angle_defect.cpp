@@ -18,6 +18,9 @@
 namespace qd {
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 // A square sheet (n×n quads, side 2) wrinkled by bumps and dents of both signs: doubly curved
 // everywhere, so its Gauss image is a 2-D blob and no curve fits it. Split into `patches`
 // vertical strips.
@@ -108,9 +111,9 @@ TEST(AngleDefect, WrinkledSheetLosesMostCurvatureWhereTheCurveCannotHelp) {
   p.params.defect_weight = 1.0;
   Problem q = p;
   q.params.developability = Developability::Curve;
-  const Result curve = approximate(q);
+  const Result curve = approximate::approximate(q);
   p.params.developability = Developability::Defect;
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   ASSERT_EQ(r.patches.size(), 1u);
   EXPECT_EQ(r.patches[0].developability, Term::Defect);
   EXPECT_GT(r.abd_reduction, 60.0);
@@ -129,8 +132,9 @@ TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
   p.params.segment_first = SegmentFirst::Never;  // kept one patch
   Problem curve = p;
   curve.params.developability = Developability::Curve;
-  EXPECT_THROW(approximate(curve), Error);  // the paper cannot fit it: refused, as before
-  const Result r = approximate(p);
+  EXPECT_THROW(approximate::approximate(curve),
+               Error);  // the paper cannot fit it: refused, as before
+  const Result r = approximate::approximate(p);
   EXPECT_EQ(r.patches[0].developability, Term::Defect);
   EXPECT_NE(term_choice_text(r.patches[0]).find("no Gauss-image curve fits"), std::string::npos);
   EXPECT_GT(r.abd_reduction, 1.0);
@@ -142,7 +146,7 @@ TEST(AngleDefect, AutoTakesDefectRowsWhereNoCurveFitsAndSaysWhy) {
 TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
   Problem p = test::bumpy_cylinder(48, 24, 0.08);
   p.params.tolerance = 0.2;
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   const PatchReport& patch = r.patches[0];
   ASSERT_EQ(patch.candidates.size(), 3u);
   int kept = 0;
@@ -156,7 +160,7 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
                                    std::pair{Developability::Both, Term::Both}}) {
     Problem alone = p;
     alone.params.developability = mode;
-    const Result single = approximate(alone);
+    const Result single = approximate::approximate(alone);
     if (patch.developability == name) {
       EXPECT_EQ(r.V, single.V) << term_name(name);
     }
@@ -170,7 +174,7 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
 // (0.4 maxIter), and keeps the leader.
 TEST(AngleDefect, AutoStopsTheRaceWhenTheLeaderLeavesLessThanDeltaAbd) {
   Problem p = test::bumpy_plane(48, 0.05);
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   const PatchReport& patch = r.patches[0];
   ASSERT_EQ(patch.candidates.size(), 3u);
   const int keep_leader_round = static_cast<int>(std::lround(kKeepLeaderShare * p.params.max_iter));
@@ -187,14 +191,14 @@ TEST(AngleDefect, AutoStopsTheRaceWhenTheLeaderLeavesLessThanDeltaAbd) {
 TEST(AngleDefect, DefectModeIsScaleAndRotationInvariant) {
   Problem p = wrinkled_sheet(16);
   p.params.developability = Developability::Defect;
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   const double s = 250.0;
   const Eigen::Matrix3d R =
       Eigen::AngleAxisd(1.1, Eigen::Vector3d(3, -1, 2).normalized()).toRotationMatrix();
   Problem q = p;
   q.V = (s * p.V * R.transpose()).eval();
   q.params.tolerance = s * p.params.tolerance;
-  const Result rq = approximate(q);
+  const Result rq = approximate::approximate(q);
   const Positions expected = s * r.V * R.transpose();
   EXPECT_LT((rq.V - expected).cwiseAbs().maxCoeff(), 1e-6 * s);
   EXPECT_NEAR(rq.abd_reduction, r.abd_reduction, 1e-6);
@@ -205,13 +209,13 @@ TEST(AngleDefect, FixedSeamsDoNotMoveAndFreeSeamsStayShared) {
   p.params.tolerance = 1.0;
   p.params.defect_weight = 1.0;
   p.params.developability = Developability::Defect;
-  const Result fixed = approximate(p);
+  const Result fixed = approximate::approximate(p);
   const int n = 24;
   for (int j = 0; j <= n; ++j)  // seam columns between the strips: i = 8 and 16
     for (int i : {8, 16}) EXPECT_EQ(fixed.V.row(j * (n + 1) + i), p.V.row(j * (n + 1) + i));
   EXPECT_GT(fixed.abd_reduction, 20.0);
   p.params.seams = SeamMode::Free;
-  const Result free = approximate(p);
+  const Result free = approximate::approximate(p);
   EXPECT_GT(free.abd_reduction, 20.0);
   EXPECT_EQ(flipped_faces(p.F, p.V, free.V), 0);
   bool seam_moved = false;

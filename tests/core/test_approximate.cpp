@@ -12,6 +12,9 @@
 namespace qd {
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 Problem bumpy(double bump = 0.08) {
   Problem p = test::bumpy_cylinder(48, 24, bump);
   p.params.tolerance = 0.2;
@@ -44,7 +47,7 @@ TEST(Approximate, NonManifoldEdgeStaysAndTheRestIsDone) {
     p.F.conservativeResize(p.F.rows() + 1, 3);
     p.F.row(p.F.rows() - 1) << b, a, static_cast<int>(p.V.rows() - 1);
     p.patch.push_back(0);
-    const Result r = approximate(p);
+    const Result r = approximate::approximate(p);
     ASSERT_EQ(r.warnings.size(), 1u);
     EXPECT_NE(r.warnings[0].find("1 non-manifold edge"), std::string::npos) << r.warnings[0];
     EXPECT_EQ(r.log.front(), "warning: " + r.warnings[0]);
@@ -61,7 +64,7 @@ TEST(Approximate, PatchesMostlyOnSeamsAreSolvedWithTheirNeighbour) {
     p.params.tolerance = 0.2;
     p.params.seams = seams;
     p.patch[600] = p.patch[601] = 9;  // a scrap of two faces inside sector 0
-    const Result r = approximate(p);
+    const Result r = approximate::approximate(p);
     EXPECT_TRUE(r.warnings.empty());
     int notes = 0;
     for (const std::string& line : r.log)
@@ -87,7 +90,7 @@ TEST(Approximate, SmallPatchesThatCannotJoinANeighbourStayUnchanged) {
     p.patch[static_cast<size_t>(f)] = 9;
     std::swap(p.F(f, 1), p.F(f, 2));  // flipped against sector 0
   }
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   ASSERT_EQ(r.warnings.size(), 1u);
   EXPECT_NE(r.warnings[0].find("1 patch has fewer than 4 faces (first: patch 9, 2 faces)"),
             std::string::npos)
@@ -107,7 +110,7 @@ TEST(Approximate, FixedTargetsFactoriseOnceHoweverManyIterations) {
   p.params.stop_abd = p.params.stop_obd = 0;
   for (int iters : {1, 4}) {
     p.params.max_iter = iters;
-    const Result r = approximate(p);
+    const Result r = approximate::approximate(p);
     EXPECT_EQ(r.factorizations, 1) << iters << " iterations";
     EXPECT_GE(r.patches[0].iterations, 1);
   }
@@ -119,12 +122,12 @@ TEST(Approximate, ReprojectedTargetsRefactoriseEachIteration) {
   p.params.targets = TargetMode::Reproject;
   p.params.stop_abd = p.params.stop_obd = 0;
   p.params.max_iter = 3;
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   EXPECT_EQ(r.factorizations, r.patches[0].iterations);
 }
 
 TEST(Approximate, IterationsReduceCurvatureAndOrientationEnergy) {
-  const Result r = approximate(bumpy());
+  const Result r = approximate::approximate(bumpy());
   const PatchReport& p = r.patches[0];
   ASSERT_GE(p.history.size(), 2u);
   double g = p.before.g_abd;
@@ -136,7 +139,7 @@ TEST(Approximate, IterationsReduceCurvatureAndOrientationEnergy) {
   // D(P) of Def. 3 against the (fixed) targets the iterations aim at.
   Problem fixed = bumpy();
   fixed.params.targets = TargetMode::Fixed;
-  const PatchReport q = approximate(fixed).patches[0];
+  const PatchReport q = approximate::approximate(fixed).patches[0];
   EXPECT_LT(q.after.obd, 0.7 * q.before.obd);
 }
 
@@ -145,7 +148,7 @@ TEST(Approximate, ConstrainedVerticesDoNotMoveAtAll) {
   p.constrained.assign(static_cast<size_t>(p.V.rows()), 0);
   for (Eigen::Index v = 0; v < p.V.rows(); v += 7) p.constrained[static_cast<size_t>(v)] = 1;
   p.params.keep_boundary = true;
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   int moved = 0;
   for (Eigen::Index v = 0; v < p.V.rows(); ++v) {
     const bool on_boundary = v < 48 || v >= p.V.rows() - 48;
@@ -159,7 +162,7 @@ TEST(Approximate, ConstrainedVerticesDoNotMoveAtAll) {
 
 TEST(Approximate, ScaleAndRotationInvariant) {
   const Problem p = bumpy();
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   const double s = 37.5;
   const Eigen::Matrix3d R =
       Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
@@ -167,7 +170,7 @@ TEST(Approximate, ScaleAndRotationInvariant) {
   q.V = (s * p.V * R.transpose()).eval();
   q.V.rowwise() += Eigen::RowVector3d(3, -5, 11);
   q.params.tolerance = s * p.params.tolerance;
-  const Result rq = approximate(q);
+  const Result rq = approximate::approximate(q);
   Positions expected = s * r.V * R.transpose();
   expected.rowwise() += Eigen::RowVector3d(3, -5, 11);
   const double diag = (q.V.colwise().maxCoeff() - q.V.colwise().minCoeff()).norm();
@@ -183,7 +186,7 @@ double one_step(ToleranceMode mode, ClampMode clamp, double tol, int iterations)
   p.params.clamp = clamp;
   p.params.max_iter = iterations;
   p.params.stop_abd = p.params.stop_obd = 0;
-  return approximate(p).total_after.max_disp;
+  return approximate::approximate(p).total_after.max_disp;
 }
 
 TEST(Approximate, StepToleranceIsNeverExceeded) {
@@ -208,13 +211,13 @@ TEST(Approximate, FixedSeamsStayAndFreeSeamsGoFurther) {
   Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 3);
   p.params.tolerance = 0.2;
   p.params.seams = SeamMode::Fixed;
-  const Result fixed = approximate(p);
+  const Result fixed = approximate::approximate(p);
   ASSERT_EQ(fixed.patches.size(), 3u);
   // seam vertices: columns i = 0, 16, 32 of every ring
   for (Eigen::Index j = 0; j <= 24; ++j)
     for (Eigen::Index i : {0, 16, 32}) EXPECT_EQ(fixed.V.row(j * 48 + i), p.V.row(j * 48 + i));
   p.params.seams = SeamMode::Free;
-  const Result free = approximate(p);
+  const Result free = approximate::approximate(p);
   EXPECT_GT(free.abd_reduction, fixed.abd_reduction);
 }
 
@@ -225,7 +228,7 @@ TEST(Approximate, FreeSeamsKeepATotalBudgetOverTheirThreePasses) {
   p.params.seams = SeamMode::Free;
   p.params.tolerance_mode = ToleranceMode::Total;
   p.params.tolerance = 0.03;
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   EXPECT_LE(r.total_after.max_disp, 0.03 * (1 + 1e-12));
   ASSERT_EQ(r.patches.size(), 3u);
   for (const PatchReport& patch : r.patches) {
@@ -240,15 +243,15 @@ TEST(Approximate, FreeSeamsKeepATotalBudgetOverTheirThreePasses) {
 TEST(Approximate, BadParametersAreRejectedWithoutTouchingTheInput) {
   Problem p = bumpy();
   p.params.tolerance = -1;
-  EXPECT_THROW(approximate(p), Error);
+  EXPECT_THROW(approximate::approximate(p), Error);
 }
 
 // Runs p with 1 and with 2 threads, expects bit-identical positions, returns the first result.
 Result same_with_1_and_2_threads(Problem p) {
   p.params.threads = 1;
-  const Result one = approximate(p);
+  const Result one = approximate::approximate(p);
   p.params.threads = 2;
-  EXPECT_TRUE(approximate(p).V == one.V) << "positions differ between 1 and 2 threads";
+  EXPECT_TRUE(approximate::approximate(p).V == one.V) << "positions differ between 1 and 2 threads";
   return one;
 }
 
@@ -261,7 +264,8 @@ TEST(Approximate, ResultDoesNotDependOnThreadsOrSolver) {
   EXPECT_GT(one.abd_reduction, 10.0);
   for (SolverKind solver : {SolverKind::Cholmod, SolverKind::EigenLLT, SolverKind::EigenLDLT}) {
     p.params.solver = solver;
-    EXPECT_LT((approximate(p).V - one.V).cwiseAbs().maxCoeff(), 1e-9) << static_cast<int>(solver);
+    EXPECT_LT((approximate::approximate(p).V - one.V).cwiseAbs().maxCoeff(), 1e-9)
+        << static_cast<int>(solver);
   }
 }
 
@@ -282,7 +286,8 @@ TEST(Approximate, PatchesThatRaiseTheirSeamsTogetherAreSolvedAgainInTurn) {
   p.params.tolerance = 5;
   const Result r = same_with_1_and_2_threads(p);
   std::vector<int> percents;
-  approximate(p, [&](int percent, const std::string&) { percents.push_back(percent); });
+  approximate::approximate(p,
+                           [&](int percent, const std::string&) { percents.push_back(percent); });
   EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));
   EXPECT_LE(*std::max_element(percents.begin(), percents.end() - 1), 99) << "100 % only when done";
   int notes = 0;
@@ -301,7 +306,7 @@ TEST(Approximate, IterativeMethodMatchesDirect) {
   p.params.tolerance = 0.2;
   p.params.max_iter = 4;
   p.params.method = SolveMethod::Direct;
-  const Result direct = approximate(p);
+  const Result direct = approximate::approximate(p);
   p.params.method = SolveMethod::Iterative;
   const Result one = same_with_1_and_2_threads(p);
   EXPECT_GT(direct.abd_reduction, 10.0);
@@ -316,7 +321,7 @@ TEST(Approximate, StageTimesCountTheSolverWork) {
   Problem p = bumpy();
   p.params.max_iter = 3;
   p.params.stop_abd = p.params.stop_obd = 0;
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   EXPECT_EQ(r.times.factorizations, r.factorizations);
   EXPECT_GE(r.times.solves, r.patches[0].iterations);
   EXPECT_GT(r.times.factorization, 0.0);
@@ -337,7 +342,7 @@ TEST(Approximate, LittleRemovedSaysTheCurvatureIsOnHeldVertices) {
       gaussian_curvature(vertex_angles(p.V, p.F), std::vector<char>(p.V.rows(), 1));
   p.constrained.assign(static_cast<size_t>(p.V.rows()), 0);
   for (size_t v = 0; v < K.size(); ++v) p.constrained[v] = std::abs(K[v]) > 0.05;
-  const Result r = approximate(p);
+  const Result r = approximate::approximate(p);
   ASSERT_LT(r.abd_reduction, 50.0);
   int notes = 0;
   for (const std::string& line : r.log)

@@ -11,6 +11,8 @@
 namespace qd {
 namespace {
 
+using namespace qd::common;
+
 std::set<std::pair<int, int>> lower_set(const test::Edges& edges) {  // (row, column), row > column
   std::set<std::pair<int, int>> s;
   for (const auto& [a, b] : edges)

@@ -9,6 +9,8 @@
 namespace qd {
 namespace {
 
+using namespace qd::common;
+
 // The 1D Laplacian plus the identity: SPD, condition number about 4n²/π².
 Eigen::MatrixXd laplacian_plus_identity(int n) {
   Eigen::MatrixXd M = 3.0 * Eigen::MatrixXd::Identity(n, n);

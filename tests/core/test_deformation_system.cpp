@@ -16,6 +16,9 @@
 namespace qd {
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 struct Fixture {
   Problem p;
   GroupMesh g;

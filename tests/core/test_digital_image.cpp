@@ -7,9 +7,11 @@
 
 #include "approximate/digital_image.h"
 
-using qd::Vec2;
+using qd::approximate::Vec2;
 
 namespace {
+
+using namespace qd::approximate;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -26,14 +28,14 @@ void band(double a, double b, double phi0, double amp, double noise, int count,
   }
 }
 
-double field_at(const qd::DigitalImage& im, int x, int y) {
+double field_at(const qd::approximate::DigitalImage& im, int x, int y) {
   return im.field[static_cast<size_t>(y) * im.width + x];
 }
 
 }  // namespace
 
 // Σ sqrt(r) over the 2x2 pixels a sample at `tp` shares its weight with.
-double root_weight_near(const qd::DigitalImage& im, const Vec2& tp) {
+double root_weight_near(const qd::approximate::DigitalImage& im, const Vec2& tp) {
   const Vec2 p = im.to_pixel(tp) - Vec2(0.5, 0.5);
   const int x0 = static_cast<int>(std::floor(p.x())), y0 = static_cast<int>(std::floor(p.y()));
   double sum = 0;
@@ -49,7 +51,8 @@ TEST(DigitalImage, PixelWeightIsCountTimesArea) {
   const Vec2 a(kPi - 0.7, 1.1), b(kPi + 0.31, 1.37), c(kPi, 1.2);
   const std::vector<Vec2> tp = {a, a, b, c, Vec2(kPi - 1, 1.0), Vec2(kPi + 1, 1.5)};
   const std::vector<double> w = {1.0, 1.0, 1.0, 0.0, 0.01, 0.01};  // c: zero area
-  const qd::DigitalImage im = qd::rasterise(tp, w, false, 2 * kPi - 2.0, 0.0);
+  const qd::approximate::DigitalImage im =
+      qd::approximate::rasterise(tp, w, false, 2 * kPi - 2.0, 0.0);
   EXPECT_NEAR(root_weight_near(im, a) / root_weight_near(im, b), 2.0, 1e-9);
   EXPECT_EQ(root_weight_near(im, c), 0.0);
   EXPECT_NEAR(*std::max_element(im.r.begin(), im.r.end()), 1.0, 1e-12);  // k normalises
@@ -59,8 +62,8 @@ TEST(DigitalImage, FieldIsLocalToTheEffectRegion) {
   std::vector<Vec2> tp;
   std::vector<double> w;
   band(kPi - 0.75, kPi + 0.75, 1.5, 0.0, 0.0, 200, tp, w);
-  qd::DigitalImage im = qd::rasterise(tp, w, false, 2 * kPi - 1.5, 0.0);
-  qd::goshtasby_field(im);
+  qd::approximate::DigitalImage im = qd::approximate::rasterise(tp, w, false, 2 * kPi - 1.5, 0.0);
+  qd::approximate::goshtasby_field(im);
   const double rho = im.effect_radius;
   for (int y = 0; y < im.height; ++y)
     for (int x = 0; x < im.width; ++x) {
@@ -82,12 +85,12 @@ TEST(DigitalImage, SkeletonOfNoisyBandLiesOnItsCentreLine) {
   std::vector<Vec2> tp;
   std::vector<double> w;
   band(kPi - 1, kPi + 1, 1.6, 0.2, 0.01, 4000, tp, w);
-  qd::DigitalImage im = qd::rasterise(tp, w, false, 2 * kPi - 2.0, 0.01);
-  qd::goshtasby_field(im);
-  const std::vector<qd::SkeletonPoint> sk = qd::skeleton_pixels(im);
+  qd::approximate::DigitalImage im = qd::approximate::rasterise(tp, w, false, 2 * kPi - 2.0, 0.01);
+  qd::approximate::goshtasby_field(im);
+  const std::vector<qd::approximate::SkeletonPoint> sk = qd::approximate::skeleton_pixels(im);
   ASSERT_GT(sk.size(), 50u);
   int inside = 0;
-  for (const qd::SkeletonPoint& p : sk) {
+  for (const qd::approximate::SkeletonPoint& p : sk) {
     const Vec2 tp_p = im.to_theta_phi(p.pos);
     if (std::abs(tp_p.x() - kPi) > 0.9) continue;  // away from the band's ends
     ++inside;
@@ -103,17 +106,17 @@ TEST(DigitalImage, PeriodicImageWrapsAcrossTheSeam) {
     tp.push_back(Vec2(2 * kPi * (k + 0.5) / 3000, 1.5));
     w.push_back(1.0);
   }
-  qd::DigitalImage im = qd::rasterise(tp, w, true, 0.0, 0.0);
-  qd::goshtasby_field(im);
+  qd::approximate::DigitalImage im = qd::approximate::rasterise(tp, w, true, 0.0, 0.0);
+  qd::approximate::goshtasby_field(im);
   // The field along the band's row is as strong at the seam columns as in the middle.
   int row = 0;
   for (int y = 0; y < im.height; ++y)
     if (field_at(im, im.width / 2, y) > field_at(im, im.width / 2, row)) row = y;
   EXPECT_NEAR(field_at(im, 0, row) / field_at(im, im.width / 2, row), 1.0, 0.02);
   EXPECT_NEAR(field_at(im, im.width - 1, row) / field_at(im, im.width / 2, row), 1.0, 0.02);
-  const std::vector<qd::SkeletonPoint> sk = qd::skeleton_pixels(im);
+  const std::vector<qd::approximate::SkeletonPoint> sk = qd::approximate::skeleton_pixels(im);
   std::vector<int> columns;
-  for (const qd::SkeletonPoint& p : sk) columns.push_back(p.x);
+  for (const qd::approximate::SkeletonPoint& p : sk) columns.push_back(p.x);
   EXPECT_NE(std::find(columns.begin(), columns.end(), 0), columns.end());
   EXPECT_NE(std::find(columns.begin(), columns.end(), im.width - 1), columns.end());
 }
@@ -122,10 +125,12 @@ TEST(DigitalImage, StrayOutliersStayOutOfTheImage) {
   std::vector<Vec2> tp;
   std::vector<double> w;
   band(kPi - 0.5, kPi + 0.5, 1.5, 0.0, 0.002, 1000, tp, w);
-  const qd::DigitalImage clean = qd::rasterise(tp, w, false, 2 * kPi - 1.0, 0.01);
+  const qd::approximate::DigitalImage clean =
+      qd::approximate::rasterise(tp, w, false, 2 * kPi - 1.0, 0.01);
   tp.push_back(Vec2(kPi, 0.2));  // far off in φ, tiny share of the area
   w.push_back(1.0);
-  const qd::DigitalImage with = qd::rasterise(tp, w, false, 2 * kPi - 1.0, 0.01);
+  const qd::approximate::DigitalImage with =
+      qd::approximate::rasterise(tp, w, false, 2 * kPi - 1.0, 0.01);
   EXPECT_EQ(clean.height, with.height);
   EXPECT_DOUBLE_EQ(clean.pixel, with.pixel);
 }

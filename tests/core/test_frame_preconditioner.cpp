@@ -13,6 +13,9 @@
 namespace qd {
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 struct Grid {
   test::Edges edges = test::grid_edges(8, 7);
   BlockPattern pattern = lower_pattern(56, edges);

@@ -13,7 +13,9 @@
 
 namespace qd_test {
 
-using qd::Vec3;
+using namespace qd::common;
+
+using qd::common::Vec3;
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 

@@ -8,6 +8,9 @@
 
 namespace qd::test {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 // Open cylinder (axis z, radius 1, height h) of nu×nv quads split into triangles, with a smooth
 // radial Gaussian bump of amplitude `bump` (0 = exactly developable up to discretisation) and an
 // optional cone factor (radius grows by `cone`·z). Patch id = 0, or by angular sector when

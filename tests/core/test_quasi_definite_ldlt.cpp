@@ -13,6 +13,8 @@
 namespace qd {
 namespace {
 
+using namespace qd::common;
+
 Eigen::VectorXd random_vector(Eigen::Index n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> value(-1.0, 1.0);

@@ -11,6 +11,9 @@
 namespace qd {
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 TEST(ReportText, EveryTermHasItsOwnName) {
   std::set<std::string> names;
   for (Term t : {Term::None, Term::Curve, Term::Defect, Term::Both}) names.insert(term_name(t));

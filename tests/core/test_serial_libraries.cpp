@@ -15,6 +15,8 @@
 namespace qd {
 namespace {
 
+using namespace qd::common;
+
 TEST(SerialLibraries, HelperThreadsRunOpenMpRegionsSerially) {
   using GetCount = int (*)();
   const auto max_active_levels =

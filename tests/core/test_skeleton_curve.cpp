@@ -6,10 +6,12 @@
 
 #include "approximate/skeleton_curve.h"
 
-using qd::SkeletonPoint;
-using qd::Vec2;
+using qd::approximate::SkeletonPoint;
+using qd::approximate::Vec2;
 
 namespace {
+
+using namespace qd::approximate;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -26,7 +28,7 @@ TEST(SkeletonCurve, ChainWithSpurIsOrderedAndSpurDropped) {
   for (int x = 0; x <= 30; ++x) pts.push_back(pixel(x, x < 20 ? 10 : 11));
   for (int y = 11; y <= 15; ++y) pts.push_back(pixel(15, y));
   std::reverse(pts.begin() + 5, pts.end() - 10);
-  const qd::OrderedSkeleton c = qd::order_skeleton(pts, 64, false);
+  const qd::approximate::OrderedSkeleton c = qd::approximate::order_skeleton(pts, 64, false);
   EXPECT_FALSE(c.closed);
   ASSERT_EQ(c.points.size(), 31u);
   const double dir = c.points.back().x() > c.points.front().x() ? 1 : -1;
@@ -40,7 +42,7 @@ TEST(SkeletonCurve, SeparateBlobsAreChainedAndWeakOutlierDropped) {
   // outlier pixel off the line.
   std::vector<SkeletonPoint> pts = {pixel(40, 5), pixel(41, 5), pixel(5, 5),        pixel(6, 5),
                                     pixel(22, 5), pixel(23, 5), pixel(22, 30, 0.01)};
-  const qd::OrderedSkeleton c = qd::order_skeleton(pts, 64, false);
+  const qd::approximate::OrderedSkeleton c = qd::approximate::order_skeleton(pts, 64, false);
   ASSERT_EQ(c.points.size(), 6u);
   const double dir = c.points.back().x() > c.points.front().x() ? 1 : -1;
   for (size_t k = 1; k < c.points.size(); ++k)
@@ -53,7 +55,7 @@ TEST(SkeletonCurve, PeriodicLoopIsClosedEvenWithSpur) {
   std::vector<SkeletonPoint> pts;
   for (int x = 0; x < W; ++x) pts.push_back(pixel((x + 17) % W, 8 + (x % 10 < 5 ? 0 : 1)));
   for (int y = 9; y <= 20; ++y) pts.push_back(pixel(30, y));  // long spur
-  const qd::OrderedSkeleton c = qd::order_skeleton(pts, W, true);
+  const qd::approximate::OrderedSkeleton c = qd::approximate::order_skeleton(pts, W, true);
   EXPECT_TRUE(c.closed);
   EXPECT_DOUBLE_EQ(std::abs(c.shift.x()), W);
   ASSERT_EQ(c.points.size(), static_cast<size_t>(W));
@@ -66,7 +68,7 @@ TEST(SkeletonCurve, PeriodicLoopIsClosedEvenWithSpur) {
 TEST(SkeletonCurve, OpenArcOnPeriodicImageStaysOpen) {
   std::vector<SkeletonPoint> pts;
   for (int x = 45; x < 65; ++x) pts.push_back(pixel(x % 50, 4));  // crosses the seam
-  const qd::OrderedSkeleton c = qd::order_skeleton(pts, 50, true);
+  const qd::approximate::OrderedSkeleton c = qd::approximate::order_skeleton(pts, 50, true);
   EXPECT_FALSE(c.closed);
   ASSERT_EQ(c.points.size(), 20u);
   EXPECT_DOUBLE_EQ(std::abs(c.points.back().x() - c.points.front().x()), 19.0);  // unwrapped
@@ -77,7 +79,7 @@ TEST(SkeletonCurve, ExtendEndsReachesTheSamples) {
   for (int x = 10; x <= 40; ++x) line.push_back(Vec2(x, 5));
   std::vector<Vec2> samples;
   for (int k = 0; k <= 400; ++k) samples.push_back(Vec2(4 + 0.1 * k, 5 + 0.5 * std::sin(k)));
-  qd::extend_ends(line, samples, 3.0, 0.0, 2.0);
+  qd::approximate::extend_ends(line, samples, 3.0, 0.0, 2.0);
   const double lo = std::min(line.front().x(), line.back().x());
   const double hi = std::max(line.front().x(), line.back().x());
   EXPECT_NEAR(lo, 4.0, 0.5);
@@ -94,7 +96,7 @@ TEST(SkeletonCurve, ExtendEndsFollowsCurvature) {
   std::vector<Vec2> arc, samples;
   for (double a = 30; a <= 150; a += 1.5) arc.push_back(at(a));
   for (double a = 10; a <= 170; a += 0.25) samples.push_back(at(a));
-  qd::extend_ends(arc, samples, 3.0, 0.0, 2.0);
+  qd::approximate::extend_ends(arc, samples, 3.0, 0.0, 2.0);
   for (const Vec2& p : arc) EXPECT_NEAR(p.norm(), R, 0.3);
   const double a0 = std::atan2(arc.front().y(), arc.front().x()) * 180 / kPi;
   const double a1 = std::atan2(arc.back().y(), arc.back().x()) * 180 / kPi;

@@ -10,6 +10,9 @@
 namespace qd {
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 std::vector<std::vector<int>> groups_by_patch(const Problem& p, int patches) {
   std::vector<std::vector<int>> groups(static_cast<size_t>(patches));
   for (size_t f = 0; f < p.patch.size(); ++f)

@@ -8,6 +8,9 @@
 namespace qd {
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 struct System {
   test::Edges edges;
   BlockPattern pattern;

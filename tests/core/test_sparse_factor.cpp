@@ -13,6 +13,8 @@
 namespace qd {
 namespace {
 
+using namespace qd::common;
+
 constexpr SolverKind kEverySolver[] = {SolverKind::Auto, SolverKind::Cholmod, SolverKind::EigenLLT,
                                        SolverKind::EigenLDLT};
 

@@ -15,6 +15,9 @@ using namespace qd_test;
 
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 // Largest angle (degrees) between a target and the great circle with pole `axis`.
 double max_off_great_circle_deg(const std::vector<Vec3>& targets, const Vec3& axis) {
   double worst = 0;
@@ -34,8 +37,8 @@ void expect_unit(const std::vector<Vec3>& v) {
 TEST(TargetNormals, CylinderGivesGreatCircleWithSmallResidual) {
   const Vec3 axis = Vec3(0.3, -0.5, 0.8).normalized();
   const Samples s = cylinder(axis, 0.2, 0.2 + 100 * kDeg, 2000, 1.0 * kDeg, 20);
-  const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
-  EXPECT_EQ(fit.model->kind(), qd::TargetKind::Curve);
+  const qd::approximate::TargetFit fit = qd::approximate::fit_targets(s.normals, s.areas);
+  EXPECT_EQ(fit.model->kind(), qd::approximate::TargetKind::Curve);
   expect_unit(fit.targets);
   const std::vector<Vec3> inliers(fit.targets.begin(), fit.targets.begin() + 2000);
   EXPECT_LT(max_off_great_circle_deg(inliers, axis), 0.5);
@@ -58,7 +61,7 @@ TEST(TargetNormals, ConeGivesSmallCircleAtTheRightAngle) {
   for (double beta_deg : {40.0, 65.0, 110.0}) {
     const Vec3 axis = Vec3(-0.2, 0.9, 0.1).normalized();
     const Samples s = cone(axis, beta_deg * kDeg, 1.0, 1.0 + 150 * kDeg, 1500, 0.5 * kDeg);
-    const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
+    const qd::approximate::TargetFit fit = qd::approximate::fit_targets(s.normals, s.areas);
     for (const Vec3& t : fit.targets)
       EXPECT_NEAR(angle(t, axis) / kDeg, beta_deg, 0.6) << "beta " << beta_deg;
     EXPECT_LT(fit.residual_deg, 1.0);
@@ -69,7 +72,7 @@ TEST(TargetNormals, SShapedCurveIsFollowed) {
   const Eigen::Matrix3d F = random_rotation(3);
   auto phi = [](double t) { return kPi / 2 + 20 * kDeg * std::sin(2.5 * t); };
   const Samples s = curve_samples(F, 0.0, 150 * kDeg, phi, 3000, 0.7 * kDeg, 30);
-  const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit fit = qd::approximate::fit_targets(s.normals, s.areas);
   // Dense copy of the true curve.
   std::vector<Vec3> truth;
   for (int k = 0; k <= 6000; ++k) {
@@ -97,8 +100,8 @@ TEST(TargetNormals, SShapedCurveIsFollowed) {
 TEST(TargetNormals, TubeGivesClosedCurveWithoutCutAtSeam) {
   const Vec3 axis = Vec3(1, 2, 2).normalized();
   const Samples s = cylinder(axis, 0.0, 2 * kPi, 3000, 1.0 * kDeg);
-  const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
-  EXPECT_EQ(fit.model->kind(), qd::TargetKind::ClosedCurve);
+  const qd::approximate::TargetFit fit = qd::approximate::fit_targets(s.normals, s.areas);
+  EXPECT_EQ(fit.model->kind(), qd::approximate::TargetKind::ClosedCurve);
   EXPECT_LT(max_off_great_circle_deg(fit.targets, axis), 0.5);
   // No cut anywhere: every target keeps its sample's azimuth (a cut would pull the samples
   // of the gap to the curve's ends).
@@ -125,8 +128,8 @@ TEST(TargetNormals, CoarseTubeOfSixteenFacetsIsClosed) {
       s.normals.push_back(F * Vec3(std::cos(k * kPi / 8), std::sin(k * kPi / 8), 0));
       s.areas.push_back(1.0);
     }
-  const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
-  EXPECT_EQ(fit.model->kind(), qd::TargetKind::ClosedCurve);
+  const qd::approximate::TargetFit fit = qd::approximate::fit_targets(s.normals, s.areas);
+  EXPECT_EQ(fit.model->kind(), qd::approximate::TargetKind::ClosedCurve);
   EXPECT_LT(fit.residual_deg, 0.5);  // a cut at the seam would leave 22.5° unfitted
 }
 
@@ -134,8 +137,8 @@ TEST(TargetNormals, PlanarPatchGivesPlaneModel) {
   const Vec3 n0 = Vec3(0.4, 0.4, -0.8).normalized();
   const Samples s = curve_samples(
       frame_for(n0), 0, 0, [](double) { return 0.0; }, 500, 0.3 * kDeg);
-  const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
-  EXPECT_EQ(fit.model->kind(), qd::TargetKind::Plane);
+  const qd::approximate::TargetFit fit = qd::approximate::fit_targets(s.normals, s.areas);
+  EXPECT_EQ(fit.model->kind(), qd::approximate::TargetKind::Plane);
   Vec3 mean = Vec3::Zero();
   for (size_t i = 0; i < s.normals.size(); ++i) mean += s.areas[i] * s.normals[i];
   for (const Vec3& t : fit.targets) EXPECT_LT((t - mean.normalized()).norm(), 1e-12);
@@ -145,9 +148,9 @@ TEST(TargetNormals, SphereFillingNormalsThrow) {
   const Samples s = curve_samples(
       Eigen::Matrix3d::Identity(), 0, 0, [](double) { return 0.0; }, 0, 0.0, 2000);
   try {
-    qd::fit_targets(s.normals, s.areas);
-    FAIL() << "expected qd::Error";
-  } catch (const qd::Error& e) {
+    qd::approximate::fit_targets(s.normals, s.areas);
+    FAIL() << "expected qd::common::Error";
+  } catch (const qd::common::Error& e) {
     EXPECT_NE(std::string(e.what()).find("fill the sphere"), std::string::npos) << e.what();
   }
 }
@@ -162,7 +165,7 @@ TEST(TargetNormals, HemisphereBowlDoesNotThrow) {
     s.normals.push_back(Vec3(r * std::cos(t), r * std::sin(t), z));
     s.areas.push_back(1.0);
   }
-  const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit fit = qd::approximate::fit_targets(s.normals, s.areas);
   expect_unit(fit.targets);
   EXPECT_GT(fit.residual_deg, 5.0);  // far from developable, reported as such
 }
@@ -174,12 +177,13 @@ TEST(TargetNormals, RotationEquivariant) {
       cylinder(Vec3(0, 1, 1), 0.0, 2 * kPi, 1000, 0.8 * kDeg),
       cone(Vec3(1, 0, 0), 50 * kDeg, 0.0, 200 * kDeg, 1000, 0.5 * kDeg)};
   for (size_t c = 0; c < cases.size(); ++c) {
-    const qd::TargetFit a = qd::fit_targets(cases[c].normals, cases[c].areas);
+    const qd::approximate::TargetFit a =
+        qd::approximate::fit_targets(cases[c].normals, cases[c].areas);
     for (unsigned seed : {21u, 22u, 23u}) {
       const Eigen::Matrix3d Q = random_rotation(seed);
       std::vector<Vec3> rotated;
       for (const Vec3& n : cases[c].normals) rotated.push_back(Q * n);
-      const qd::TargetFit b = qd::fit_targets(rotated, cases[c].areas);
+      const qd::approximate::TargetFit b = qd::approximate::fit_targets(rotated, cases[c].areas);
       EXPECT_EQ(a.model->kind(), b.model->kind());
       double worst = 0;
       for (size_t i = 0; i < rotated.size(); ++i)
@@ -192,8 +196,8 @@ TEST(TargetNormals, RotationEquivariant) {
 
 TEST(TargetNormals, DeterministicAndProjectMatchesTargets) {
   const Samples s = cone(Vec3(0, 0, 1), 70 * kDeg, 0.0, 120 * kDeg, 800, 0.5 * kDeg);
-  const qd::TargetFit a = qd::fit_targets(s.normals, s.areas);
-  const qd::TargetFit b = qd::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit a = qd::approximate::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit b = qd::approximate::fit_targets(s.normals, s.areas);
   for (size_t i = 0; i < s.normals.size(); ++i) {
     EXPECT_EQ(a.targets[i], b.targets[i]);
     EXPECT_EQ(a.model->project(s.normals[i]), a.targets[i]);
@@ -211,7 +215,7 @@ TEST(TargetNormals, HintDoesNotChangeTheProjection) {
       cone(Vec3(0, 1, 0), 60 * kDeg, 0.0, 90 * kDeg, 2000, 0.5 * kDeg)};
   for (size_t c = 0; c < cases.size(); ++c) {
     const std::vector<Vec3>& normals = cases[c].normals;
-    const qd::TargetFit fit = qd::fit_targets(normals, cases[c].areas);
+    const qd::approximate::TargetFit fit = qd::approximate::fit_targets(normals, cases[c].areas);
     std::vector<size_t> order(normals.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
     for (int pass = 0; pass < 2; ++pass) {
@@ -230,11 +234,11 @@ TEST(TargetNormals, ThreadsDoNotChangeTheTargets) {
   // More samples than one range of the parallel projection (kRangeChunk), so the ranges start
   // without a hint on different threads.
   const Samples s = cylinder(Vec3(1, 2, 2).normalized(), 0.0, 2 * kPi, 10000, 2.0 * kDeg);
-  ASSERT_GT(s.normals.size(), 2 * qd::kRangeChunk);
-  const qd::TargetFit one = qd::fit_targets(s.normals, s.areas, 1);
-  const qd::TargetFit two = qd::fit_targets(s.normals, s.areas, 2);
+  ASSERT_GT(s.normals.size(), 2 * qd::common::kRangeChunk);
+  const qd::approximate::TargetFit one = qd::approximate::fit_targets(s.normals, s.areas, 1);
+  const qd::approximate::TargetFit two = qd::approximate::fit_targets(s.normals, s.areas, 2);
   EXPECT_EQ(one.residual_deg, two.residual_deg);
-  EXPECT_EQ(qd::project_normals(*one.model, s.normals, 2), two.targets);
+  EXPECT_EQ(qd::approximate::project_normals(*one.model, s.normals, 2), two.targets);
   for (size_t i = 0; i < s.normals.size(); ++i) {
     EXPECT_EQ(one.targets[i], two.targets[i]) << "sample " << i;
     EXPECT_EQ(two.targets[i], one.model->project(s.normals[i])) << "sample " << i;
@@ -243,7 +247,7 @@ TEST(TargetNormals, ThreadsDoNotChangeTheTargets) {
 
 TEST(TargetNormals, ProjectionIsTheNearestPointOfTheCurve) {
   const Samples s = cone(Vec3(0, 1, 0), 60 * kDeg, 0.0, 90 * kDeg, 1000, 0.5 * kDeg);
-  const qd::TargetFit fit = qd::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit fit = qd::approximate::fit_targets(s.normals, s.areas);
   // Densely sample the model's curve by projecting a fan of directions, then check that no
   // curve point is nearer to a sample than its target (up to the refinement tolerance).
   std::vector<Vec3> curve;
@@ -256,12 +260,12 @@ TEST(TargetNormals, ProjectionIsTheNearestPointOfTheCurve) {
 
 TEST(TargetNormals, ZeroAreaSamplesWeighNothing) {
   Samples s = cylinder(Vec3(1, 0, 0), 0.0, 90 * kDeg, 500, 0.5 * kDeg);
-  const qd::TargetFit a = qd::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit a = qd::approximate::fit_targets(s.normals, s.areas);
   for (int k = 0; k < 50; ++k) {  // far-off zero-area samples, e.g. from degenerate faces
     s.normals.push_back(Vec3(0, std::cos(k), std::sin(k)).normalized());
     s.areas.push_back(0.0);
   }
-  const qd::TargetFit b = qd::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit b = qd::approximate::fit_targets(s.normals, s.areas);
   for (size_t i = 0; i < a.targets.size(); ++i) EXPECT_EQ(a.targets[i], b.targets[i]);
   EXPECT_DOUBLE_EQ(a.residual_deg, b.residual_deg);
 }
@@ -269,9 +273,9 @@ TEST(TargetNormals, ZeroAreaSamplesWeighNothing) {
 TEST(TargetNormals, OrientationSignMatters) {
   // Flipping every normal gives the antipodal curve: targets flip too (normals are not lines).
   Samples s = cone(Vec3(0, 0, 1), 60 * kDeg, 0.0, 120 * kDeg, 800, 0.5 * kDeg);
-  const qd::TargetFit a = qd::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit a = qd::approximate::fit_targets(s.normals, s.areas);
   for (Vec3& n : s.normals) n = -n;
-  const qd::TargetFit b = qd::fit_targets(s.normals, s.areas);
+  const qd::approximate::TargetFit b = qd::approximate::fit_targets(s.normals, s.areas);
   for (size_t i = 0; i < s.normals.size(); ++i) {
     EXPECT_NEAR(angle(b.targets[i], Vec3(0, 0, 1)) / kDeg, 120.0, 0.6);
     EXPECT_LT(angle(-a.targets[i], b.targets[i]) / kDeg, 0.3);
@@ -281,23 +285,26 @@ TEST(TargetNormals, OrientationSignMatters) {
 TEST(TargetNormals, BadInputThrows) {
   const std::vector<Vec3> n = {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1),
                                Vec3(1, 1, 0).normalized()};
-  EXPECT_THROW(qd::fit_targets(n, {1.0, 1.0, 0.0, 0.0}), qd::Error);  // 2 positive areas
-  EXPECT_THROW(qd::fit_targets(n, {1.0, 1.0, 1.0}), qd::Error);       // size mismatch
-  EXPECT_THROW(qd::fit_targets(n, {1.0, -1.0, 1.0, 1.0}), qd::Error);
+  EXPECT_THROW(qd::approximate::fit_targets(n, {1.0, 1.0, 0.0, 0.0}),
+               qd::common::Error);  // 2 positive areas
+  EXPECT_THROW(qd::approximate::fit_targets(n, {1.0, 1.0, 1.0}),
+               qd::common::Error);  // size mismatch
+  EXPECT_THROW(qd::approximate::fit_targets(n, {1.0, -1.0, 1.0, 1.0}), qd::common::Error);
   std::vector<Vec3> bad = n;
   bad[1] = Vec3(std::nan(""), 0, 0);
-  EXPECT_THROW(qd::fit_targets(bad, {1.0, 1.0, 1.0, 1.0}), qd::Error);
-  EXPECT_NO_THROW(qd::fit_targets(bad, {1.0, 0.0, 1.0, 1.0}));  // a zero-area NaN weighs nothing
+  EXPECT_THROW(qd::approximate::fit_targets(bad, {1.0, 1.0, 1.0, 1.0}), qd::common::Error);
+  EXPECT_NO_THROW(
+      qd::approximate::fit_targets(bad, {1.0, 0.0, 1.0, 1.0}));  // a zero-area NaN weighs nothing
 }
 
 TEST(TargetNormals, TimingFor1kAnd100kSamples) {
   auto phi = [](double t) { return kPi / 2 + 15 * kDeg * std::sin(3 * t); };
   for (int count : {1000, 100000}) {
     const Samples s = curve_samples(random_rotation(4), 0.0, 140 * kDeg, phi, count, 0.8 * kDeg);
-    qd::fit_targets(s.normals, s.areas);  // warm-up
+    qd::approximate::fit_targets(s.normals, s.areas);  // warm-up
     const int reps = count <= 1000 ? 50 : 3;
     const auto t0 = std::chrono::steady_clock::now();
-    for (int r = 0; r < reps; ++r) qd::fit_targets(s.normals, s.areas);
+    for (int r = 0; r < reps; ++r) qd::approximate::fit_targets(s.normals, s.areas);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count() /
         reps;
@@ -318,16 +325,17 @@ TEST(TargetNormals, DegenerateInputsGiveUnitTargetsOrClearErrors) {
   for (size_t c = 0; c < cases.size(); ++c) {
     const std::vector<double> areas(cases[c].size(), 1.0);
     try {
-      const qd::TargetFit fit = qd::fit_targets(cases[c], areas);
+      const qd::approximate::TargetFit fit = qd::approximate::fit_targets(cases[c], areas);
       expect_unit(fit.targets);
       EXPECT_TRUE(std::isfinite(fit.residual_deg)) << "case " << c;
-    } catch (const qd::Error& e) {
+    } catch (const qd::common::Error& e) {
       EXPECT_GT(std::string(e.what()).size(), 20u) << "case " << c;  // a sentence, not a crash
     }
   }
   // A crease: every target lies on the great-circle arc between the two normals.
   const std::vector<Vec3>& crease = cases[2];
-  const qd::TargetFit fit = qd::fit_targets(crease, std::vector<double>(crease.size(), 1.0));
+  const qd::approximate::TargetFit fit =
+      qd::approximate::fit_targets(crease, std::vector<double>(crease.size(), 1.0));
   const Vec3 axis = a.cross(b).normalized();
   for (const Vec3& t : fit.targets) EXPECT_LT(std::abs(t.dot(axis)), std::sin(1.0 * kDeg));
 }

@@ -5,10 +5,12 @@
 
 namespace {
 
+using namespace qd::common;
+
 // 3×3 grid of vertices (index = 3·row + column), 2×2 quads split into 8 faces; the left quad
 // column is patch 0, the right one patch 1. Vertex 9 is isolated.
 struct TwoPatchGrid {
-  qd::Triangles F{8, 3};
+  qd::common::Triangles F{8, 3};
   std::vector<int> patch;
   TwoPatchGrid() {
     int f = 0;
@@ -26,7 +28,7 @@ struct TwoPatchGrid {
 
 TEST(Topology, TwoPatchGridSeamsAndBoundary) {
   const TwoPatchGrid g;
-  const qd::Topology t = qd::analyse_topology(g.F, 10, g.patch);
+  const qd::common::Topology t = qd::common::analyse_topology(g.F, 10, g.patch);
   for (int v = 0; v < 9; ++v) {
     EXPECT_TRUE(t.used[v]) << v;
     EXPECT_EQ(t.boundary[v] != 0, v != 4) << v;
@@ -42,14 +44,14 @@ TEST(Topology, TwoPatchGridSeamsAndBoundary) {
 
 TEST(Topology, NoPatchesMeansNoSeams) {
   const TwoPatchGrid g;
-  const qd::Topology t = qd::analyse_topology(g.F, 9, {});
+  const qd::common::Topology t = qd::common::analyse_topology(g.F, 9, {});
   for (int v = 0; v < 9; ++v) EXPECT_FALSE(t.seam[v]) << v;
 }
 
 TEST(Topology, ThreeFacesOnOneEdgeIsNonManifold) {
-  qd::Triangles F(3, 3);
+  qd::common::Triangles F(3, 3);
   F << 0, 1, 2, 1, 0, 3, 0, 1, 4;
-  const qd::Topology t = qd::analyse_topology(F, 5, {});
+  const qd::common::Topology t = qd::common::analyse_topology(F, 5, {});
   EXPECT_EQ(t.nonmanifold_edges, 1);
   EXPECT_EQ(t.first_nonmanifold_edge[0], 0);
   EXPECT_EQ(t.first_nonmanifold_edge[1], 1);
@@ -58,9 +60,9 @@ TEST(Topology, ThreeFacesOnOneEdgeIsNonManifold) {
 }
 
 TEST(Topology, BowTieVertexIsNonManifold) {
-  qd::Triangles F(2, 3);
+  qd::common::Triangles F(2, 3);
   F << 0, 1, 2, 0, 3, 4;
-  const qd::Topology t = qd::analyse_topology(F, 5, {});
+  const qd::common::Topology t = qd::common::analyse_topology(F, 5, {});
   EXPECT_EQ(t.nonmanifold_vertices, 1);
   EXPECT_EQ(t.first_nonmanifold_vertex, 0);
   EXPECT_EQ(t.nonmanifold_edges, 0);
@@ -68,9 +70,9 @@ TEST(Topology, BowTieVertexIsNonManifold) {
 
 TEST(Topology, ClosedFanIsManifoldAndHasNoBoundary) {
   // Tetrahedron: closed, every vertex one fan.
-  qd::Triangles F(4, 3);
+  qd::common::Triangles F(4, 3);
   F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3;
-  const qd::Topology t = qd::analyse_topology(F, 4, {});
+  const qd::common::Topology t = qd::common::analyse_topology(F, 4, {});
   EXPECT_EQ(t.nonmanifold_vertices, 0);
   EXPECT_EQ(t.nonmanifold_edges, 0);
   for (int v = 0; v < 4; ++v) EXPECT_FALSE(t.boundary[v]) << v;

@@ -12,9 +12,12 @@
 
 namespace {
 
+using namespace qd::approximate;
+using namespace qd::common;
+
 // n×n grid of vertices in the plane z = 0 (index = n·row + column), two faces per quad.
-qd::Problem grid(int n) {
-  qd::Problem p;
+qd::approximate::Problem grid(int n) {
+  qd::approximate::Problem p;
   p.V.resize(n * n, 3);
   for (int r = 0; r < n; ++r)
     for (int c = 0; c < n; ++c) p.V.row(n * r + c) << c, r, 0;
@@ -33,28 +36,28 @@ qd::Problem grid(int n) {
 
 // 4×4 grid: the left quad column (6 faces) is patch 0, the rest (12 faces) patch 1.
 // Seam vertices 1, 5, 9, 13; interior vertices 6 and 10 stay free.
-qd::Problem two_patches() {
-  qd::Problem p = grid(4);
+qd::approximate::Problem two_patches() {
+  qd::approximate::Problem p = grid(4);
   for (int f = 0; f < p.F.rows(); ++f) p.patch.push_back((f / 2) % 3 == 0 ? 0 : 1);
   return p;
 }
 
-void append_vertex(qd::Problem& p, double x, double y, double z) {
+void append_vertex(qd::approximate::Problem& p, double x, double y, double z) {
   p.V.conservativeResize(p.V.rows() + 1, 3);
   p.V.row(p.V.rows() - 1) << x, y, z;
 }
 
-void append_face(qd::Problem& p, int a, int b, int c, int patch_id) {
+void append_face(qd::approximate::Problem& p, int a, int b, int c, int patch_id) {
   p.F.conservativeResize(p.F.rows() + 1, 3);
   p.F.row(p.F.rows() - 1) << a, b, c;
   if (!p.patch.empty()) p.patch.push_back(patch_id);
 }
 
-// The qd::Error message of validate(p), or "" when it passes.
-std::string message(const qd::Problem& p) {
+// The qd::common::Error message of validate(p), or "" when it passes.
+std::string message(const qd::approximate::Problem& p) {
   try {
-    qd::validate(p);
-  } catch (const qd::Error& e) {
+    qd::approximate::validate(p);
+  } catch (const qd::common::Error& e) {
     return e.what();
   }
   return "";
@@ -68,7 +71,7 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
 
 TEST(Validate, TwoPatchGridPassesAndReturnsTopology) {
-  const qd::Topology t = qd::validate(two_patches());
+  const qd::common::Topology t = qd::approximate::validate(two_patches());
   ASSERT_EQ(t.seam.size(), 16u);
   EXPECT_TRUE(t.seam[5]);
   EXPECT_FALSE(t.seam[6]);
@@ -77,19 +80,19 @@ TEST(Validate, TwoPatchGridPassesAndReturnsTopology) {
 }
 
 TEST(Validate, NoVertices) {
-  qd::Problem p;
+  qd::approximate::Problem p;
   p.params.tolerance = 0.1;
   EXPECT_TRUE(mentions(message(p), "no vertices"));
 }
 
 TEST(Validate, NoFaces) {
-  qd::Problem p = grid(3);
+  qd::approximate::Problem p = grid(3);
   p.F.resize(0, 3);
   EXPECT_TRUE(mentions(message(p), "no faces"));
 }
 
 TEST(Validate, NonFiniteCoordinates) {
-  qd::Problem p = grid(4);
+  qd::approximate::Problem p = grid(4);
   p.V(7, 1) = kNaN;
   p.V(12, 0) = kInf;
   const std::string m = message(p);
@@ -98,7 +101,7 @@ TEST(Validate, NonFiniteCoordinates) {
 }
 
 TEST(Validate, FaceIndexOutOfRange) {
-  qd::Problem p = grid(4);
+  qd::approximate::Problem p = grid(4);
   p.F(3, 1) = 99;
   const std::string m = message(p);
   EXPECT_TRUE(mentions(m, "Face 3")) << m;
@@ -108,7 +111,7 @@ TEST(Validate, FaceIndexOutOfRange) {
 }
 
 TEST(Validate, RepeatedIndexInFace) {
-  qd::Problem p = grid(4);
+  qd::approximate::Problem p = grid(4);
   p.F(5, 2) = p.F(5, 0);
   const std::string m = message(p);
   EXPECT_TRUE(mentions(m, "Face 5")) << m;
@@ -116,7 +119,7 @@ TEST(Validate, RepeatedIndexInFace) {
 }
 
 TEST(Validate, ZeroAreaFace) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   append_vertex(p, 0.5, 0, 0);  // on edge 0–1: the new face is flat
   append_face(p, 1, 0, 16, 0);
   const std::string m = message(p);
@@ -126,15 +129,15 @@ TEST(Validate, ZeroAreaFace) {
 }
 
 TEST(Validate, ZeroAreaIsRelativeToEdgeLength) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   p.V *= 1e-9;  // tiny model units, same shape
   p.params.tolerance = 1e-10;
   EXPECT_EQ(message(p), "");
 }
 
 // Two faces hang below edge 0–1 of patch 0: it is kept, fixed, with a warning.
-qd::Problem with_flaps() {
-  qd::Problem p = two_patches();
+qd::approximate::Problem with_flaps() {
+  qd::approximate::Problem p = two_patches();
   append_vertex(p, 0.5, -1, 1);
   append_face(p, 1, 0, 16, 0);  // edge 0–1 now has a third face below
   append_vertex(p, 0.5, -1, -1);
@@ -143,10 +146,10 @@ qd::Problem with_flaps() {
 }
 
 TEST(Validate, NonManifoldEdgePassesWithAWarning) {
-  const qd::Topology t = qd::validate(with_flaps());
+  const qd::common::Topology t = qd::approximate::validate(with_flaps());
   EXPECT_TRUE(t.nonmanifold[0] && t.nonmanifold[1]);
   EXPECT_EQ(std::count(t.nonmanifold.begin(), t.nonmanifold.end(), 1), 2);
-  const std::vector<std::string> w = qd::warnings(t);
+  const std::vector<std::string> w = qd::approximate::warnings(t);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_TRUE(mentions(w[0], "1 non-manifold edge ")) << w[0];
   EXPECT_TRUE(mentions(w[0], "first: between vertices 0 and 1")) << w[0];
@@ -155,11 +158,11 @@ TEST(Validate, NonManifoldEdgePassesWithAWarning) {
 }
 
 TEST(Validate, CleanMeshHasNoWarnings) {
-  EXPECT_TRUE(qd::warnings(qd::validate(two_patches())).empty());
+  EXPECT_TRUE(qd::approximate::warnings(qd::approximate::validate(two_patches())).empty());
 }
 
 TEST(Validate, DuplicateFaces) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   append_face(p, 0, 1, 5, 0);  // face 0 again
   append_face(p, 5, 0, 1, 0);  // and again, rotated
   const std::string m = message(p);
@@ -168,7 +171,7 @@ TEST(Validate, DuplicateFaces) {
 }
 
 TEST(Validate, NothingFreeButNonManifoldAndSmallPatchVertices) {
-  qd::Problem p = with_flaps();
+  qd::approximate::Problem p = with_flaps();
   p.patch.assign(p.patch.size(), 0);
   p.constrained.assign(static_cast<size_t>(p.V.rows()), 1);
   p.constrained[0] = p.constrained[1] = 0;
@@ -178,44 +181,44 @@ TEST(Validate, NothingFreeButNonManifoldAndSmallPatchVertices) {
 }
 
 TEST(Validate, PatchVectorOfWrongSize) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   p.patch.pop_back();
   const std::string m = message(p);
   EXPECT_TRUE(mentions(m, "17 patch ids for 18 faces")) << m;
 }
 
 TEST(Validate, ConstrainedVectorOfWrongSize) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   p.constrained.assign(3, 0);
   const std::string m = message(p);
   EXPECT_TRUE(mentions(m, "3 constrained flags for 16 vertices")) << m;
 }
 
 TEST(Validate, TooSmallPatchPassesWithAWarning) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   p.patch[17] = 7;
   p.patch[16] = 7;
   p.patch[0] = 3;
-  const qd::Topology t = qd::validate(p);
+  const qd::common::Topology t = qd::approximate::validate(p);
   EXPECT_EQ(t.small_patches, 2);
   EXPECT_TRUE(t.in_small_patch[0] && t.in_small_patch[1] && t.in_small_patch[5]);
   EXPECT_FALSE(t.in_small_patch[6]);
-  const std::vector<std::string> w = qd::warnings(t);
+  const std::vector<std::string> w = qd::approximate::warnings(t);
   ASSERT_EQ(w.size(), 1u);
   EXPECT_TRUE(mentions(w[0], "2 patches have fewer than 4 faces (first: patch 3, 1 face)")) << w[0];
   EXPECT_TRUE(mentions(w[0], "left unchanged")) << w[0];
 }
 
 TEST(Validate, AllPatchesTooSmall) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   for (size_t f = 0; f < p.patch.size(); ++f) p.patch[f] = static_cast<int>(f / 3);
   const std::string m = message(p);
   EXPECT_TRUE(mentions(m, "Patch 0 has only 3 faces (6 patches have fewer than ")) << m;
-  EXPECT_TRUE(mentions(m, std::to_string(qd::kMinPatchFaces))) << m;
+  EXPECT_TRUE(mentions(m, std::to_string(qd::common::kMinPatchFaces))) << m;
 }
 
 TEST(Validate, InconsistentOrientationInPatch) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   std::swap(p.F(10, 1), p.F(10, 2));  // face 10 lies in patch 1
   const std::string m = message(p);
   EXPECT_TRUE(mentions(m, "Patch 1")) << m;
@@ -224,7 +227,7 @@ TEST(Validate, InconsistentOrientationInPatch) {
 }
 
 TEST(Validate, AllVerticesSelected) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   p.constrained.assign(16, 1);
   const std::string m = message(p);
   EXPECT_TRUE(mentions(m, "All 16 vertices are constrained")) << m;
@@ -232,18 +235,18 @@ TEST(Validate, AllVerticesSelected) {
 
 TEST(Validate, SeamsAndBoundaryLeaveNothingFree) {
   // 3×3 grid split into two columns: the only interior vertex lies on the seam.
-  qd::Problem p = grid(3);
+  qd::approximate::Problem p = grid(3);
   for (int f = 0; f < p.F.rows(); ++f) p.patch.push_back((f / 2) % 2);
   EXPECT_TRUE(mentions(message(p), "constrained"));
-  p.params.seams = qd::SeamMode::Free;
+  p.params.seams = qd::approximate::SeamMode::Free;
   EXPECT_EQ(message(p), "");
-  p.params.seams = qd::SeamMode::Fixed;
+  p.params.seams = qd::approximate::SeamMode::Fixed;
   p.params.keep_boundary = false;
   EXPECT_EQ(message(p), "");
 }
 
 TEST(Validate, BadTolerance) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   for (const double tol : {0.0, -1.0, kNaN, kInf}) {
     p.params.tolerance = tol;
     EXPECT_TRUE(mentions(message(p), "tolerance")) << tol;
@@ -251,7 +254,7 @@ TEST(Validate, BadTolerance) {
 }
 
 TEST(Validate, BadPatchTolerance) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   p.params.patch_tolerance[1] = 0.2;
   EXPECT_EQ(message(p), "");
   p.params.patch_tolerance[0] = -0.5;
@@ -259,7 +262,7 @@ TEST(Validate, BadPatchTolerance) {
 }
 
 TEST(Validate, BadIterationCount) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   for (const int n : {0, -3, 10001}) {
     p.params.max_iter = n;
     EXPECT_TRUE(mentions(message(p), "iterations is " + std::to_string(n))) << n;
@@ -267,7 +270,7 @@ TEST(Validate, BadIterationCount) {
 }
 
 TEST(Validate, BadWeightAndAnchor) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   p.params.weight = 0;
   EXPECT_TRUE(mentions(message(p), "weight w"));
   p.params.weight = 30;
@@ -280,7 +283,7 @@ TEST(Validate, BadWeightAndAnchor) {
 }
 
 TEST(Validate, BadStopThresholds) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   for (const double x : {-0.1, 100.0, kNaN}) {
     p.params.stop_abd = x;
     EXPECT_TRUE(mentions(message(p), "ABD")) << x;
@@ -294,24 +297,24 @@ TEST(Validate, BadStopThresholds) {
 }
 
 TEST(Validate, IsolatedVertexIsFine) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   append_vertex(p, 5, 5, 5);
   p.constrained.assign(17, 0);
-  const qd::Topology t = qd::validate(p);
+  const qd::common::Topology t = qd::approximate::validate(p);
   EXPECT_FALSE(t.used[16]);
   EXPECT_TRUE(t.used[15]);
 }
 
 TEST(Validate, SinglePatchWithoutIdsIsFine) {
-  qd::Problem p = grid(4);
+  qd::approximate::Problem p = grid(4);
   EXPECT_EQ(message(p), "");
   // Without ids there are no seams.
-  const qd::Topology t = qd::validate(p);
+  const qd::common::Topology t = qd::approximate::validate(p);
   for (const char s : t.seam) EXPECT_FALSE(s);
 }
 
 TEST(Validate, MessagesAreOneLine) {
-  qd::Problem p = two_patches();
+  qd::approximate::Problem p = two_patches();
   p.F(10, 1) = 40;
   const std::string m = message(p);
   ASSERT_FALSE(m.empty());

@@ -11,6 +11,8 @@
 namespace qd {
 namespace {
 
+using namespace qd::common;
+
 bool is_permutation(const std::vector<int>& rank) {
   std::vector<int> sorted = rank;
   std::sort(sorted.begin(), sorted.end());

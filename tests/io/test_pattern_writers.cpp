@@ -15,9 +15,12 @@
 
 namespace {
 
+using namespace qd::common;
+using namespace qd::flatten;
+
 // Two pieces: a 4×2 rectangle with two notches (patch 3), a triangle (patch −1, label "-1.1").
-qd::Pattern two_pieces() {
-  qd::PatternPiece rect;
+qd::flatten::Pattern two_pieces() {
+  qd::flatten::PatternPiece rect;
   rect.patch = 3;
   rect.label = "3";
   rect.outlines = {{{0, 0}, {4, 0}, {4, 2}, {0, 2}}};
@@ -27,19 +30,19 @@ qd::Pattern two_pieces() {
   rect.name = "front";
   rect.quantity = 2;
   rect.mirrored = 1;
-  qd::PatternPiece tri;
+  qd::flatten::PatternPiece tri;
   tri.patch = -1;
   tri.label = "-1.1";
   tri.outlines = {{{5, 0}, {7, 0}, {6, 1.5}}};
   tri.cut_outlines = tri.outlines;
   tri.label_at = {6, 0.5};
-  return qd::make_pattern({rect, tri});
+  return qd::flatten::make_pattern({rect, tri});
 }
 
 // The same with a seam allowance of 0.5 on the rectangle: its cut line 5×3, notches cut through.
-qd::Pattern with_allowance() {
-  qd::Pattern pattern = two_pieces();
-  qd::PatternPiece& rect = pattern.pieces[0];
+qd::flatten::Pattern with_allowance() {
+  qd::flatten::Pattern pattern = two_pieces();
+  qd::flatten::PatternPiece& rect = pattern.pieces[0];
   rect.cut_outlines = {{{-0.5, -0.5}, {4.5, -0.5}, {4.5, 2.5}, {-0.5, 2.5}}};
   rect.notches = {{{4, 1}, {-1, 0}, {4.5, 1}}, {{2, 0}, {0, 1}, {2, -0.5}}};
   return pattern;
@@ -84,7 +87,7 @@ std::string xml_root(const std::string& xml) {
 TEST(SvgWriter, WellFormedWithOutlinesLabelsNotchesAndAScaleBar) {
   std::ostringstream out;
   out.imbue(std::locale("C"));
-  qd::write_svg(out, two_pieces(), "cm");
+  qd::io::write_svg(out, two_pieces(), "cm");
   const std::string svg = out.str();
   EXPECT_EQ(xml_root(svg), "svg");
   EXPECT_NE(svg.find("version=\"1.1\" width=\""), std::string::npos);  // cm: prints at 1:1
@@ -105,7 +108,7 @@ TEST(SvgWriter, WellFormedWithOutlinesLabelsNotchesAndAScaleBar) {
   const std::string d = svg.substr(notches, svg.find("/>", notches) - notches);
   EXPECT_EQ(std::count(d.begin(), d.end(), 'M'), 2);
   std::ostringstream plain;
-  qd::write_svg(plain, two_pieces());
+  qd::io::write_svg(plain, two_pieces());
   EXPECT_EQ(plain.str().find("version=\"1.1\" width=\""), std::string::npos);
   EXPECT_NE(plain.str().find(">1 model units</text>"), std::string::npos);
   EXPECT_NE(plain.str().find(">4 \u00d7 2 model units</text>"), std::string::npos);
@@ -113,7 +116,7 @@ TEST(SvgWriter, WellFormedWithOutlinesLabelsNotchesAndAScaleBar) {
 
 TEST(SvgWriter, WithAnAllowanceDrawsTheSewLineDashedInsideTheCutLine) {
   std::ostringstream out;
-  qd::write_svg(out, with_allowance(), "mm");
+  qd::io::write_svg(out, with_allowance(), "mm");
   const std::string svg = out.str();
   EXPECT_EQ(xml_root(svg), "svg");
   const size_t sew = svg.find("class=\"sew\" stroke-dasharray=");
@@ -124,16 +127,18 @@ TEST(SvgWriter, WithAnAllowanceDrawsTheSewLineDashedInsideTheCutLine) {
 }
 
 TEST(PieceMarks, GrainlineAndNotchTicks) {
-  const qd::PatternPiece rect = with_allowance().pieces[0];
-  const qd::Segment2 grain = qd::grainline(rect);  // +y through (2, 1), 60 % of the 3-unit extent
+  const qd::flatten::PatternPiece rect = with_allowance().pieces[0];
+  const qd::io::Segment2 grain =
+      qd::io::grainline(rect);  // +y through (2, 1), 60 % of the 3-unit extent
   EXPECT_LT((grain.from - Eigen::Vector2d(2, 0.1)).norm(), 1e-12);
   EXPECT_LT((grain.to - Eigen::Vector2d(2, 1.9)).norm(), 1e-12);
-  qd::PatternPiece sliver = rect;  // a piece 0.4 high: the grainline stays inside it
+  qd::flatten::PatternPiece sliver = rect;  // a piece 0.4 high: the grainline stays inside it
   sliver.outlines = {{{0, 0.8}, {4, 0.8}, {4, 1.2}, {0, 1.2}}};
-  const qd::Segment2 clipped = qd::grainline(sliver);
+  const qd::io::Segment2 clipped = qd::io::grainline(sliver);
   EXPECT_LT((clipped.from - Eigen::Vector2d(2, 0.82)).norm(), 1e-12);
   EXPECT_LT((clipped.to - Eigen::Vector2d(2, 1.18)).norm(), 1e-12);
-  const qd::Segment2 tick = qd::notch_tick(rect.notches[0], 0.25);  // from the cut line inward
+  const qd::io::Segment2 tick =
+      qd::io::notch_tick(rect.notches[0], 0.25);  // from the cut line inward
   EXPECT_LT((tick.from - Eigen::Vector2d(4.5, 1)).norm(), 1e-12);
   EXPECT_LT((tick.to - Eigen::Vector2d(3.75, 1)).norm(), 1e-12);
 }
@@ -151,9 +156,9 @@ std::vector<std::pair<int, std::string>> dxf_groups(const std::string& dxf) {
 }
 
 TEST(DxfWriter, GroupPairsReadBackToThePattern) {
-  const qd::Pattern pattern = two_pieces();
+  const qd::flatten::Pattern pattern = two_pieces();
   std::ostringstream out;
-  qd::write_dxf(out, pattern);
+  qd::io::write_dxf(out, pattern);
   const auto g = dxf_groups(out.str());
   ASSERT_GE(g.size(), 4u);
   EXPECT_EQ(g.front(), (std::pair<int, std::string>{0, "SECTION"}));
@@ -206,7 +211,7 @@ TEST(DxfWriter, GroupPairsReadBackToThePattern) {
 
 TEST(DxfWriter, WithAnAllowanceTheSewLineHasItsOwnLayer) {
   std::ostringstream out;
-  qd::write_dxf(out, with_allowance());
+  qd::io::write_dxf(out, with_allowance());
   const auto g = dxf_groups(out.str());
   std::map<std::string, int> polylines_on;
   for (size_t i = 0; i + 2 < g.size(); ++i)
@@ -252,9 +257,9 @@ AamaFile read_aama(const std::string& dxf) {
 }
 
 TEST(AamaDxfWriter, OneBlockPerPieceOnTheStandardLayersWithUnits) {
-  const qd::Pattern pattern = with_allowance();
+  const qd::flatten::Pattern pattern = with_allowance();
   std::ostringstream out;
-  qd::write_aama_dxf(out, pattern, "cm");
+  qd::io::write_aama_dxf(out, pattern, "cm");
   const AamaFile f = read_aama(out.str());
   for (const char* layer : {"1", "4", "7", "11", "14", "15"})
     EXPECT_NE(std::find(f.layers.begin(), f.layers.end(), layer), f.layers.end()) << layer;
@@ -273,20 +278,20 @@ TEST(AamaDxfWriter, OneBlockPerPieceOnTheStandardLayersWithUnits) {
     EXPECT_NE(std::find(f.texts.begin(), f.texts.end(), text), f.texts.end()) << text;
   EXPECT_EQ(f.measurement, "     1");
   // cm are written as mm: the boundary's area is 100 times the cut line's.
-  EXPECT_NEAR(qd::outline_area({f.boundaries.at("PIECE_3")}),
-              100 * qd::outline_area(pattern.pieces[0].cut_outlines), 1e-9);
-  EXPECT_NEAR(qd::outline_length({f.boundaries.at("PIECE_-1_1")}),
-              10 * qd::outline_length(pattern.pieces[1].cut_outlines), 1e-9);
+  EXPECT_NEAR(qd::flatten::outline_area({f.boundaries.at("PIECE_3")}),
+              100 * qd::flatten::outline_area(pattern.pieces[0].cut_outlines), 1e-9);
+  EXPECT_NEAR(qd::flatten::outline_length({f.boundaries.at("PIECE_-1_1")}),
+              10 * qd::flatten::outline_length(pattern.pieces[1].cut_outlines), 1e-9);
 }
 
 TEST(AamaDxfWriter, InchesAreEnglishAndAModelUnitIsRefused) {
   std::ostringstream out;
-  qd::write_aama_dxf(out, two_pieces(), "in");
+  qd::io::write_aama_dxf(out, two_pieces(), "in");
   const AamaFile f = read_aama(out.str());
   EXPECT_NE(std::find(f.texts.begin(), f.texts.end(), "Units: ENGLISH"), f.texts.end());
   EXPECT_EQ(f.measurement, "     0");
   std::ostringstream refused;
-  EXPECT_THROW(qd::write_aama_dxf(refused, two_pieces(), ""), qd::Error);
+  EXPECT_THROW(qd::io::write_aama_dxf(refused, two_pieces(), ""), qd::common::Error);
 }
 
 }  // namespace

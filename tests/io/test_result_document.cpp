@@ -12,9 +12,12 @@
 #include "segment/patch_color.h"
 
 using namespace qd;
-using namespace qd::meshio;
+using namespace qd::io;
 
 namespace {
+
+using namespace qd::common;
+using namespace qd::segment;
 
 // One triangle with float positions.
 MeshDocument triangle() {
@@ -47,7 +50,7 @@ std::string error_of(const std::function<void()>& f) {
 }
 
 TEST(ResultDocument, ApproximationWritesPositionsAndTheChosenQuality) {
-  Result r;
+  approximate::Result r;
   r.V = Positions::Zero(3, 3);
   r.V(2, 1) = 7;
   r.k_after = {-1, 0, 1};
@@ -81,8 +84,8 @@ TEST(ResultDocument, SegmentationWritesPatchIdsAndColoursPerFace) {
 }
 
 TEST(ResultDocument, FlatteningWritesTexcoordsAndStretchPerFace) {
-  FlattenResult r;
-  r.uv = WedgeUV::Zero(1, 6);
+  flatten::FlattenResult r;
+  r.uv = flatten::WedgeUV::Zero(1, 6);
   r.uv(0, 3) = 2.5;
   r.stretch = {0.01};
   const PlyTables ply = tables(flattened_document(triangle(), r));

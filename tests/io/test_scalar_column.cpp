@@ -5,7 +5,7 @@
 #include "io/ply_reader.h"
 #include "io/scalar_column.h"
 
-using namespace qd::meshio;
+using namespace qd::io;
 
 TEST(ScalarColumn, KeepsItsTypeAndValues) {
   const ScalarColumn c(ScalarType::UInt8, {0, 7, 255});
@@ -17,8 +17,8 @@ TEST(ScalarColumn, KeepsItsTypeAndValues) {
 
 TEST(ScalarColumn, RefusesAValueItsTypeCannotHold) {
   ScalarColumn c(ScalarType::UInt8);
-  EXPECT_THROW(c.push_back(256), qd::Error);
-  EXPECT_THROW(c.push_back(0.5), qd::Error);
+  EXPECT_THROW(c.push_back(256), qd::common::Error);
+  EXPECT_THROW(c.push_back(0.5), qd::common::Error);
   ScalarColumn f(ScalarType::Float32);
   f.push_back(0.1);
   EXPECT_EQ(f[0], static_cast<double>(0.1f));  // rounded to the nearest float on the way in

@@ -63,7 +63,7 @@ TEST(DeclaredParameters2020, ABadValueIsRefusedNamingTheParameter) {
   const auto refusal = [](const qdml::ParamValues& values) {
     try {
       qdml::declared_settings(qd::params::approximate_params(), values);
-    } catch (const qd::Error& e) {
+    } catch (const qd::common::Error& e) {
       return std::string(e.what());
     }
     return std::string();

@@ -92,7 +92,7 @@ TEST(Params, EngineParamsPutTheTolerancesInModelUnits) {
   qd::params::ApproximateSettings s;
   s.tolerance_ae = 0.5;
   s.patch_tolerance_ae = {{4, 2.0}};
-  qd::Params p = qd::params::engine_params(s, 0.1, {4, 4, 9});
+  qd::approximate::Params p = qd::params::engine_params(s, 0.1, {4, 4, 9});
   EXPECT_DOUBLE_EQ(p.tolerance, 0.05);
   EXPECT_DOUBLE_EQ(p.patch_tolerance.at(4), 0.2);
   s.tolerance_model = 0.3;

@@ -9,6 +9,8 @@
 namespace qd::pdf {
 namespace {
 
+using namespace qd::common;
+
 const Tile& at(const TileGrid& grid, int row, int column) {
   return grid.tiles[static_cast<std::size_t>(row * grid.columns + column)];
 }

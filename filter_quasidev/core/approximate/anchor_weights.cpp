@@ -6,9 +6,10 @@
 #include <cstdint>
 #include <nanoflann.hpp>
 
+#include "approximate/common_names.h"
 #include "common/parallel_for.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // nanoflann view of the constrained vertices.
@@ -55,4 +56,4 @@ std::vector<double> mls_weights(const Positions& V, const std::vector<char>& fix
   return w;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -3,9 +3,10 @@
 
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // w(v) = 1 / (d(v, V_cstr)/AE + ε²), ε = 0.001, with d the Euclidean distance to the nearest
 // constrained vertex measured in units of the average edge length AE (keeps the weight
@@ -15,4 +16,4 @@ namespace qd {
 std::vector<double> mls_weights(const Positions& V, const std::vector<char>& fixed, double ae,
                                 int threads = 1);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -4,9 +4,10 @@
 #include <cmath>
 #include <map>
 
+#include "approximate/common_names.h"
 #include "common/metrics.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // Position of local vertex u in the star of row r (appended when new).
@@ -83,4 +84,4 @@ DefectLinearisation linearise_defects(const DefectStars& rows, const GroupMesh& 
   return lin;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -20,11 +20,12 @@
 
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/group_mesh.h"
 #include "common/mesh.h"
 #include "common/metrics.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // The rows of a group, fixed while it is solved: row r linearises the angle defect of local
 // vertex vertex[r]; its star (that vertex first, then its neighbours) is
@@ -54,4 +55,4 @@ DefectLinearisation linearise_defects(const DefectStars& rows, const GroupMesh& 
                                       const VertexFaces& incident, const Positions& X,
                                       const VertexAngles& angles);
 
-}  // namespace qd
+}  // namespace qd::approximate

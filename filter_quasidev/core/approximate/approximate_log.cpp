@@ -7,7 +7,7 @@
 #include "approximate/report_text.h"
 #include "approximate/segment_first.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // Above this fit residual the patch is far from one developable surface: the paper's curve
@@ -130,4 +130,4 @@ std::string segmented_note(const std::string& why, int count, const SettingText&
          " keeps it one patch)";
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

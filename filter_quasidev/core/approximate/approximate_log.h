@@ -10,7 +10,7 @@
 #include "approximate/setting_text.h"
 #include "approximate/solve_groups.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // The log of a solve: its warnings, the patches solved in another's group, the rounds solved
 // again (solve_schedule.h), a line per patch, the total and, when little was removed, advice.
@@ -26,4 +26,4 @@ std::string segmented_note(const std::string& why, int count, const SettingText&
 // G_ABD before → after, the last iteration's ratios (Eqs. 19–20), displacement, time.
 std::string patch_log_line(const PatchReport& p, double ae);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -5,9 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "approximate/common_names.h"
 #include "common/error.h"
 
-namespace qd {
+namespace qd::approximate {
 
 namespace {
 
@@ -187,4 +188,4 @@ BSpline2 fit_bspline(const std::vector<Vec2>& points, const std::vector<double>&
   return BSpline2(std::move(control), periodic, period_shift);
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

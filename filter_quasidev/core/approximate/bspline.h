@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-namespace qd {
+namespace qd::approximate {
 
 using Vec2 = Eigen::Vector2d;
 
@@ -60,9 +60,9 @@ std::vector<double> chord_length_params(const std::vector<Vec2>& points, bool cl
 // Least-squares fit with `control_count` control points (>= 4) minimising
 //   Σ_j |c(u_j) − q_j|² + smoothing · Σ_i |P_{i−1} − 2 P_i + P_{i+1}|²   (P&T Eq. 9.63 + penalty).
 // smoothing = 0 gives the plain least-squares fit (then enough data must lie in every span).
-// Throws qd::Error when the system is singular.
+// Throws qd::common::Error when the system is singular.
 BSpline2 fit_bspline(const std::vector<Vec2>& points, const std::vector<double>& params,
                      int control_count, double smoothing, bool periodic,
                      const Vec2& period_shift = Vec2::Zero());
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -4,11 +4,12 @@
 #include <algorithm>
 
 #include "approximate/anchor_weights.h"
+#include "approximate/common_names.h"
 #include "common/parallel_for.h"
 #include "common/stage_timer.h"
 #include "common/vertex_order.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // Shape and centroid rows of Eq. (13) per coordinate, as a 3×3 corner matrix: Σ rᵀr over the
@@ -327,4 +328,4 @@ Positions DeformationSystem::solve(const Positions& ref) {
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -31,12 +31,13 @@
 #include <vector>
 
 #include "approximate/angle_defect.h"
+#include "approximate/common_names.h"
 #include "approximate/group_mesh.h"
 #include "approximate/result.h"
 #include "approximate/solve_strategy.h"
 #include "common/block_pattern.h"
 
-namespace qd {
+namespace qd::approximate {
 
 class DeformationSystem {
  public:
@@ -108,4 +109,4 @@ class DeformationSystem {
   std::optional<SolveStrategy> strategy_;  // chosen once the system's size is known
 };
 
-}  // namespace qd
+}  // namespace qd::approximate

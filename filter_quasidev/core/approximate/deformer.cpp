@@ -4,11 +4,12 @@
 #include <cmath>
 #include <numeric>
 
+#include "approximate/common_names.h"
 #include "approximate/deformation_system.h"
 #include "common/metrics.h"
 #include "common/stage_timer.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 std::vector<int> all_indices(Eigen::Index n) {
@@ -267,4 +268,4 @@ DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
   return run.finish();
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

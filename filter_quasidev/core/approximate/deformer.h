@@ -27,12 +27,13 @@
 #include <string>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/group_mesh.h"
 #include "approximate/params.h"
 #include "approximate/result.h"
 #include "common/progress.h"
 
-namespace qd {
+namespace qd::approximate {
 
 constexpr double kRiseAllowance = 0.1;  // accepted G_ABD ≤ (1 + this) · best so far
 constexpr double kMinStepScale = 1.0 / 16;
@@ -118,4 +119,4 @@ Positions clamp_step(const GroupMesh& group, const Positions& current, const Pos
 // Number of faces whose normal at V points against their normal at V0 (or became degenerate).
 int flipped_faces(const Triangles& F, const Positions& V0, const Positions& V);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-namespace qd {
+namespace qd::approximate {
 
 namespace {
 
@@ -265,4 +265,4 @@ std::vector<SkeletonPoint> skeleton_pixels(const DigitalImage& im) {
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -9,7 +9,7 @@
 
 #include "approximate/bspline.h"
 
-namespace qd {
+namespace qd::approximate {
 
 struct DigitalImage {
   int width = 0, height = 0;    // pixels along θ (x) and φ (y)
@@ -46,4 +46,4 @@ struct SkeletonPoint {
 // the most negative eigenvalue), with the sub-pixel ridge position.
 std::vector<SkeletonPoint> skeleton_pixels(const DigitalImage& image);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -2,9 +2,10 @@
 
 #include <cmath>
 
+#include "approximate/common_names.h"
 #include "common/parallel_for.h"
 
-namespace qd {
+namespace qd::approximate {
 
 FramePreconditioner::FramePreconditioner(const BlockPattern& pattern, SolverKind solver,
                                          int threads)
@@ -96,4 +97,4 @@ Eigen::VectorXd FramePreconditioner::apply(const Eigen::VectorXd& r) const {
   return z;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

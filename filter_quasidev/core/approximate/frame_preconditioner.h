@@ -12,11 +12,12 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "common/block_pattern.h"
 #include "common/mesh.h"
 #include "common/positive_definite_factor.h"
 
-namespace qd {
+namespace qd::approximate {
 
 class FramePreconditioner {
  public:
@@ -43,4 +44,4 @@ class FramePreconditioner {
   PositiveDefiniteFactor normal_, tangent_;
 };
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -8,9 +8,10 @@
 #include <string>
 #include <utility>
 
+#include "approximate/common_names.h"
 #include "common/error.h"
 
-namespace qd {
+namespace qd::approximate {
 
 namespace {
 
@@ -235,4 +236,4 @@ Vec3 sphere_point(double theta, double phi) {
   return Vec3(s * std::cos(theta), s * std::sin(theta), std::cos(phi));
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -8,9 +8,10 @@
 #include <vector>
 
 #include "approximate/bspline.h"
+#include "approximate/common_names.h"
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // Area-weighted moments of the DEGI.
 struct GaussMoments {
@@ -20,7 +21,7 @@ struct GaussMoments {
 };
 
 // Checks the input (sizes, finite unit normals, areas >= 0, at least 3 positive-area samples)
-// and returns the moments. Throws qd::Error with a user-facing message otherwise.
+// and returns the moments. Throws qd::common::Error with a user-facing message otherwise.
 GaussMoments gauss_moments(const std::vector<Vec3>& normals, const std::vector<double>& areas);
 
 // True when the samples fill the sphere: |Σ a n|/Σ a < 0.1 and the smallest eigenvalue of
@@ -77,4 +78,4 @@ bool clear_of_poles(const std::vector<Vec3>& normals, const std::vector<double>&
 Vec2 theta_phi(const Vec3& m);
 Vec3 sphere_point(double theta, double phi);
 
-}  // namespace qd
+}  // namespace qd::approximate

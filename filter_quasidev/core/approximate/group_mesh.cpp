@@ -4,7 +4,7 @@
 #include <cassert>
 #include <limits>
 
-namespace qd {
+namespace qd::approximate {
 
 VertexFaces::VertexFaces(const Triangles& F, Eigen::Index vertex_count)
     : start(static_cast<size_t>(vertex_count) + 1, 0), faces(static_cast<size_t>(F.size())) {
@@ -138,4 +138,4 @@ GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vecto
   return g;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -7,12 +7,13 @@
 
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/params.h"
 #include "approximate/problem.h"
 #include "common/mesh.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // Faces incident to each vertex, in compressed rows: faces[start[v] .. start[v+1]).
 struct VertexFaces {
@@ -59,4 +60,4 @@ GroupMesh extract_group(const Positions& V, const Triangles& F, const std::vecto
                         const std::vector<char>& constrained, const std::vector<char>& interior,
                         const VertexFaces& incident, const Params& params);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <chrono>
 
+#include "approximate/common_names.h"
 #include "common/stage_timer.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // With a total tolerance, what each vertex has left of its budget after the moves of earlier
@@ -119,4 +120,4 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
   return run;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -7,6 +7,7 @@
 #include <map>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/deformer.h"
 #include "approximate/group_mesh.h"
 #include "approximate/params.h"
@@ -14,7 +15,7 @@
 #include "approximate/term_race.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // What every group of a solve shares.
 struct SolveInput {
@@ -48,4 +49,4 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
                    const DecidedTerms& decided, bool one_unit,
                    const std::function<void(double)>& progress);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -4,9 +4,10 @@
 
 #include <map>
 
+#include "approximate/common_names.h"
 #include "common/solver_kind.h"
 
-namespace qd {
+namespace qd::approximate {
 
 enum class SeamMode { Fixed, Free };       // seam vertices fixed (paper) or shared unknowns
 enum class ToleranceMode { Step, Total };  // δ_err caps each step (paper) or the total move
@@ -51,4 +52,4 @@ struct Params {
                                            // inside); 0 = all cores
 };
 
-}  // namespace qd
+}  // namespace qd::approximate

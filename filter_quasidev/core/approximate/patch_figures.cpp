@@ -6,9 +6,10 @@
 #include <numeric>
 #include <unordered_set>
 
+#include "approximate/common_names.h"
 #include "common/parallel_for.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 std::vector<int> indices(size_t n) {
@@ -80,9 +81,9 @@ void measure_result(Result& r, std::map<int, PatchReport>& reports, const Positi
   r.abd_reduction = reduction(r.total_before.g_abd, r.total_after.g_abd);
 }
 
-}  // namespace qd
+}  // namespace qd::approximate
 
-namespace qd {
+namespace qd::approximate {
 
 double held_curvature_share(const std::vector<double>& k, const std::vector<char>& interior,
                             const std::vector<char>& constrained) {
@@ -94,4 +95,4 @@ double held_curvature_share(const std::vector<double>& k, const std::vector<char
   return all > 0 ? 100.0 * on_held / all : 0.0;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -8,7 +8,7 @@
 
 #include "approximate/result.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // Fills the reports' sizes and figures and r's per-vertex and total figures. r.V holds the
 // result; V0 the input; initial_target: per face; constrained, interior: per vertex.
@@ -17,12 +17,12 @@ void measure_result(Result& r, std::map<int, PatchReport>& reports, const Positi
                     const std::vector<Vec3>& initial_target, const std::vector<char>& interior,
                     const std::vector<char>& constrained, size_t threads);
 
-}  // namespace qd
+}  // namespace qd::approximate
 
-namespace qd {
+namespace qd::approximate {
 
 // Percent of the input's G_ABD (k: K per vertex) on interior vertices that no group moves.
 double held_curvature_share(const std::vector<double>& k, const std::vector<char>& interior,
                             const std::vector<char>& constrained);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -3,11 +3,12 @@
 #include <map>
 #include <memory>
 
+#include "approximate/common_names.h"
 #include "approximate/validate.h"
 #include "common/error.h"
 #include "common/metrics.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // The model of a patch Step 1 could not fit (e.g. its normals fill the sphere): every face
@@ -147,4 +148,4 @@ std::vector<char> group_defect_rows(const GroupMesh& g, const std::vector<PatchF
   return has_row;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -12,7 +12,7 @@
 #include "approximate/result.h"
 #include "approximate/target_normals.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // Below this fit residual a planar patch is already developable: nothing to do.
 constexpr double kPlanarResidualDeg = 0.05;
@@ -67,4 +67,4 @@ Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, Ta
 // a patch with defect rows (empty when there is none).
 std::vector<char> group_defect_rows(const GroupMesh& g, const std::vector<PatchFit>& fits);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -4,7 +4,7 @@
 
 #include "approximate/group_mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 std::vector<CandidateReport> candidate_reports(const std::vector<CandidateFigures>& race,
@@ -110,4 +110,4 @@ SolveReports patch_reports(const SolveSchedule& s, const Params& params, size_t 
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -9,7 +9,7 @@
 #include "approximate/result.h"
 #include "approximate/solve_schedule.h"
 
-namespace qd {
+namespace qd::approximate {
 
 struct SolveReports {
   std::map<int, PatchReport> patches;  // by patch id
@@ -21,4 +21,4 @@ struct SolveReports {
 
 SolveReports patch_reports(const SolveSchedule& s, const Params& params, size_t faces);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -3,10 +3,11 @@
 
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/params.h"
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 struct Problem {
   Positions V;
@@ -16,4 +17,4 @@ struct Problem {
   Params params;
 };
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -8,6 +8,7 @@
 #include <chrono>
 
 #include "approximate/approximate_log.h"
+#include "approximate/common_names.h"
 #include "approximate/group_mesh.h"
 #include "approximate/patch_figures.h"
 #include "approximate/patch_reports.h"
@@ -20,7 +21,7 @@
 #include "common/thread_count.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -112,4 +113,4 @@ Result approximate(const Problem& problem, const Progress& progress, const Setti
   return r;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

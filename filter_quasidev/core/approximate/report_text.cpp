@@ -5,7 +5,7 @@
 #include "approximate/deformer.h"
 #include "approximate/patch_fit.h"
 
-namespace qd {
+namespace qd::approximate {
 
 std::string printf_text(const char* fmt, double a, double b, double c, double d) {
   char buf[256];
@@ -133,4 +133,4 @@ std::string stop_reason_text(const std::vector<PassStop>& stops) {
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

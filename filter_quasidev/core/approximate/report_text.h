@@ -7,7 +7,7 @@
 
 #include "approximate/result.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // fmt (printf style) with up to four numbers.
 std::string printf_text(const char* fmt, double a, double b = 0, double c = 0, double d = 0);
@@ -30,4 +30,4 @@ std::string pass_stop_text(const PassStop& s);
 // The stops of every pass: "seams held: ...; then seams free: ...".
 std::string stop_reason_text(const std::vector<PassStop>& stops);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -4,10 +4,11 @@
 #include <string>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "common/mesh.h"
 #include "common/metrics.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // The developability rows a patch gets: the paper's normal targets (Eq. 13), the angle-defect
 // rows (angle_defect.h), both, or none (planar, too small, or not fitted with Curve asked).
@@ -127,4 +128,4 @@ struct Result {
   std::vector<std::string> log;       // human-readable lines: the warnings, one per patch, total
 };
 
-}  // namespace qd
+}  // namespace qd::approximate

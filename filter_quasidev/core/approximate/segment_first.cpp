@@ -2,12 +2,13 @@
 
 #include <algorithm>
 
+#include "approximate/common_names.h"
 #include "approximate/target_normals.h"
 #include "common/error.h"
 #include "common/metrics.h"
 #include "segment/segment.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // Step 1 fits one Gauss-image curve to the whole mesh.
@@ -40,16 +41,16 @@ SegmentFirstPlan plan_segment_first(const Problem& problem, const Topology& topo
 }
 
 Problem segmented(const Problem& problem) {
-  SegmentProblem s;
+  segment::SegmentProblem s;
   s.V = problem.V;
   s.F = problem.F;
   s.params.max_error_deg = kSegmentFirstMaxErrorDeg;
   s.params.threads = problem.params.threads;
-  const SegmentResult r = segment(s);
+  const segment::SegmentResult r = segment::segment(s);
   Problem out = problem;
   out.patch = r.patch;
   out.params.seams = SeamMode::Free;
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/problem.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // D-Charts' largest fit error for this path. At 30° the shared spot, rocker arm and cow split
 // into 26, 59 and 77 patches (at the segmentation's own default of 20°: 43, 142 and 140), and
@@ -29,8 +30,8 @@ struct SegmentFirstPlan {
 // Whether the problem takes the segment-first path, and why.
 SegmentFirstPlan plan_segment_first(const Problem& problem, const Topology& topology);
 
-// The problem with the segmentation's patch ids and free seams. Throws qd::Error when the
+// The problem with the segmentation's patch ids and free seams. Throws qd::common::Error when the
 // segmentation cannot run on the mesh.
 Problem segmented(const Problem& problem);
 
-}  // namespace qd
+}  // namespace qd::approximate

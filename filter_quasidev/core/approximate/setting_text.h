@@ -6,11 +6,11 @@
 #include <functional>
 #include <string>
 
-namespace qd {
+namespace qd::approximate {
 
 using SettingText = std::function<std::string(const std::string& name, const std::string& value)>;
 
 // f(name, value), or "name = value" without a front end.
 std::string setting_text(const SettingText& f, const std::string& name, const std::string& value);
 
-}  // namespace qd
+}  // namespace qd::approximate

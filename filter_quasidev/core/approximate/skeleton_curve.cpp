@@ -6,7 +6,7 @@
 #include <numeric>
 #include <tuple>
 
-namespace qd {
+namespace qd::approximate {
 
 namespace {
 
@@ -305,4 +305,4 @@ void extend_ends(std::vector<Vec2>& polyline, const std::vector<Vec2>& samples, 
   }
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -10,7 +10,7 @@
 
 #include "approximate/digital_image.h"
 
-namespace qd {
+namespace qd::approximate {
 
 struct OrderedSkeleton {
   std::vector<Vec2> points;   // pixel coordinates in curve order; x unwrapped on periodic images
@@ -31,4 +31,4 @@ OrderedSkeleton order_skeleton(const std::vector<SkeletonPoint>& points, int wid
 void extend_ends(std::vector<Vec2>& polyline, const std::vector<Vec2>& samples, double reach,
                  double period, double trim);
 
-}  // namespace qd
+}  // namespace qd::approximate

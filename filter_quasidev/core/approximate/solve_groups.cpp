@@ -5,9 +5,10 @@
 #include <map>
 #include <tuple>
 
+#include "approximate/common_names.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // The two faces of an edge that has two, and whether each runs it from the lower vertex.
@@ -116,4 +117,4 @@ SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

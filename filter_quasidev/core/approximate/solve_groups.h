@@ -12,9 +12,10 @@
 
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 struct PatchMerge {
   int patch = 0;  // a patch id
@@ -32,4 +33,4 @@ struct SolveGroups {
 SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
                          const std::vector<char>& boundary, bool mostly_seam);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cassert>
 
-namespace qd {
+namespace qd::approximate {
 
 std::vector<std::vector<size_t>> solve_rounds(const std::vector<std::vector<int>>& groups,
                                               const Triangles& F, const std::vector<char>& held) {
@@ -44,4 +44,4 @@ std::vector<std::vector<size_t>> solve_rounds(const std::vector<std::vector<int>
   return rounds;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -8,9 +8,10 @@
 
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // groups: the faces of each group; held: per vertex, 1 = no group of the pass moves it.
 // Returns rounds of group indices; every group is in exactly one round, and no two groups in
@@ -18,4 +19,4 @@ namespace qd {
 std::vector<std::vector<size_t>> solve_rounds(const std::vector<std::vector<int>>& groups,
                                               const Triangles& F, const std::vector<char>& held);
 
-}  // namespace qd
+}  // namespace qd::approximate

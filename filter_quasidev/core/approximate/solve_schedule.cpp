@@ -7,13 +7,14 @@
 #include <numeric>
 #include <thread>
 
+#include "approximate/common_names.h"
 #include "approximate/solve_rounds.h"
 #include "common/metrics.h"
 #include "common/parallel_for.h"
 #include "common/serial_libraries.h"
 #include "common/thread_count.h"
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 struct Pass {
@@ -170,4 +171,4 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

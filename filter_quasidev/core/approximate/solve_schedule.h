@@ -9,11 +9,12 @@
 
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/group_run.h"
 #include "approximate/result.h"
 #include "common/progress.h"
 
-namespace qd {
+namespace qd::approximate {
 
 struct ScheduledRun {
   GroupRun run;
@@ -32,4 +33,4 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
                            const std::vector<char>& constrained, const std::vector<char>& held,
                            const Progress& progress);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -1,9 +1,10 @@
 #include "approximate/solve_strategy.h"
 
+#include "approximate/common_names.h"
 #include "common/conjugate_gradients.h"
 #include "common/stage_timer.h"
 
-namespace qd {
+namespace qd::approximate {
 
 SolveStrategy::SolveStrategy(const Params& params, long unknowns, bool quasi_definite,
                              const BlockPattern& pattern, StageTimes& times)
@@ -81,4 +82,4 @@ Eigen::VectorXd SolveStrategy::solve_iteratively(
   return solve_directly(M, b);
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

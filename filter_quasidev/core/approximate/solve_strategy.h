@@ -19,6 +19,7 @@
 #include <memory>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/frame_preconditioner.h"
 #include "approximate/params.h"
 #include "approximate/result.h"
@@ -26,7 +27,7 @@
 #include "common/positive_definite_factor.h"
 #include "common/quasi_definite_factor.h"
 
-namespace qd {
+namespace qd::approximate {
 
 constexpr long kIterativeFromUnknowns = 10000;  // SolveMethod::Auto: CG from here on
 constexpr double kCgTolerance = 1e-2;
@@ -77,4 +78,4 @@ class SolveStrategy {
   Eigen::VectorXd last_solution_;  // of the last iterative solve: the next one's warm start
 };
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -12,13 +12,14 @@
 #include <vector>
 
 #include "approximate/bspline.h"
+#include "approximate/common_names.h"
 #include "approximate/digital_image.h"
 #include "approximate/gauss_image.h"
 #include "approximate/skeleton_curve.h"
 #include "common/error.h"
 #include "common/parallel_for.h"
 
-namespace qd {
+namespace qd::approximate {
 
 namespace {
 
@@ -319,4 +320,4 @@ TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double
   return fit;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

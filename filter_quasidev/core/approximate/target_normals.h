@@ -5,10 +5,11 @@
 #include <memory>
 #include <vector>
 
+#include "approximate/common_names.h"
 #include "approximate/result.h"
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 // The fitted Gauss-image model of one patch: the spherical curve c_3D, or a single
 // direction when the Gauss image is a point (planar patch).
@@ -41,9 +42,9 @@ std::vector<Vec3> project_normals(const GaussModel& model, const std::vector<Vec
                                   size_t threads);
 
 // Fits the model to the samples (normals[i] unit, areas[i] >= 0) and projects every sample
-// (on up to `threads` threads). Throws qd::Error when the samples fill the sphere (far from
+// (on up to `threads` threads). Throws qd::common::Error when the samples fill the sphere (far from
 // developable) or are too few.
 TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas,
                       size_t threads = 1);
 
-}  // namespace qd
+}  // namespace qd::approximate

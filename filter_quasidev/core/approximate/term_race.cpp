@@ -4,7 +4,7 @@
 #include <cassert>
 #include <cmath>
 
-namespace qd {
+namespace qd::approximate {
 namespace {
 
 // a leads b: less G_ABD, or as much and less mean displacement.
@@ -100,4 +100,4 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -24,7 +24,7 @@
 #include "approximate/deformer.h"
 #include "approximate/patch_fit.h"
 
-namespace qd {
+namespace qd::approximate {
 
 constexpr double kDropWorstShare = 0.1;   // at the default maxIter of 30: after 3 rounds
 constexpr double kKeepLeaderShare = 0.4;  // and after 12
@@ -54,4 +54,4 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
                        const std::function<Deformation(Term)>& start, int max_iter,
                        double meaningful, const std::function<void(double)>& progress);
 
-}  // namespace qd
+}  // namespace qd::approximate

@@ -1,16 +1,17 @@
 // Checks of a Problem before any work (docs/design.md "Bad input"): the mesh checks of
-// common/validate_mesh.h and those of the approximation, in one order; each throws qd::Error
-// with one line saying what is wrong and what to do. All checks are O(n log n).
+// common/validate_mesh.h and those of the approximation, in one order; each throws
+// qd::common::Error with one line saying what is wrong and what to do. All checks are O(n log n).
 #include "approximate/validate.h"
 
 #include <cmath>
 #include <string>
 
+#include "approximate/common_names.h"
 #include "common/error.h"
 #include "common/message_text.h"
 #include "common/validate_mesh.h"
 
-namespace qd {
+namespace qd::approximate {
 
 namespace {
 
@@ -128,4 +129,4 @@ std::vector<std::string> warnings(const Topology& t) {
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::approximate

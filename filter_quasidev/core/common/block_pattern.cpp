@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace qd {
+namespace qd::common {
 
 BlockPattern lower_pattern(int nodes, const std::vector<std::pair<int, int>>& edges) {
   std::vector<int> start(static_cast<size_t>(nodes) + 1, 0);
@@ -46,4 +46,4 @@ Eigen::SparseMatrix<double> scalar_lower(const BlockPattern& p) {
   return K;
 }
 
-}  // namespace qd
+}  // namespace qd::common

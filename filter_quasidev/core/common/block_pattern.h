@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-namespace qd {
+namespace qd::common {
 
 struct BlockPattern {
   std::vector<int> column_start;  // off-diagonal blocks of block column k: [start[k], start[k+1])
@@ -39,4 +39,4 @@ inline int block_entry(const int* outer, const BlockPattern& p, int k, int s, in
   return outer[3 * k + j] + (3 - j) + 3 * (s - p.begin(k)) + i;
 }
 
-}  // namespace qd
+}  // namespace qd::common

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <cmath>
 
-namespace qd {
+namespace qd::common {
 
 constexpr int kCgPatience = 10;
 
@@ -61,4 +61,4 @@ CgOutcome conjugate_gradients(const Multiply& multiply, const Precondition& prec
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::common

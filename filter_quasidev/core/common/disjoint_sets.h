@@ -6,7 +6,7 @@
 #include <numeric>
 #include <vector>
 
-namespace qd {
+namespace qd::common {
 
 class DisjointSets {
  public:
@@ -45,4 +45,4 @@ class DisjointSets {
   std::vector<int> parent_;
 };
 
-}  // namespace qd
+}  // namespace qd::common

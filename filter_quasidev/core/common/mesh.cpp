@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstddef>
 
-namespace qd {
+namespace qd::common {
 
 namespace {
 
@@ -73,4 +73,4 @@ int corner_of(const Triangles& F, int f, int v) {
   return -1;
 }
 
-}  // namespace qd
+}  // namespace qd::common

@@ -5,7 +5,7 @@
 #include <Eigen/Geometry>  // Vec3::cross
 #include <vector>
 
-namespace qd {
+namespace qd::common {
 
 using Vec3 = Eigen::Vector3d;
 using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3>;  // one row per vertex
@@ -36,4 +36,4 @@ std::vector<FaceEdge> sorted_face_edges(const Triangles& F, Eigen::Index vertex_
 double average_edge_length(const Positions& V, const Triangles& F,
                            const std::vector<int>& faces = {});
 
-}  // namespace qd
+}  // namespace qd::common

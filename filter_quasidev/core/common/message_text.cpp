@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-namespace qd {
+namespace qd::common {
 
 std::string to_text(int n) { return std::to_string(n); }
 
@@ -16,4 +16,4 @@ std::string count_text(int n, const char* one, const char* many) {
   return to_text(n) + " " + (n == 1 ? one : many);
 }
 
-}  // namespace qd
+}  // namespace qd::common

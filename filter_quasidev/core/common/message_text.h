@@ -3,7 +3,7 @@
 
 #include <string>
 
-namespace qd {
+namespace qd::common {
 
 std::string to_text(int n);
 // As an ostream writes it by default (6 significant digits).
@@ -11,4 +11,4 @@ std::string to_text(double x);
 // "1 face", "3 faces".
 std::string count_text(int n, const char* one, const char* many);
 
-}  // namespace qd
+}  // namespace qd::common

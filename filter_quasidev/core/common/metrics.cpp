@@ -9,7 +9,7 @@
 
 #include "common/error.h"
 
-namespace qd {
+namespace qd::common {
 
 namespace {
 
@@ -146,4 +146,4 @@ Figures measure(const VertexAngles& angles, const Positions& V0, const Positions
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::common

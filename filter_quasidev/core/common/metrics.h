@@ -7,7 +7,7 @@
 
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::common {
 
 // Figures of one set of faces/vertices at one moment (docs/design.md "Metrics").
 struct Figures {
@@ -49,4 +49,4 @@ Figures measure(const VertexAngles& angles, const Positions& V0, const Positions
                 const Triangles& F, const std::vector<int>& vertices, const std::vector<int>& faces,
                 const std::vector<Vec3>& targets, const std::vector<int>& moved);
 
-}  // namespace qd
+}  // namespace qd::common

@@ -12,7 +12,7 @@
 
 #include "common/serial_libraries.h"
 
-namespace qd {
+namespace qd::common {
 
 template <typename Work>
 void parallel_for(size_t n, size_t threads, const Work& work) {
@@ -49,4 +49,4 @@ void parallel_ranges(size_t n, size_t threads, size_t chunk, const Work& work) {
                [&](size_t r) { work(r * chunk, std::min(n, (r + 1) * chunk)); });
 }
 
-}  // namespace qd
+}  // namespace qd::common

@@ -5,7 +5,7 @@
 #include <Eigen/CholmodSupport>
 #endif
 
-namespace qd {
+namespace qd::common {
 namespace {
 
 using Matrix = Eigen::SparseMatrix<double>;
@@ -73,4 +73,4 @@ std::unique_ptr<SparseFactor::Backend> PositiveDefiniteFactor::make(FactorBacken
 #endif
 }
 
-}  // namespace qd
+}  // namespace qd::common

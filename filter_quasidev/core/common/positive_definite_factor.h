@@ -7,7 +7,7 @@
 
 #include "common/sparse_factor.h"
 
-namespace qd {
+namespace qd::common {
 
 class PositiveDefiniteFactor : public SparseFactor {
  public:
@@ -25,4 +25,4 @@ class PositiveDefiniteFactor : public SparseFactor {
   [[maybe_unused]] bool many_solves_;  // read by the CHOLMOD back end only
 };
 
-}  // namespace qd
+}  // namespace qd::common

@@ -4,8 +4,8 @@
 #include <functional>
 #include <string>
 
-namespace qd {
+namespace qd::common {
 
 using Progress = std::function<void(int percent, const std::string& message)>;
 
-}  // namespace qd
+}  // namespace qd::common

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace qd {
+namespace qd::common {
 
 namespace {
 
@@ -59,4 +59,4 @@ std::array<unsigned char, 3> ramp_color(double value, const QualityRange& range)
   return {0, to_byte(4 - s), 255};
 }
 
-}  // namespace qd
+}  // namespace qd::common

@@ -9,7 +9,7 @@
 #include <array>
 #include <vector>
 
-namespace qd {
+namespace qd::common {
 
 struct QualityRange {
   double lo = 0;
@@ -38,4 +38,4 @@ QualityRange symmetric_quality_range(const std::vector<double>& quality, double 
 // non-finite value gives grey.
 std::array<unsigned char, 3> ramp_color(double value, const QualityRange& range);
 
-}  // namespace qd
+}  // namespace qd::common

@@ -5,7 +5,7 @@
 #include "common/quasi_definite_ldlt.h"
 #endif
 
-namespace qd {
+namespace qd::common {
 namespace {
 
 #ifdef QD_WITH_CHOLMOD
@@ -48,4 +48,4 @@ std::unique_ptr<SparseFactor::Backend> QuasiDefiniteFactor::make(FactorBackend k
 #endif
 }
 
-}  // namespace qd
+}  // namespace qd::common

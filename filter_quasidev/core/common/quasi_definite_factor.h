@@ -8,7 +8,7 @@
 
 #include "common/sparse_factor.h"
 
-namespace qd {
+namespace qd::common {
 
 class QuasiDefiniteFactor : public SparseFactor {
  public:
@@ -20,4 +20,4 @@ class QuasiDefiniteFactor : public SparseFactor {
   const char* failure() const override { return "has a vanishing pivot"; }
 };
 
-}  // namespace qd
+}  // namespace qd::common

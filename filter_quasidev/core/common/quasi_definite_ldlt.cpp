@@ -16,7 +16,7 @@ void dtrsm_(const char* side, const char* uplo, const char* ta, const char* diag
             const int* ldb);
 }
 
-namespace qd {
+namespace qd::common {
 namespace {
 
 constexpr int kUnblocked = QuasiDefiniteLdlt::kUnblocked;
@@ -291,4 +291,4 @@ QuasiDefiniteLdlt::Panel QuasiDefiniteLdlt::panel(int s) const {
           rows_.data() + row_start_[su], values_.data() + value_start_[su]};
 }
 
-}  // namespace qd
+}  // namespace qd::common

@@ -14,7 +14,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-namespace qd {
+namespace qd::common {
 
 class QuasiDefiniteLdlt {
  public:
@@ -55,4 +55,4 @@ class QuasiDefiniteLdlt {
   std::vector<double> values_;     // unit-lower L (diagonal entries hold D)
 };
 
-}  // namespace qd
+}  // namespace qd::common

@@ -2,7 +2,7 @@
 
 #include <dlfcn.h>
 
-namespace qd {
+namespace qd::common {
 namespace {
 
 using GetCount = int (*)();
@@ -43,4 +43,4 @@ SerialLibraries::~SerialLibraries() {
   if (saved_omp_levels_ >= 0) loaded<SetCount>("omp_set_max_active_levels")(saved_omp_levels_);
 }
 
-}  // namespace qd
+}  // namespace qd::common

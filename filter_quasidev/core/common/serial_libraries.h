@@ -14,7 +14,7 @@
 // once would each open CHOLMOD's 4-thread regions.
 #pragma once
 
-namespace qd {
+namespace qd::common {
 
 // OpenMP regions opened from the calling thread run on it alone (a thread the engine started).
 void serial_openmp_in_this_thread();
@@ -31,4 +31,4 @@ class SerialLibraries {
   int saved_omp_levels_ = -1;   // OpenMP's max-active-levels before; -1: OpenMP is not loaded
 };
 
-}  // namespace qd
+}  // namespace qd::common

@@ -2,10 +2,10 @@
 // SolverKind::Auto takes CHOLMOD for a positive-definite matrix (docs/solvers.md).
 #pragma once
 
-namespace qd {
+namespace qd::common {
 
 enum class SolverKind { Auto, Cholmod, EigenLLT, EigenLDLT };
 
 constexpr long kCholmodFromUnknowns = 1500;
 
-}  // namespace qd
+}  // namespace qd::common

@@ -4,7 +4,7 @@
 
 #include "common/error.h"
 
-namespace qd {
+namespace qd::common {
 
 SparseFactor::~SparseFactor() = default;
 
@@ -28,4 +28,4 @@ void SparseFactor::throw_no_cholmod() {
 
 Eigen::MatrixXd SparseFactor::solve(const Eigen::MatrixXd& b) const { return backend_->solve(b); }
 
-}  // namespace qd
+}  // namespace qd::common

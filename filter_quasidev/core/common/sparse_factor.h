@@ -13,7 +13,7 @@
 
 #include "common/solver_kind.h"
 
-namespace qd {
+namespace qd::common {
 
 enum class FactorBackend { CholmodLlt, SupernodalLdlt, EigenLlt, EigenLdlt };
 
@@ -24,7 +24,7 @@ class SparseFactor {
   SparseFactor& operator=(const SparseFactor&) = delete;
 
   // Factorises the matrix whose lower triangle is `lower` (the pattern of the first call);
-  // throws qd::Error saying why when it cannot.
+  // throws qd::common::Error saying why when it cannot.
   void factorize(const Eigen::SparseMatrix<double>& lower);
   // Solves A x = b with the current factor; b may have several columns (right-hand sides).
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
@@ -78,4 +78,4 @@ class SparseFactor {
   int factorizations_ = 0;
 };
 
-}  // namespace qd
+}  // namespace qd::common

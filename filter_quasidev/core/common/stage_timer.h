@@ -3,7 +3,7 @@
 
 #include <chrono>
 
-namespace qd {
+namespace qd::common {
 
 class StageTimer {
  public:
@@ -20,4 +20,4 @@ class StageTimer {
   Clock::time_point start_;
 };
 
-}  // namespace qd
+}  // namespace qd::common

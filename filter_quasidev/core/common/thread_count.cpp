@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <thread>
 
-namespace qd {
+namespace qd::common {
 
 size_t thread_count(int requested) {
   if (requested > 0) return static_cast<size_t>(requested);
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-}  // namespace qd
+}  // namespace qd::common

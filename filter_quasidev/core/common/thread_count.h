@@ -3,8 +3,8 @@
 
 #include <cstddef>
 
-namespace qd {
+namespace qd::common {
 
 size_t thread_count(int requested);
 
-}  // namespace qd
+}  // namespace qd::common

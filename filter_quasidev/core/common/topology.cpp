@@ -9,7 +9,7 @@
 
 #include "common/disjoint_sets.h"
 
-namespace qd {
+namespace qd::common {
 
 namespace {
 
@@ -155,4 +155,4 @@ Topology analyse_topology(const Triangles& F, int vertex_count, const std::vecto
   return t;
 }
 
-}  // namespace qd
+}  // namespace qd::common

@@ -6,7 +6,7 @@
 
 #include "common/mesh.h"
 
-namespace qd {
+namespace qd::common {
 
 // Fewest faces a patch may have: fewer cannot give a Gauss image to fit (Step 1).
 constexpr int kMinPatchFaces = 4;
@@ -36,4 +36,4 @@ struct Topology {
 // (check_face_indices() in common/validate_mesh.h checks that first).
 Topology analyse_topology(const Triangles& F, int vertex_count, const std::vector<int>& patch);
 
-}  // namespace qd
+}  // namespace qd::common

@@ -6,7 +6,7 @@
 #include "common/error.h"
 #include "common/message_text.h"
 
-namespace qd {
+namespace qd::common {
 
 namespace {
 
@@ -104,4 +104,4 @@ std::vector<std::string> mesh_warnings(const Topology& t) {
   return out;
 }
 
-}  // namespace qd
+}  // namespace qd::common

@@ -1,6 +1,6 @@
 // Checks of a triangle mesh shared by every job (docs/design.md "Bad input"). Each check_* throws
-// qd::Error with one line saying what is wrong and what to do; mesh_warnings() names the parts
-// of a workable mesh that a job keeps as they are. A job calls the checks in this order,
+// qd::common::Error with one line saying what is wrong and what to do; mesh_warnings() names the
+// parts of a workable mesh that a job keeps as they are. A job calls the checks in this order,
 // interleaved with its own (approximate/validate.h).
 #pragma once
 
@@ -10,7 +10,7 @@
 #include "common/mesh.h"
 #include "common/topology.h"
 
-namespace qd {
+namespace qd::common {
 
 // Zero-area threshold: a face is degenerate when its area < kZeroAreaRatio · AE².
 constexpr double kZeroAreaRatio = 1e-12;
@@ -31,4 +31,4 @@ void check_orientation(const Topology& t);
 // Non-manifold edges: their vertices stay fixed and out of the curvature figures.
 std::vector<std::string> mesh_warnings(const Topology& t);
 
-}  // namespace qd
+}  // namespace qd::common

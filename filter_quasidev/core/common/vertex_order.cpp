@@ -10,7 +10,7 @@
 #include <Eigen/OrderingMethods>
 #endif
 
-namespace qd {
+namespace qd::common {
 namespace {
 
 #ifdef QD_WITH_CHOLMOD
@@ -53,4 +53,4 @@ std::vector<int> fill_reducing_rank(int nodes, const std::vector<std::pair<int, 
   return rank;
 }
 
-}  // namespace qd
+}  // namespace qd::common

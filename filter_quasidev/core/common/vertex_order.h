@@ -6,11 +6,11 @@
 #include <utility>
 #include <vector>
 
-namespace qd {
+namespace qd::common {
 
 // Fill-reducing order of a graph with `nodes` nodes and the given undirected edges (i ≠ j):
 // minimum degree (AMD), which orders faster than nested dissection saves (docs/solvers.md).
 // Returns rank[v]: the position of node v in the elimination order.
 std::vector<int> fill_reducing_rank(int nodes, const std::vector<std::pair<int, int>>& edges);
 
-}  // namespace qd
+}  // namespace qd::common

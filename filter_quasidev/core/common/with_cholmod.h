@@ -3,7 +3,7 @@
 // (QD_SOLVER_SOURCES in core/CMakeLists.txt) may read it.
 #pragma once
 
-namespace qd {
+namespace qd::common {
 
 #ifdef QD_WITH_CHOLMOD
 constexpr bool kHaveCholmod = true;
@@ -11,4 +11,4 @@ constexpr bool kHaveCholmod = true;
 constexpr bool kHaveCholmod = false;
 #endif
 
-}  // namespace qd
+}  // namespace qd::common

@@ -7,7 +7,7 @@
 #include "flatten/cotangent_laplacian.h"
 #include "flatten/ordered_cholesky.h"
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -88,4 +88,4 @@ ArapOutcome arap(const Triangles& F, const FlatTriangles& g, const Eigen::Sparse
   }
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

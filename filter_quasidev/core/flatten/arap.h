@@ -14,9 +14,10 @@
 #include <string>
 
 #include "common/solver_kind.h"
+#include "flatten/common_names.h"
 #include "flatten/flat_triangles.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct ArapSettings {
   int max_iterations = 100;
@@ -36,4 +37,4 @@ ArapOutcome arap(const Triangles& F, const FlatTriangles& g, const Eigen::Sparse
                  Eigen::MatrixX2d& uv, const ArapSettings& settings,
                  const std::function<void(int)>& iteration = {});
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -63,4 +63,4 @@ std::vector<char> crossing_segments(const Eigen::MatrixX2d& uv,
   return crossing;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

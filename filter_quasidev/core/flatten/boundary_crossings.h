@@ -8,7 +8,7 @@
 #include <array>
 #include <vector>
 
-namespace qd {
+namespace qd::flatten {
 
 // segments: boundary edges as vertex pairs into uv. Returns per segment 1 if it properly
 // crosses another segment that shares no vertex with it. A uniform grid of cells about one
@@ -16,4 +16,4 @@ namespace qd {
 std::vector<char> crossing_segments(const Eigen::MatrixX2d& uv,
                                     const std::vector<std::array<int, 2>>& segments);
 
-}  // namespace qd
+}  // namespace qd::flatten

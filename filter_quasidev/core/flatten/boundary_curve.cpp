@@ -3,7 +3,7 @@
 #include <Eigen/LU>
 #include <cmath>
 
-namespace qd {
+namespace qd::flatten {
 
 Eigen::MatrixX2d closed_boundary_curve(const Eigen::VectorXd& lengths,
                                        const Eigen::VectorXd& turning) {
@@ -28,4 +28,4 @@ Eigen::MatrixX2d closed_boundary_curve(const Eigen::VectorXd& lengths,
   return curve;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

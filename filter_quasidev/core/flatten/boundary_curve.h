@@ -9,7 +9,7 @@
 
 #include <Eigen/Core>
 
-namespace qd {
+namespace qd::flatten {
 
 // lengths: target length of each edge (> 0); turning: exterior angle κ_i at each vertex
 // (Σ κ_i = 2π for a curve turning counter-clockwise). Returns one row per vertex, vertex 0 at
@@ -17,4 +17,4 @@ namespace qd {
 Eigen::MatrixX2d closed_boundary_curve(const Eigen::VectorXd& lengths,
                                        const Eigen::VectorXd& turning);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -1,6 +1,6 @@
 #include "flatten/boundary_loops.h"
 
-namespace qd {
+namespace qd::flatten {
 
 std::vector<std::vector<int>> boundary_loops(const Triangles& F, const EdgeTable& edges) {
   // Boundary half-edges as their faces run them (from → to), and those leaving each vertex.
@@ -43,4 +43,4 @@ int euler_characteristic(const Triangles& F, const EdgeTable& edges, int vertex_
   return vertex_count - edges.count() + static_cast<int>(F.rows());
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -2,7 +2,7 @@
 
 #include <cassert>
 
-namespace qd {
+namespace qd::flatten {
 
 Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTriangles& g,
                                                 int vertex_count) {
@@ -39,4 +39,4 @@ Eigen::SparseMatrix<double> sparse_block(const Eigen::SparseMatrix<double>& M,
   return block;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -8,7 +8,7 @@
 
 #include "flatten/flat_triangles.h"
 
-namespace qd {
+namespace qd::flatten {
 
 Eigen::SparseMatrix<double> cotangent_laplacian(const Triangles& F, const FlatTriangles& g,
                                                 int vertex_count);
@@ -19,4 +19,4 @@ Eigen::SparseMatrix<double> sparse_block(const Eigen::SparseMatrix<double>& M,
                                          const std::vector<int>& row, int rows,
                                          const std::vector<int>& column, int columns);
 
-}  // namespace qd
+}  // namespace qd::flatten

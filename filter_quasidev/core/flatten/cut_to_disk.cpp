@@ -6,10 +6,11 @@
 #include "common/disjoint_sets.h"
 #include "common/error.h"
 #include "flatten/boundary_loops.h"
+#include "flatten/common_names.h"
 #include "flatten/shortest_paths.h"
 #include "flatten/split_corners.h"
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -164,4 +165,4 @@ DiskCut cut_to_disk(Piece& piece) {
   return tally;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

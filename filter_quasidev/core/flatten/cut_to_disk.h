@@ -17,7 +17,7 @@
 
 #include "flatten/piece.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct DiskCut {
   int joining_paths = 0;  // paths joining boundary loops (b − 1)
@@ -29,7 +29,7 @@ struct DiskCut {
 };
 
 // Cuts piece (V, F and the vertex map updated: a cut vertex gets one copy per side) into a
-// disk. Throws qd::Error if the result is no disk (a piece with non-manifold edges left).
+// disk. Throws qd::common::Error if the result is no disk (a piece with non-manifold edges left).
 DiskCut cut_to_disk(Piece& piece);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -1,6 +1,6 @@
 #include "flatten/edge_table.h"
 
-namespace qd {
+namespace qd::flatten {
 
 EdgeTable edge_table(const Triangles& F, int vertex_count) {
   EdgeTable t;
@@ -37,4 +37,4 @@ EdgeTable edge_table(const Triangles& F, int vertex_count) {
   return t;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

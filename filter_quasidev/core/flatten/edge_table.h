@@ -6,8 +6,9 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct EdgeTable {
   std::vector<std::array<int, 2>> ends;     // per edge: its vertices, lower index first
@@ -27,4 +28,4 @@ struct EdgeTable {
 // Edges of F (vertex indices in [0, vertex_count)), numbered by (lower, higher) vertex.
 EdgeTable edge_table(const Triangles& F, int vertex_count);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace qd {
+namespace qd::flatten {
 
 Stretch stretch(const Eigen::Matrix2d& J) {
   const double e = 0.5 * (J(0, 0) + J(1, 1)), h = 0.5 * (J(1, 0) - J(0, 1));
@@ -18,4 +18,4 @@ double signed_stretch(const Stretch& s) {
   return s.s2 < 1 && 1 - s.s2 > s.s1 - 1 ? -(1 - s.s2) : s.s1 - 1;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

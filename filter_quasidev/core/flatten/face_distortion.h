@@ -5,7 +5,7 @@
 
 #include <Eigen/Core>
 
-namespace qd {
+namespace qd::flatten {
 
 struct Stretch {
   double s1 = 1, s2 = 1;  // σ1 ≥ σ2 ≥ 0
@@ -24,4 +24,4 @@ double length_distortion(const Stretch& s);
 // of the two (σ2 < 1 and 1 − σ2 > σ1 − 1), so stretched faces read positive, squeezed negative.
 double signed_stretch(const Stretch& s);
 
-}  // namespace qd
+}  // namespace qd::flatten

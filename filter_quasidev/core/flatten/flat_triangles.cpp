@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace qd {
+namespace qd::flatten {
 
 FlatTriangles flat_triangles(const Positions& V, const Triangles& F) {
   const auto n = static_cast<size_t>(F.rows());
@@ -41,4 +41,4 @@ Eigen::Matrix2d face_jacobian(const FlatTriangles& g, const Triangles& F,
   return U * g.inverse_edges[f];
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -7,8 +7,9 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct FlatTriangles {
   std::vector<Eigen::Matrix<double, 2, 3>> corner;  // per face: x0, x1, x2 (columns)
@@ -26,4 +27,4 @@ FlatTriangles flat_triangles(const Positions& V, const Triangles& F);
 Eigen::Matrix2d face_jacobian(const FlatTriangles& g, const Triangles& F,
                               const Eigen::MatrixX2d& uv, int f);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -10,6 +10,7 @@
 #include "common/parallel_for.h"
 #include "common/serial_libraries.h"
 #include "common/thread_count.h"
+#include "flatten/common_names.h"
 #include "flatten/flatten_piece.h"
 #include "flatten/flatten_validate.h"
 #include "flatten/grainline.h"
@@ -19,7 +20,7 @@
 #include "flatten/piece_report.h"
 #include "flatten/seam_allowance.h"
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -146,4 +147,4 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
   return r;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -7,14 +7,15 @@
 #pragma once
 
 #include "common/progress.h"
+#include "flatten/common_names.h"
 #include "flatten/flatten_problem.h"
 #include "flatten/flatten_result.h"
 
-namespace qd {
+namespace qd::flatten {
 
-// Throws qd::Error on bad input (validate.h) or a piece that cannot be flattened; the input is
-// never modified. Pieces are flattened in parallel; the result does not depend on the number
-// of threads.
+// Throws qd::common::Error on bad input (validate.h) or a piece that cannot be flattened; the input
+// is never modified. Pieces are flattened in parallel; the result does not depend on the number of
+// threads.
 FlattenResult flatten(const FlattenProblem& problem, const Progress& progress = {});
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -5,10 +5,11 @@
 
 #include "common/error.h"
 #include "flatten/boundary_loops.h"
+#include "flatten/common_names.h"
 #include "flatten/cotangent_laplacian.h"
 #include "flatten/initial_layout.h"
 
-namespace qd {
+namespace qd::flatten {
 
 FlatPiece flatten_piece(Piece piece, const FlattenParams& params,
                         const std::function<void(int)>& iteration) {
@@ -40,4 +41,4 @@ FlatPiece flatten_piece(Piece piece, const FlattenParams& params,
   return flat;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

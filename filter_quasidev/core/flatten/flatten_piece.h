@@ -11,7 +11,7 @@
 #include "flatten/piece.h"
 #include "flatten/piece_measures.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct FlatPiece {
   Piece piece;                          // as cut
@@ -23,8 +23,8 @@ struct FlatPiece {
   double time_ms = 0;
 };
 
-// iteration(k) is called after ARAP iteration k. Throws qd::Error if a system is singular.
+// iteration(k) is called after ARAP iteration k. Throws qd::common::Error if a system is singular.
 FlatPiece flatten_piece(Piece piece, const FlattenParams& params,
                         const std::function<void(int iteration)>& iteration = {});
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -9,8 +9,9 @@
 
 #include "common/mesh.h"
 #include "common/solver_kind.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct FlattenParams {
   int max_iterations = 100;  // ARAP iterations per piece at most (arap.h)
@@ -36,4 +37,4 @@ struct FlattenProblem {
   FlattenParams params;
 };
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -9,7 +9,7 @@
 #include "flatten/pattern.h"
 #include "flatten/symmetric_pieces.h"
 
-namespace qd {
+namespace qd::flatten {
 
 using WedgeUV = Eigen::Matrix<double, Eigen::Dynamic, 6>;  // per face: u0 v0 u1 v1 u2 v2
 
@@ -47,4 +47,4 @@ struct FlattenResult {
   double time_ms = 0;
 };
 
-}  // namespace qd
+}  // namespace qd::flatten

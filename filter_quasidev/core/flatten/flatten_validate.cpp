@@ -6,8 +6,9 @@
 
 #include "common/error.h"
 #include "common/validate_mesh.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -58,4 +59,4 @@ void validate_flatten(const FlattenProblem& problem) {
   check_params(problem.params);
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -3,7 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
-namespace qd {
+namespace qd::flatten {
 
 Eigen::Vector2d principal_axis(const Eigen::MatrixX2d& points) {
   const Eigen::MatrixX2d centred = points.rowwise() - points.colwise().mean();
@@ -37,4 +37,4 @@ Eigen::Vector2d grain_direction(const Positions& V, const Triangles& F, const Ei
   return axis.dot(sum) < 0 ? Eigen::Vector2d(-axis) : axis;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -11,8 +11,9 @@
 #include <Eigen/Core>
 
 #include "common/mesh.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 constexpr double kWeakGrain = 0.3;  // the mapped up direction per unit area: sin 17°
 
@@ -26,4 +27,4 @@ Eigen::Vector2d principal_axis(const Eigen::MatrixX2d& points);
 Eigen::Vector2d grain_direction(const Positions& V, const Triangles& F, const Eigen::MatrixX2d& uv,
                                 const Eigen::Vector3d& up);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -7,7 +7,7 @@
 #include "flatten/cotangent_laplacian.h"
 #include "flatten/ordered_cholesky.h"
 
-namespace qd {
+namespace qd::flatten {
 
 Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const FlatTriangles& g,
                                 const Eigen::SparseMatrix<double>& L, const std::vector<int>& loop,
@@ -49,4 +49,4 @@ Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const Fl
   return uv;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -19,9 +19,10 @@
 #include <vector>
 
 #include "common/solver_kind.h"
+#include "flatten/common_names.h"
 #include "flatten/flat_triangles.h"
 
-namespace qd {
+namespace qd::flatten {
 
 // V, F: the piece (a disk); g its face geometry and L its cotangent Laplacian; loop its
 // boundary in face order. Returns one row (u, v) per vertex, in model units.
@@ -29,4 +30,4 @@ Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const Fl
                                 const Eigen::SparseMatrix<double>& L, const std::vector<int>& loop,
                                 SolverKind solver);
 
-}  // namespace qd
+}  // namespace qd::flatten

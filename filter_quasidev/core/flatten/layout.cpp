@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numeric>
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -91,4 +91,4 @@ std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces,
   return boxes;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -9,7 +9,7 @@
 #include <Eigen/Geometry>
 #include <vector>
 
-namespace qd {
+namespace qd::flatten {
 
 // The rotation that turns the unit direction `grain` onto +y.
 Eigen::Matrix2d grain_rotation(const Eigen::Vector2d& grain);
@@ -29,4 +29,4 @@ std::vector<Eigen::AlignedBox2d> lay_out(std::vector<Eigen::MatrixX2d>& pieces,
                                          const std::vector<Eigen::Vector2d>& grain, double gap,
                                          double margin);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -69,4 +69,4 @@ std::vector<char> notch_vertices(const Positions& V, std::vector<std::array<int,
   return notch;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -11,12 +11,13 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 // boundary_edges: every boundary edge of every piece, as mesh vertex pairs (in any order and
 // direction); V: the mesh's positions. Returns per mesh vertex 1 = notch.
 std::vector<char> notch_vertices(const Positions& V, std::vector<std::array<int, 2>> boundary_edges,
                                  double spacing);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -5,8 +5,9 @@
 #include <vector>
 
 #include "common/vertex_order.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 namespace {
 
 // rank holds each of 0 … n−1 once.
@@ -39,4 +40,4 @@ Eigen::MatrixXd OrderedCholesky::solve(const Eigen::MatrixXd& b) const {
   return order_.inverse() * cholesky_.solve(order_ * b);
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -7,13 +7,14 @@
 #include <Eigen/SparseCore>
 
 #include "common/positive_definite_factor.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 class OrderedCholesky {
  public:
   // Factorises M (both triangles stored); many_solves as in PositiveDefiniteFactor. Throws
-  // qd::Error if M is not positive definite.
+  // qd::common::Error if M is not positive definite.
   OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKind kind, bool many_solves);
   // Solves M x = b for every column of b.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
@@ -23,4 +24,4 @@ class OrderedCholesky {
   PositiveDefiniteFactor cholesky_;
 };
 
-}  // namespace qd
+}  // namespace qd::flatten

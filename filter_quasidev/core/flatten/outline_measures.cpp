@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace qd {
+namespace qd::flatten {
 
 double loop_area(const Outline& loop) {
   double twice = 0;
@@ -50,4 +50,4 @@ Eigen::AlignedBox2d outline_box(const std::vector<Outline>& loops) {
   return box;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -8,7 +8,7 @@
 
 #include "flatten/pattern.h"
 
-namespace qd {
+namespace qd::flatten {
 
 // Signed area of one closed polygon: positive when counter-clockwise.
 double loop_area(const Outline& loop);
@@ -26,4 +26,4 @@ double outline_length(const std::vector<Outline>& loops);
 Eigen::AlignedBox2d loop_box(const Outline& loop);
 Eigen::AlignedBox2d outline_box(const std::vector<Outline>& loops);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -2,7 +2,7 @@
 
 #include "flatten/outline_measures.h"
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -60,4 +60,4 @@ Pattern make_pattern(std::vector<PatternPiece> pieces) {
   return pattern;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -8,8 +8,9 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct Notch {
   Eigen::Vector2d at;      // a boundary vertex on a seam or cut (notches.h), on the sew line
@@ -47,4 +48,4 @@ PatternPiece pattern_piece(int patch, const std::string& label, const Triangles&
 // The pattern of the given pieces, with its bounds (of sew and cut lines).
 Pattern make_pattern(std::vector<PatternPiece> pieces);
 
-}  // namespace qd
+}  // namespace qd::flatten

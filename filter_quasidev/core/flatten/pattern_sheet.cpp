@@ -5,7 +5,7 @@
 #include "flatten/layout.h"
 #include "flatten/outline_measures.h"
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -38,4 +38,4 @@ Pattern pattern_sheet(std::vector<PatternPiece> pieces, const std::vector<PieceG
   return make_pattern(std::move(cut));
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

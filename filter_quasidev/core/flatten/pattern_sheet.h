@@ -9,11 +9,11 @@
 #include "flatten/pattern.h"
 #include "flatten/symmetric_pieces.h"
 
-namespace qd {
+namespace qd::flatten {
 
 // pieces: every pattern piece, grain along +y; groups: a partition of them (representative
 // first); gap > 0: the space between cut lines on the sheet.
 Pattern pattern_sheet(std::vector<PatternPiece> pieces, const std::vector<PieceGroup>& groups,
                       double gap);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -4,10 +4,11 @@
 #include <map>
 
 #include "common/disjoint_sets.h"
+#include "flatten/common_names.h"
 #include "flatten/edge_table.h"
 #include "flatten/split_corners.h"
 
-namespace qd {
+namespace qd::flatten {
 
 void renumber_vertices(Piece& piece, const Triangles& F, const std::vector<int>& origin) {
   assert(origin.size() >= static_cast<size_t>(F.size() > 0 ? F.maxCoeff() + 1 : 0));
@@ -99,4 +100,4 @@ std::vector<Piece> extract_pieces(const Positions& V, const Triangles& F,
   return pieces;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -5,8 +5,9 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct Piece {
   int patch = 0;            // patch id of its faces
@@ -28,4 +29,4 @@ void renumber_vertices(Piece& piece, const Triangles& F, const std::vector<int>&
 std::vector<Piece> extract_pieces(const Positions& V, const Triangles& F,
                                   const std::vector<int>& patch);
 
-}  // namespace qd
+}  // namespace qd::flatten

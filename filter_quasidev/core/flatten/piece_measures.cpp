@@ -5,7 +5,7 @@
 #include "flatten/boundary_crossings.h"
 #include "flatten/face_distortion.h"
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -63,4 +63,4 @@ PieceMeasures measure_piece(const Positions& V, const Triangles& F, const FlatTr
   return m;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

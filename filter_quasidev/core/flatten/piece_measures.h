@@ -7,7 +7,7 @@
 #include "flatten/edge_table.h"
 #include "flatten/flat_triangles.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct PieceMeasures {
   std::vector<double> stretch;  // per face: signed_stretch (face_distortion.h)
@@ -25,4 +25,4 @@ PieceMeasures measure_piece(const Positions& V, const Triangles& F, const FlatTr
                             const EdgeTable& edges, const std::vector<std::vector<int>>& loops,
                             const Eigen::MatrixX2d& uv);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -3,7 +3,7 @@
 #include <iomanip>
 #include <sstream>
 
-namespace qd {
+namespace qd::flatten {
 
 PieceReport piece_report(const FlatPiece& flat, const std::string& label,
                          const Eigen::AlignedBox2d& box) {
@@ -42,4 +42,4 @@ std::string log_line(const PieceReport& r) {
   return s.str();
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -6,7 +6,7 @@
 #include "flatten/flatten_piece.h"
 #include "flatten/flatten_result.h"
 
-namespace qd {
+namespace qd::flatten {
 
 // flat: the piece; label: as on the pattern; box: where the layout put it.
 PieceReport piece_report(const FlatPiece& flat, const std::string& label,
@@ -16,4 +16,4 @@ PieceReport piece_report(const FlatPiece& flat, const std::string& label,
 // in "not flattenable without a cut" when the piece has flipped or overlapping faces.
 std::string log_line(const PieceReport& r);
 
-}  // namespace qd
+}  // namespace qd::flatten

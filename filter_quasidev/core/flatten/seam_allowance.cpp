@@ -5,7 +5,7 @@
 #include <limits>
 #include <polyclipping/clipper.hpp>
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -83,4 +83,4 @@ void add_seam_allowance(PatternPiece& piece, double allowance) {
     notch.cut_at = allowance > 0 ? ray_exit(notch.at, -notch.inward, piece.cut_outlines) : notch.at;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -8,7 +8,7 @@
 
 #include "flatten/pattern.h"
 
-namespace qd {
+namespace qd::flatten {
 
 constexpr double kAllowanceReach = 2;  // the cut line lies at most this many allowances outside
 
@@ -23,4 +23,4 @@ std::vector<Outline> cut_lines(const std::vector<Outline>& sew_lines, double all
 // with the cut lines (`at` itself when the allowance is 0).
 void add_seam_allowance(PatternPiece& piece, double allowance);
 
-}  // namespace qd
+}  // namespace qd::flatten

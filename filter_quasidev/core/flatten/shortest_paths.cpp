@@ -5,7 +5,7 @@
 #include <queue>
 #include <utility>
 
-namespace qd {
+namespace qd::flatten {
 
 double edge_length(const Positions& V, const EdgeTable& edges, int e) {
   return (V.row(edges.ends[e][0]) - V.row(edges.ends[e][1])).norm();
@@ -47,4 +47,4 @@ std::vector<int> path_to_source(const ShortestPaths& paths, const EdgeTable& edg
   return path;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -4,9 +4,10 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "flatten/common_names.h"
 #include "flatten/edge_table.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct ShortestPaths {
   std::vector<double> distance;  // per vertex, from the nearest source; +inf if unreachable
@@ -24,4 +25,4 @@ std::vector<int> path_to_source(const ShortestPaths& paths, const EdgeTable& edg
 // Length of edge e.
 double edge_length(const Positions& V, const EdgeTable& edges, int e);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -1,8 +1,9 @@
 #include "flatten/split_corners.h"
 
 #include "common/disjoint_sets.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 SplitMesh split_corners(const Triangles& F, const EdgeTable& edges, const std::vector<char>& cut) {
   DisjointSets corners(3 * static_cast<size_t>(F.rows()));
@@ -25,4 +26,4 @@ SplitMesh split_corners(const Triangles& F, const EdgeTable& edges, const std::v
   return split;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -6,9 +6,10 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "flatten/common_names.h"
 #include "flatten/edge_table.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct SplitMesh {
   Triangles F;              // same faces, new vertex indices
@@ -21,4 +22,4 @@ struct SplitMesh {
 SplitMesh split_corners(const Triangles& F, const EdgeTable& edges,
                         const std::vector<char>& cut = {});
 
-}  // namespace qd
+}  // namespace qd::flatten

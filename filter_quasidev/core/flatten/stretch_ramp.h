@@ -7,12 +7,13 @@
 #include <vector>
 
 #include "common/quality_range.h"
+#include "flatten/common_names.h"
 
-namespace qd {
+namespace qd::flatten {
 
 constexpr double kStretchRampFloor =
     1e-3;  // 0.1 %, the accuracy issue 14 asks of developable patches
 
 QualityRange stretch_ramp_range(const std::vector<double>& stretch);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -5,7 +5,7 @@
 #include <limits>
 #include <numeric>
 
-namespace qd {
+namespace qd::flatten {
 
 namespace {
 
@@ -228,4 +228,4 @@ std::vector<PieceGroup> symmetric_groups(const std::vector<PatternPiece>& pieces
   return groups;
 }
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -22,7 +22,7 @@
 
 #include "flatten/pattern.h"
 
-namespace qd {
+namespace qd::flatten {
 
 struct PieceGroup {
   std::vector<int> members;    // indices into the pieces; the first, the lowest, represents them
@@ -41,4 +41,4 @@ struct PieceGroup {
 constexpr size_t kMaxSymmetryPieces = 1000;
 std::vector<PieceGroup> symmetric_groups(const std::vector<PatternPiece>& pieces, double tolerance);
 
-}  // namespace qd
+}  // namespace qd::flatten

@@ -4,7 +4,7 @@
 
 #include "segment/cone_proxy.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct Chart {
   int seed = -1;
@@ -16,4 +16,4 @@ struct Chart {
 constexpr int kFree = -1;     // not in a chart yet
 constexpr int kOutside = -2;  // not segmented here (a region kept whole)
 
-}  // namespace qd
+}  // namespace qd::segment

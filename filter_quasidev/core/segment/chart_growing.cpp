@@ -8,7 +8,7 @@
 
 #include "segment/growing_cost.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -78,4 +78,4 @@ std::vector<int> grow_charts(const FaceGraph& graph, const FaceGeometry& g,
   return Grower(graph, g, charts, label, settings).run();
 }
 
-}  // namespace qd
+}  // namespace qd::segment

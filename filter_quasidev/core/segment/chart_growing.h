@@ -12,7 +12,7 @@
 #include "segment/face_graph.h"
 #include "segment/segment_params.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct GrowSettings {
   double limit = 0.0;  // largest deviation, radians
@@ -25,4 +25,4 @@ std::vector<int> grow_charts(const FaceGraph& graph, const FaceGeometry& g,
                              const std::vector<Chart>& charts, std::vector<int>& label,
                              const GrowSettings& settings);
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -12,8 +12,9 @@
 #include <utility>
 
 #include "common/parallel_for.h"
+#include "segment/common_names.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -180,4 +181,4 @@ int merge_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g, Me
   return Merger(p, graph, g, rule, s).run();
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -17,7 +17,7 @@
 #include "segment/face_graph.h"
 #include "segment/partition.h"
 
-namespace qd {
+namespace qd::segment {
 
 enum class MergeRule { WithinLimit, SmallCharts, TargetCount };
 
@@ -33,4 +33,4 @@ struct MergeSettings {
 int merge_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g, MergeRule rule,
                  const MergeSettings& s);
 
-}  // namespace qd
+}  // namespace qd::segment

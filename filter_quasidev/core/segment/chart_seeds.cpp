@@ -3,7 +3,7 @@
 
 #include <tuple>
 
-namespace qd {
+namespace qd::segment {
 
 std::vector<int> hops_to_border(const FaceGraph& graph, const std::vector<int>& label,
                                 const std::vector<int>& faces) {
@@ -43,4 +43,4 @@ std::vector<int> interior_faces(const std::vector<int>& hops, const std::vector<
   return best;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -8,7 +8,7 @@
 
 #include "segment/face_graph.h"
 
-namespace qd {
+namespace qd::segment {
 
 constexpr int kNoBorder = 1 << 30;  // hops of a face in a part with no border (a closed part)
 
@@ -24,4 +24,4 @@ std::vector<int> hops_to_border(const FaceGraph& graph, const std::vector<int>& 
 std::vector<int> interior_faces(const std::vector<int>& hops, const std::vector<int>& label,
                                 int count, const std::vector<double>& deviation, double limit);
 
-}  // namespace qd
+}  // namespace qd::segment

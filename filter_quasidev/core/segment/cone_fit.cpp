@@ -7,7 +7,7 @@
 #include <cmath>
 #include <limits>
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -98,4 +98,4 @@ double max_error_lower_bound(const NormalMoments& m) {
   return std::sqrt(std::max(0.0, eigen.eigenvalues()(0)));
 }
 
-}  // namespace qd
+}  // namespace qd::segment

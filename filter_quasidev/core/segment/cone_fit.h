@@ -20,7 +20,7 @@
 #include "segment/face_geometry.h"
 #include "segment/normal_moments.h"
 
-namespace qd {
+namespace qd::segment {
 
 constexpr double kAxisTie = 1e-6;  // radians
 
@@ -46,4 +46,4 @@ bool better_fit(const ConeFit& a, const ConeFit& b, double limit);
 // |N·n − cos θ| ≤ |∠(n, N) − θ|, so the mean square of the latter is at least Nᵀ C N ≥ λ_min(C).
 double max_error_lower_bound(const NormalMoments& m);
 
-}  // namespace qd
+}  // namespace qd::segment

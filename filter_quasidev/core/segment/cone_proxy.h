@@ -8,8 +8,9 @@
 #include <cmath>
 
 #include "common/mesh.h"
+#include "segment/common_names.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct ConeProxy {
   Vec3 axis = Vec3::UnitZ();
@@ -29,4 +30,4 @@ inline double cone_deviation(const ConeProxy& cone, const Vec3& n) {
 // The plane with normal n (a new chart's proxy before its first fit).
 inline ConeProxy plane_proxy(const Vec3& n) { return ConeProxy{n, 0.0}; }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -2,8 +2,9 @@
 #include "segment/face_geometry.h"
 
 #include "common/parallel_for.h"
+#include "segment/common_names.h"
 
-namespace qd {
+namespace qd::segment {
 
 FaceGeometry face_geometry(const Positions& V, const Triangles& F, int threads) {
   const auto n = static_cast<size_t>(F.rows());
@@ -23,4 +24,4 @@ FaceGeometry face_geometry(const Positions& V, const Triangles& F, int threads) 
   return g;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

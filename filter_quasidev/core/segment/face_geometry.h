@@ -4,8 +4,9 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "segment/common_names.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct FaceGeometry {
   std::vector<Vec3> normal;  // unit
@@ -17,4 +18,4 @@ struct FaceGeometry {
 // In parallel on up to `threads` threads; the result does not depend on their number.
 FaceGeometry face_geometry(const Positions& V, const Triangles& F, int threads);
 
-}  // namespace qd
+}  // namespace qd::segment

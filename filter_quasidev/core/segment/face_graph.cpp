@@ -5,7 +5,7 @@
 
 #include "segment/cone_proxy.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -69,4 +69,4 @@ void remove_creases(FaceGraph& graph, const FaceGeometry& g, double crease) {
       }
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -10,9 +10,10 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "segment/common_names.h"
 #include "segment/face_geometry.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct FaceGraph {
   std::vector<std::array<int, 3>> neighbour;       // face across side k, or −1
@@ -29,4 +30,4 @@ FaceGraph face_graph(const Positions& V, const Triangles& F, const std::vector<i
 // Cuts the sides whose faces' normals differ by more than `crease` radians.
 void remove_creases(FaceGraph& graph, const FaceGeometry& g, double crease);
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -1,7 +1,7 @@
 // Breadth-first search over the face graph, in face order: linear time.
 #include "segment/face_parts.h"
 
-namespace qd {
+namespace qd::segment {
 
 FaceParts connected_parts(const FaceGraph& graph, const std::vector<int>& label) {
   FaceParts parts;
@@ -23,4 +23,4 @@ FaceParts connected_parts(const FaceGraph& graph, const std::vector<int>& label)
   return parts;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -6,7 +6,7 @@
 
 #include "segment/face_graph.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct FaceParts {
   std::vector<int> part;  // per face, numbered in the order of each part's lowest face
@@ -15,4 +15,4 @@ struct FaceParts {
 
 FaceParts connected_parts(const FaceGraph& graph, const std::vector<int>& label);
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -16,7 +16,7 @@
 
 #include "segment/segment_params.h"
 
-namespace qd {
+namespace qd::segment {
 
 constexpr double kFitFloor = 0.1;
 
@@ -36,4 +36,4 @@ inline double log_growing_cost(double deviation, double limit, double seed_dista
          log_power(boundary, w.boundary);
 }
 
-}  // namespace qd
+}  // namespace qd::segment

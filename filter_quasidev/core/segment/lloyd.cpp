@@ -6,10 +6,11 @@
 
 #include "common/parallel_for.h"
 #include "segment/chart_seeds.h"
+#include "segment/common_names.h"
 #include "segment/cone_fit.h"
 #include "segment/partition.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -121,4 +122,4 @@ LloydResult lloyd_charts(const FaceGraph& graph, const FaceGeometry& g, std::vec
   return r;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -15,10 +15,11 @@
 #include "common/progress.h"
 #include "segment/chart.h"
 #include "segment/chart_growing.h"
+#include "segment/common_names.h"
 #include "segment/face_geometry.h"
 #include "segment/face_graph.h"
 
-namespace qd {
+namespace qd::segment {
 
 constexpr int kSettled = 100;
 
@@ -34,4 +35,4 @@ LloydResult lloyd_charts(const FaceGraph& graph, const FaceGeometry& g, std::vec
                          const GrowSettings& settings, int max_rounds, int threads,
                          const Progress& progress, int percent_from, int percent_to);
 
-}  // namespace qd
+}  // namespace qd::segment

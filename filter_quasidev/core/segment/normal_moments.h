@@ -5,8 +5,9 @@
 #include <Eigen/Core>
 
 #include "common/mesh.h"
+#include "segment/common_names.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct NormalMoments {
   double area = 0.0;
@@ -32,4 +33,4 @@ struct NormalMoments {
   }
 };
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cassert>
 
-namespace qd {
+namespace qd::segment {
 
 std::vector<std::vector<int>> faces_by_chart(const std::vector<int>& label, int count) {
   assert(std::all_of(label.begin(), label.end(), [&](int l) { return l < count; }));
@@ -27,4 +27,4 @@ double faces_area(const FaceGeometry& g, const std::vector<int>& faces) {
   return area;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

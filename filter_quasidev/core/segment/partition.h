@@ -7,7 +7,7 @@
 #include "segment/face_geometry.h"
 #include "segment/segment_result.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct Partition {
   std::vector<int> label;               // per face: chart index, or kOutside (chart.h)
@@ -26,4 +26,4 @@ std::vector<int> faces_labelled(const std::vector<int>& label, int value);
 // The area of a set of faces.
 double faces_area(const FaceGeometry& g, const std::vector<int>& faces);
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace qd {
+namespace qd::segment {
 
 std::array<unsigned char, 3> patch_color(int id) {
   constexpr double kGoldenAngle = 0.381966011250105;  // (3 − √5)/2 of a turn
@@ -19,4 +19,4 @@ std::array<unsigned char, 3> patch_color(int id) {
   return c;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -5,9 +5,9 @@
 
 #include <array>
 
-namespace qd {
+namespace qd::segment {
 
 // Red, green, blue of patch `id` (>= 0).
 std::array<unsigned char, 3> patch_color(int id);
 
-}  // namespace qd
+}  // namespace qd::segment

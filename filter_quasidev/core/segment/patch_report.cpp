@@ -7,7 +7,7 @@
 
 #include "segment/patch_topology.h"
 
-namespace qd {
+namespace qd::segment {
 
 SegmentResult patch_report(const Partition& p, const SegmentProblem& problem,
                            const FaceGeometry& g) {
@@ -47,4 +47,4 @@ SegmentResult patch_report(const Partition& p, const SegmentProblem& problem,
   return r;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -9,9 +9,9 @@
 #include "segment/segment_problem.h"
 #include "segment/segment_result.h"
 
-namespace qd {
+namespace qd::segment {
 
 SegmentResult patch_report(const Partition& p, const SegmentProblem& problem,
                            const FaceGeometry& g);
 
-}  // namespace qd
+}  // namespace qd::segment

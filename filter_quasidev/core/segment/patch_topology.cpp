@@ -6,7 +6,7 @@
 
 #include "segment/partition.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -74,4 +74,4 @@ std::vector<PatchTopology> patch_topology(const Triangles& F, Eigen::Index verte
   return t;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

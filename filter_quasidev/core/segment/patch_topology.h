@@ -5,8 +5,9 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "segment/common_names.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct PatchTopology {
   int vertices = 0, edges = 0, faces = 0;
@@ -19,4 +20,4 @@ struct PatchTopology {
 std::vector<PatchTopology> patch_topology(const Triangles& F, Eigen::Index vertex_count,
                                           const std::vector<int>& patch, int count);
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -5,7 +5,7 @@
 #include <map>
 #include <utility>
 
-namespace qd {
+namespace qd::segment {
 
 std::vector<int> region_labels(const std::vector<int>& patch, const std::vector<char>& selected) {
   const std::size_t n = patch.empty() ? selected.size() : patch.size();
@@ -19,4 +19,4 @@ std::vector<int> region_labels(const std::vector<int>& patch, const std::vector<
   return label;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -8,6 +8,7 @@
 #include "common/parallel_for.h"
 #include "common/thread_count.h"
 #include "segment/chart_merging.h"
+#include "segment/common_names.h"
 #include "segment/face_parts.h"
 #include "segment/lloyd.h"
 #include "segment/partition.h"
@@ -18,7 +19,7 @@
 #include "segment/small_charts.h"
 #include "segment/split_charts.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -124,4 +125,4 @@ SegmentResult segment(const SegmentProblem& problem, const Progress& progress) {
   return r;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

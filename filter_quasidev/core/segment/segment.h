@@ -12,12 +12,13 @@
 #pragma once
 
 #include "common/progress.h"
+#include "segment/common_names.h"
 #include "segment/segment_problem.h"
 #include "segment/segment_result.h"
 
-namespace qd {
+namespace qd::segment {
 
-// Throws qd::Error on bad input (segment_validate.h); the input is never modified.
+// Throws qd::common::Error on bad input (segment_validate.h); the input is never modified.
 SegmentResult segment(const SegmentProblem& problem, const Progress& progress = {});
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -6,8 +6,9 @@
 #include <cstdio>
 
 #include "common/message_text.h"
+#include "segment/common_names.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -114,4 +115,4 @@ std::vector<std::string> segment_log(const SegmentResult& r, int faces, const Se
   return log;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -7,7 +7,7 @@
 #include "segment/segment_params.h"
 #include "segment/segment_result.h"
 
-namespace qd {
+namespace qd::segment {
 
 // "plane", "cylinder" or "cone" for a proxy whose apex angle is within kKindToleranceDeg of 0°,
 // of 90°, or neither.
@@ -29,4 +29,4 @@ std::vector<std::string> segment_warnings(int nonmanifold_edges, int misoriented
 // The warnings, one line per patch and a summary (faces: the mesh's face count).
 std::vector<std::string> segment_log(const SegmentResult& r, int faces, const SegmentParams& q);
 
-}  // namespace qd
+}  // namespace qd::segment

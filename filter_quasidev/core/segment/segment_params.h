@@ -3,7 +3,7 @@
 // Angles are in degrees, sizes in faces or as a fraction of the mesh area.
 #pragma once
 
-namespace qd {
+namespace qd::segment {
 
 // Exponents α, β, γ of the fitting, compactness and boundary terms of D-Charts' growing cost
 // (growing_cost.h); only their ratios matter. Chosen by measurement (qd_segment_bench, 20°
@@ -47,4 +47,4 @@ struct SegmentParams {
   int threads = 0;  // 0 = all cores
 };
 
-}  // namespace qd
+}  // namespace qd::segment

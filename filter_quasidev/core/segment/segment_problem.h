@@ -5,9 +5,10 @@
 #include <vector>
 
 #include "common/mesh.h"
+#include "segment/common_names.h"
 #include "segment/segment_params.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct SegmentProblem {
   Positions V;
@@ -22,4 +23,4 @@ struct SegmentProblem {
   SegmentParams params;
 };
 
-}  // namespace qd
+}  // namespace qd::segment

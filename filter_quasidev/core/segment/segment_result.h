@@ -6,7 +6,7 @@
 
 #include "segment/cone_proxy.h"
 
-namespace qd {
+namespace qd::segment {
 
 // Why a patch's fit error is over the limit.
 enum class OverLimit {
@@ -40,4 +40,4 @@ struct SegmentResult {
   std::vector<std::string> log;       // the warnings, one line per patch, a summary
 };
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -10,8 +10,9 @@
 #include "common/message_text.h"
 #include "common/topology.h"
 #include "common/validate_mesh.h"
+#include "segment/common_names.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -63,4 +64,4 @@ void validate_segment(const SegmentProblem& p) {
   check_duplicate_faces(analyse_topology(p.F, static_cast<int>(p.V.rows()), {}));
 }
 
-}  // namespace qd
+}  // namespace qd::segment

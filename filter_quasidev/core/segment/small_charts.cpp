@@ -6,7 +6,7 @@
 #include <queue>
 #include <utility>
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -120,4 +120,4 @@ int grow_small_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& 
   return count;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -11,7 +11,7 @@
 #include "segment/face_graph.h"
 #include "segment/partition.h"
 
-namespace qd {
+namespace qd::segment {
 
 struct MinimumSize {
   int faces = 1;
@@ -22,4 +22,4 @@ struct MinimumSize {
 int grow_small_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g,
                       const MinimumSize& size, double limit);
 
-}  // namespace qd
+}  // namespace qd::segment

@@ -7,7 +7,7 @@
 
 #include "segment/chart_seeds.h"
 
-namespace qd {
+namespace qd::segment {
 
 namespace {
 
@@ -123,4 +123,4 @@ int split_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g, co
   return added;
 }
 
-}  // namespace qd
+}  // namespace qd::segment

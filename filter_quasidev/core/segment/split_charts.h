@@ -12,7 +12,7 @@
 #include "segment/partition.h"
 #include "segment/small_charts.h"
 
-namespace qd {
+namespace qd::segment {
 
 constexpr int kSplitRounds = 3;
 
@@ -20,4 +20,4 @@ constexpr int kSplitRounds = 3;
 int split_charts(Partition& p, const FaceGraph& graph, const FaceGeometry& g, const GrowSettings& s,
                  const MinimumSize& size, int target);
 
-}  // namespace qd
+}  // namespace qd::segment

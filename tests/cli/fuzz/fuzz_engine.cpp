@@ -1,7 +1,7 @@
 // Fuzz target of the engine (libFuzzer entry point): the bytes choose a small mesh (a height
 // field on an n×n grid, n = 2..7, optionally with one face flipped), two patches split at a
 // column, constrained vertices and parameters; qd::approximate must return a result of the right
-// size or throw qd::Error — never crash, hang or produce NaN positions.
+// size or throw qd::common::Error — never crash, hang or produce NaN positions.
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -12,6 +12,9 @@
 #include "common/error.h"
 
 namespace {
+
+using namespace qd::approximate;
+using namespace qd::common;
 
 // Reads bytes in order; zeros once they run out.
 class ByteReader {
@@ -26,9 +29,9 @@ class ByteReader {
   std::size_t pos_ = 0;
 };
 
-qd::Problem problem_from(ByteReader& in) {
+qd::approximate::Problem problem_from(ByteReader& in) {
   const int n = 2 + static_cast<int>(in.next() % 6);
-  qd::Problem p;
+  qd::approximate::Problem p;
   p.V.resize((n + 1) * (n + 1), 3);
   for (int y = 0; y <= n; ++y)
     for (int x = 0; x <= n; ++x) p.V.row(y * (n + 1) + x) << x, y, 2 * in.unit() - 1;
@@ -51,10 +54,11 @@ qd::Problem problem_from(ByteReader& in) {
   p.params.max_iter = 1 + static_cast<int>(in.next() % 4);
   p.params.weight = 1 + 60 * in.unit();
   p.params.anchor = 20 * in.unit();
-  p.params.seams = (flags & 8) ? qd::SeamMode::Free : qd::SeamMode::Fixed;
+  p.params.seams = (flags & 8) ? qd::approximate::SeamMode::Free : qd::approximate::SeamMode::Fixed;
   p.params.keep_boundary = (flags & 16) == 0;
-  p.params.tolerance_mode = (flags & 32) ? qd::ToleranceMode::Total : qd::ToleranceMode::Step;
-  p.params.targets = static_cast<qd::TargetMode>(in.next() % 3);
+  p.params.tolerance_mode =
+      (flags & 32) ? qd::approximate::ToleranceMode::Total : qd::approximate::ToleranceMode::Step;
+  p.params.targets = static_cast<qd::approximate::TargetMode>(in.next() % 3);
   return p;
 }
 
@@ -62,11 +66,11 @@ qd::Problem problem_from(ByteReader& in) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   ByteReader in(data, size);
-  const qd::Problem problem = problem_from(in);
+  const qd::approximate::Problem problem = problem_from(in);
   try {
-    const qd::Result r = qd::approximate(problem);
+    const qd::approximate::Result r = qd::approximate::approximate(problem);
     if (r.V.rows() != problem.V.rows() || !r.V.allFinite()) std::abort();
-  } catch (const qd::Error&) {
+  } catch (const qd::common::Error&) {
   }
   return 0;
 }

@@ -10,10 +10,14 @@
 
 namespace {
 
+using namespace qd::common;
+using namespace qd::flatten;
+
 struct Strip {
   qd::test::GridMesh m = qd::test::cylinder(20, 6, 1.0, 1.0, 2.0);  // open: a disk
-  qd::FlatTriangles g = qd::flat_triangles(m.V, m.F);
-  Eigen::SparseMatrix<double> L = qd::cotangent_laplacian(m.F, g, static_cast<int>(m.V.rows()));
+  qd::flatten::FlatTriangles g = qd::flatten::flat_triangles(m.V, m.F);
+  Eigen::SparseMatrix<double> L =
+      qd::flatten::cotangent_laplacian(m.F, g, static_cast<int>(m.V.rows()));
   // A start far from the development: the 3D x, z coordinates, jittered.
   Eigen::MatrixX2d start() const {
     std::mt19937 random(7);
@@ -28,7 +32,8 @@ struct Strip {
 TEST(Arap, ConvergesToTheIsometryOfADevelopableStrip) {
   const Strip s;
   Eigen::MatrixX2d uv = s.start();
-  const qd::ArapOutcome out = qd::arap(s.m.F, s.g, s.L, uv, {2000, 1e-14, qd::SolverKind::Auto});
+  const qd::flatten::ArapOutcome out =
+      qd::flatten::arap(s.m.F, s.g, s.L, uv, {2000, 1e-14, qd::common::SolverKind::Auto});
   EXPECT_LT(out.energy, 1e-10);
   for (int f = 0; f < s.m.F.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -42,8 +47,9 @@ TEST(Arap, StopsAtTheCapAndReportsEachIteration) {
   const Strip s;
   Eigen::MatrixX2d uv = s.start();
   std::vector<int> seen;
-  const qd::ArapOutcome out = qd::arap(s.m.F, s.g, s.L, uv, {3, 0.0, qd::SolverKind::EigenLDLT},
-                                       [&](int k) { seen.push_back(k); });
+  const qd::flatten::ArapOutcome out =
+      qd::flatten::arap(s.m.F, s.g, s.L, uv, {3, 0.0, qd::common::SolverKind::EigenLDLT},
+                        [&](int k) { seen.push_back(k); });
   EXPECT_EQ(out.iterations, 3);
   EXPECT_EQ(out.stop_reason, "iteration cap");
   EXPECT_EQ(seen, (std::vector<int>{1, 2, 3}));
@@ -55,7 +61,8 @@ TEST(Arap, EnergyNeverRises) {
   double previous = INFINITY;
   for (int cap = 1; cap <= 6; ++cap) {
     Eigen::MatrixX2d again = s.start();
-    const qd::ArapOutcome out = qd::arap(s.m.F, s.g, s.L, again, {cap, 0.0, qd::SolverKind::Auto});
+    const qd::flatten::ArapOutcome out =
+        qd::flatten::arap(s.m.F, s.g, s.L, again, {cap, 0.0, qd::common::SolverKind::Auto});
     EXPECT_LE(out.energy, previous * (1 + 1e-12));
     previous = out.energy;
   }

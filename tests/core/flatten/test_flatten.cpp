@@ -13,10 +13,13 @@
 
 namespace {
 
+using namespace qd::common;
+using namespace qd::flatten;
+
 using qd::test::GridMesh;
 
-qd::FlattenProblem problem_of(const GridMesh& m, int threads = 0) {
-  qd::FlattenProblem p;
+qd::flatten::FlattenProblem problem_of(const GridMesh& m, int threads = 0) {
+  qd::flatten::FlattenProblem p;
   p.V = m.V;
   p.F = m.F;
   p.patch = m.patch;
@@ -30,7 +33,7 @@ GridMesh five_patches() {
   GridMesh m = qd::test::grid_mesh(32, 10, false, [](int i, int j) {
     const double t = 1.6 * M_PI * i / 32, z = 2.0 * j / 10;
     const double r = 1 + 0.15 * std::exp(-(std::pow(t - 2.0, 2) + std::pow(z - 1.0, 2)) / 0.2);
-    return qd::Vec3(r * std::cos(t), r * std::sin(t), z);
+    return qd::common::Vec3(r * std::cos(t), r * std::sin(t), z);
   });
   for (int f = 0; f < m.F.rows(); ++f) m.patch.push_back((f / 2) % 32 / 8);
   const GridMesh cone = qd::test::cone(16, 4, 1.0, 0.5, 1.0, 2.0);
@@ -45,16 +48,16 @@ GridMesh five_patches() {
 
 TEST(Flatten, DoublyCurvedCapIsFlattenedWithItsDistortionReported) {
   const GridMesh cap = qd::test::spherical_cap(32, 12, 1.2);  // about 69° from the pole
-  const qd::FlattenResult r = qd::flatten(problem_of(cap));
+  const qd::flatten::FlattenResult r = qd::flatten::flatten(problem_of(cap));
   ASSERT_EQ(r.pieces.size(), 1u);
-  const qd::PieceReport& p = r.pieces[0];
+  const qd::flatten::PieceReport& p = r.pieces[0];
   EXPECT_GT(p.max_distortion, 5.0);
   EXPECT_GT(p.mean_distortion, 1.0);
   EXPECT_TRUE(r.uv.allFinite());
   // The report agrees with the texture coordinates it hands back: the faces measured again on
   // their own corners (face f's corners are rows 3f, 3f + 1, 3f + 2).
-  const qd::FlatTriangles g = qd::flat_triangles(cap.V, cap.F);
-  qd::Triangles corners(cap.F.rows(), 3);
+  const qd::flatten::FlatTriangles g = qd::flatten::flat_triangles(cap.V, cap.F);
+  qd::common::Triangles corners(cap.F.rows(), 3);
   Eigen::MatrixX2d uv(3 * cap.F.rows(), 2);
   for (int f = 0; f < cap.F.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -64,10 +67,11 @@ TEST(Flatten, DoublyCurvedCapIsFlattenedWithItsDistortionReported) {
   double worst = 0;
   int flipped = 0;
   for (int f = 0; f < cap.F.rows(); ++f) {
-    const qd::Stretch s = qd::stretch(qd::face_jacobian(g, corners, uv, f));
-    worst = std::max(worst, qd::length_distortion(s));
+    const qd::flatten::Stretch s =
+        qd::flatten::stretch(qd::flatten::face_jacobian(g, corners, uv, f));
+    worst = std::max(worst, qd::flatten::length_distortion(s));
     flipped += s.flipped;
-    EXPECT_NEAR(r.stretch[f], qd::signed_stretch(s), 1e-12);
+    EXPECT_NEAR(r.stretch[f], qd::flatten::signed_stretch(s), 1e-12);
   }
   EXPECT_NEAR(p.max_distortion, 100 * worst, 1e-9);
   EXPECT_EQ(p.flipped, flipped);
@@ -79,11 +83,12 @@ TEST(Flatten, RampThatDevelopsOntoItselfIsReportedNotFlattenable) {
   // but its development winds about 2.9 times around the circle its edge of regression becomes.
   const GridMesh ramp = qd::test::grid_mesh(240, 4, false, [](int i, int j) {
     const double t = 6 * M_PI * i / 240, b = 0.3, s = (0.4 + 0.2 * j) / std::sqrt(1 + b * b);
-    return qd::Vec3(std::cos(t) - s * std::sin(t), std::sin(t) + s * std::cos(t), b * (t + s));
+    return qd::common::Vec3(std::cos(t) - s * std::sin(t), std::sin(t) + s * std::cos(t),
+                            b * (t + s));
   });
-  const qd::FlattenResult r = qd::flatten(problem_of(ramp));
+  const qd::flatten::FlattenResult r = qd::flatten::flatten(problem_of(ramp));
   ASSERT_EQ(r.pieces.size(), 1u);
-  const qd::PieceReport& p = r.pieces[0];
+  const qd::flatten::PieceReport& p = r.pieces[0];
   EXPECT_GT(p.overlapping, 0);
   EXPECT_FALSE(p.flattenable);
   EXPECT_NE(r.log[0].find("not flattenable without a cut"), std::string::npos);
@@ -93,9 +98,9 @@ TEST(Flatten, RampThatDevelopsOntoItselfIsReportedNotFlattenable) {
 
 TEST(Flatten, SameResultTwiceAndForAnyNumberOfThreads) {
   const GridMesh m = five_patches();
-  const qd::FlattenResult a = qd::flatten(problem_of(m, 1));
-  const qd::FlattenResult b = qd::flatten(problem_of(m, 1));
-  const qd::FlattenResult c = qd::flatten(problem_of(m, 3));
+  const qd::flatten::FlattenResult a = qd::flatten::flatten(problem_of(m, 1));
+  const qd::flatten::FlattenResult b = qd::flatten::flatten(problem_of(m, 1));
+  const qd::flatten::FlattenResult c = qd::flatten::flatten(problem_of(m, 3));
   ASSERT_EQ(a.pieces.size(), 5u);
   EXPECT_EQ(a.uv, b.uv);
   EXPECT_EQ(a.uv, c.uv);
@@ -108,10 +113,10 @@ TEST(Flatten, SameResultTwiceAndForAnyNumberOfThreads) {
 
 TEST(Flatten, PiecesLieApartAndSeamsGetNotches) {
   const GridMesh m = five_patches();
-  qd::FlattenProblem problem = problem_of(m);
+  qd::flatten::FlattenProblem problem = problem_of(m);
   problem.params.notch_spacing = 0.5;
   problem.params.symmetry_tolerance = 0;  // patches 1 and 2 are congruent: keep one piece each
-  const qd::FlattenResult r = qd::flatten(problem);
+  const qd::flatten::FlattenResult r = qd::flatten::flatten(problem);
   ASSERT_EQ(r.pieces.size(), 5u);
   for (size_t a = 0; a < r.pieces.size(); ++a) {
     EXPECT_EQ(r.pieces[a].flipped, 0);
@@ -139,7 +144,7 @@ TEST(Flatten, OneTrianglePatchesAreExactPieces) {
   m.patch.assign(static_cast<size_t>(m.F.rows()), 0);
   m.patch[5] = 1;  // a single triangle
   m.patch[6] = 2;  // and another one beside it: they share an edge but not a patch
-  const qd::FlattenResult r = qd::flatten(problem_of(m));
+  const qd::flatten::FlattenResult r = qd::flatten::flatten(problem_of(m));
   ASSERT_EQ(r.pieces.size(), 3u);
   for (int piece = 1; piece <= 2; ++piece) {
     EXPECT_EQ(r.pieces[piece].faces, 1);
@@ -152,32 +157,32 @@ TEST(Flatten, OneTrianglePatchesAreExactPieces) {
 
 TEST(Flatten, ProgressRisesToOneHundred) {
   std::vector<int> percent;
-  qd::flatten(problem_of(five_patches(), 1),
-              [&](int p, const std::string&) { percent.push_back(p); });
+  qd::flatten::flatten(problem_of(five_patches(), 1),
+                       [&](int p, const std::string&) { percent.push_back(p); });
   ASSERT_FALSE(percent.empty());
   EXPECT_TRUE(std::is_sorted(percent.begin(), percent.end()));
   EXPECT_EQ(percent.back(), 100);
 }
 
 TEST(Flatten, BadInputFailsWithAReason) {
-  qd::FlattenProblem empty;
-  EXPECT_THROW(qd::flatten(empty), qd::Error);
-  for (const auto& bad : std::vector<std::function<void(qd::FlattenParams&)>>{
-           [](qd::FlattenParams& q) { q.max_iterations = -1; },
-           [](qd::FlattenParams& q) { q.tolerance = NAN; },
-           [](qd::FlattenParams& q) { q.gap = -1; },
-           [](qd::FlattenParams& q) { q.notch_spacing = INFINITY; },
-           [](qd::FlattenParams& q) { q.threads = -2; }}) {
-    qd::FlattenProblem p = problem_of(qd::test::cylinder(8, 2, 1, 1, 2));
+  qd::flatten::FlattenProblem empty;
+  EXPECT_THROW(qd::flatten::flatten(empty), qd::common::Error);
+  for (const auto& bad : std::vector<std::function<void(qd::flatten::FlattenParams&)>>{
+           [](qd::flatten::FlattenParams& q) { q.max_iterations = -1; },
+           [](qd::flatten::FlattenParams& q) { q.tolerance = NAN; },
+           [](qd::flatten::FlattenParams& q) { q.gap = -1; },
+           [](qd::flatten::FlattenParams& q) { q.notch_spacing = INFINITY; },
+           [](qd::flatten::FlattenParams& q) { q.threads = -2; }}) {
+    qd::flatten::FlattenProblem p = problem_of(qd::test::cylinder(8, 2, 1, 1, 2));
     bad(p.params);
-    EXPECT_THROW(qd::flatten(p), qd::Error);
+    EXPECT_THROW(qd::flatten::flatten(p), qd::common::Error);
   }
-  qd::FlattenProblem nan = problem_of(qd::test::cylinder(8, 2, 1, 1, 2));
+  qd::flatten::FlattenProblem nan = problem_of(qd::test::cylinder(8, 2, 1, 1, 2));
   nan.V(3, 1) = NAN;
   try {
-    qd::flatten(nan);
+    qd::flatten::flatten(nan);
     FAIL();
-  } catch (const qd::Error& e) {
+  } catch (const qd::common::Error& e) {
     EXPECT_NE(std::string(e.what()).find("NaN"), std::string::npos) << e.what();
   }
 }

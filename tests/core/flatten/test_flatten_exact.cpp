@@ -6,10 +6,13 @@
 
 namespace {
 
+using namespace qd::common;
+using namespace qd::flatten;
+
 using qd::test::GridMesh;
 
 // Largest relative error of an edge length on the pattern against 3D, over every face.
-double max_edge_error(const GridMesh& m, const qd::FlattenResult& r) {
+double max_edge_error(const GridMesh& m, const qd::flatten::FlattenResult& r) {
   double worst = 0;
   for (int f = 0; f < m.F.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -21,19 +24,19 @@ double max_edge_error(const GridMesh& m, const qd::FlattenResult& r) {
   return worst;
 }
 
-qd::FlattenResult run(const GridMesh& m) {
-  qd::FlattenProblem p;
+qd::flatten::FlattenResult run(const GridMesh& m) {
+  qd::flatten::FlattenProblem p;
   p.V = m.V;
   p.F = m.F;
   p.patch = m.patch;
-  return qd::flatten(p);
+  return qd::flatten::flatten(p);
 }
 
 TEST(FlattenExact, CylinderTubeCutOnceFlattensToItsRectangle) {
   const GridMesh m = qd::test::cylinder(32, 8, 1.0, 2.0);
-  const qd::FlattenResult r = run(m);
+  const qd::flatten::FlattenResult r = run(m);
   ASSERT_EQ(r.pieces.size(), 1u);
-  const qd::PieceReport& p = r.pieces[0];
+  const qd::flatten::PieceReport& p = r.pieces[0];
   EXPECT_LT(max_edge_error(m, r), 1e-3);
   EXPECT_LT(std::abs(p.area_change), 0.1);
   EXPECT_EQ(p.flipped, 0);
@@ -49,9 +52,9 @@ TEST(FlattenExact, CylinderTubeCutOnceFlattensToItsRectangle) {
 
 TEST(FlattenExact, ConeTubeFlattensToItsSector) {
   const GridMesh m = qd::test::cone(40, 10, 1.0, 0.4, 1.5);
-  const qd::FlattenResult r = run(m);
+  const qd::flatten::FlattenResult r = run(m);
   ASSERT_EQ(r.pieces.size(), 1u);
-  const qd::PieceReport& p = r.pieces[0];
+  const qd::flatten::PieceReport& p = r.pieces[0];
   EXPECT_LT(max_edge_error(m, r), 1e-3);
   EXPECT_LT(std::abs(p.area_change), 0.1);
   EXPECT_LT(std::abs(p.boundary_change), 0.1);
@@ -64,11 +67,11 @@ TEST(FlattenExact, ConeTubeFlattensToItsSector) {
 TEST(FlattenExact, TheStartIsTheDevelopmentAlready) {
   for (const GridMesh& m :
        {qd::test::cylinder(32, 8, 1.0, 2.0), qd::test::cone(40, 10, 1.0, 0.4, 1.5)}) {
-    qd::FlattenProblem p;
+    qd::flatten::FlattenProblem p;
     p.V = m.V;
     p.F = m.F;
     p.params.max_iterations = 0;
-    const qd::FlattenResult r = qd::flatten(p);
+    const qd::flatten::FlattenResult r = qd::flatten::flatten(p);
     EXPECT_EQ(r.pieces[0].iterations, 0);
     EXPECT_LT(max_edge_error(m, r), 1e-9);
   }
@@ -78,7 +81,7 @@ TEST(FlattenExact, TheStartIsTheDevelopmentAlready) {
 TEST(FlattenExact, OpenCylinderAndConeStripsNeedNoCut) {
   for (const GridMesh& m :
        {qd::test::cylinder(24, 6, 2.0, 1.0, 2.5), qd::test::cone(24, 6, 2.0, 0.5, 1.0, 3.0)}) {
-    const qd::FlattenResult r = run(m);
+    const qd::flatten::FlattenResult r = run(m);
     ASSERT_EQ(r.pieces.size(), 1u);
     EXPECT_TRUE(r.pieces[0].cut.empty()) << r.pieces[0].cut;
     EXPECT_LT(max_edge_error(m, r), 1e-6);

@@ -10,16 +10,18 @@
 
 namespace {
 
+using namespace qd::flatten;
+
 TEST(BoundaryCurve, SquareFromItsTurnsAndLengths) {
   const Eigen::Vector4d lengths(2, 1, 2, 1), turning = Eigen::Vector4d::Constant(M_PI / 2);
-  const Eigen::MatrixX2d c = qd::closed_boundary_curve(lengths, turning);
+  const Eigen::MatrixX2d c = qd::flatten::closed_boundary_curve(lengths, turning);
   for (int i = 0; i < 4; ++i)
     EXPECT_NEAR((c.row((i + 1) % 4) - c.row(i)).norm(), lengths(i), 1e-12);
 }
 
 TEST(BoundaryCurve, LengthsThatDoNotCloseAreAdjustedLeastAndClose) {
   const Eigen::Vector4d lengths(2, 1, 1.8, 1), turning = Eigen::Vector4d::Constant(M_PI / 2);
-  const Eigen::MatrixX2d c = qd::closed_boundary_curve(lengths, turning);
+  const Eigen::MatrixX2d c = qd::flatten::closed_boundary_curve(lengths, turning);
   Eigen::Vector4d closed;
   for (int i = 0; i < 4; ++i) closed(i) = (c.row((i + 1) % 4) - c.row(i)).norm();
   // The gap of 0.2 is shared by the two long edges in proportion to their lengths (N = 1/l).
@@ -31,34 +33,35 @@ TEST(BoundaryCurve, LengthsThatDoNotCloseAreAdjustedLeastAndClose) {
 
 TEST(FaceDistortion, SingularValuesOfAScaledRotation) {
   const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.7).toRotationMatrix();
-  const qd::Stretch s = qd::stretch(R * Eigen::Vector2d(2.0, 0.5).asDiagonal() * R.transpose() * R);
+  const qd::flatten::Stretch s =
+      qd::flatten::stretch(R * Eigen::Vector2d(2.0, 0.5).asDiagonal() * R.transpose() * R);
   EXPECT_NEAR(s.s1, 2.0, 1e-12);
   EXPECT_NEAR(s.s2, 0.5, 1e-12);
   EXPECT_FALSE(s.flipped);
-  EXPECT_NEAR(qd::length_distortion(s), 1.0, 1e-12);
-  EXPECT_TRUE(qd::stretch(Eigen::Vector2d(1.0, -1.0).asDiagonal()).flipped);
+  EXPECT_NEAR(qd::flatten::length_distortion(s), 1.0, 1e-12);
+  EXPECT_TRUE(qd::flatten::stretch(Eigen::Vector2d(1.0, -1.0).asDiagonal()).flipped);
 }
 
 TEST(FaceDistortion, SignedStretchReadsCompressionNegative) {
-  EXPECT_NEAR(qd::signed_stretch({1.1, 0.95, false}), 0.1, 1e-15);
-  EXPECT_NEAR(qd::signed_stretch({1.02, 0.9, false}), -0.1, 1e-15);
-  EXPECT_NEAR(qd::signed_stretch({0.99, 0.98, false}), -0.02, 1e-15);
-  EXPECT_NEAR(qd::signed_stretch({1.0, 1.0, false}), 0.0, 1e-15);
+  EXPECT_NEAR(qd::flatten::signed_stretch({1.1, 0.95, false}), 0.1, 1e-15);
+  EXPECT_NEAR(qd::flatten::signed_stretch({1.02, 0.9, false}), -0.1, 1e-15);
+  EXPECT_NEAR(qd::flatten::signed_stretch({0.99, 0.98, false}), -0.02, 1e-15);
+  EXPECT_NEAR(qd::flatten::signed_stretch({1.0, 1.0, false}), 0.0, 1e-15);
 }
 
 TEST(BoundaryCrossings, FigureEightCrossesASquareDoesNot) {
   Eigen::MatrixX2d uv(4, 2);
   uv << 0, 0, 1, 0, 1, 1, 0, 1;
   const std::vector<std::array<int, 2>> square = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  EXPECT_EQ(qd::crossing_segments(uv, square), std::vector<char>(4, 0));
+  EXPECT_EQ(qd::flatten::crossing_segments(uv, square), std::vector<char>(4, 0));
   const std::vector<std::array<int, 2>> bow = {{0, 1}, {1, 3}, {3, 2}, {2, 0}};  // 1→3 crosses 2→0
-  EXPECT_EQ(qd::crossing_segments(uv, bow), (std::vector<char>{0, 1, 0, 1}));
+  EXPECT_EQ(qd::flatten::crossing_segments(uv, bow), (std::vector<char>{0, 1, 0, 1}));
 }
 
 TEST(Layout, GrainEndsUpAlongY) {
   for (const double angle : {0.0, 0.4, 2.0, -2.9}) {
     const Eigen::Vector2d grain(std::cos(angle), std::sin(angle));
-    const Eigen::Matrix2d R = qd::grain_rotation(grain);
+    const Eigen::Matrix2d R = qd::flatten::grain_rotation(grain);
     EXPECT_NEAR((R * grain - Eigen::Vector2d::UnitY()).norm(), 0.0, 1e-12) << angle;
     EXPECT_NEAR(R.determinant(), 1.0, 1e-12) << angle;  // turned, not mirrored
     EXPECT_NEAR((R.transpose() * R - Eigen::Matrix2d::Identity()).norm(), 0.0, 1e-12) << angle;
@@ -72,7 +75,7 @@ TEST(Layout, LaysEachPieceWithItsGrainUp) {
   const std::vector<Eigen::Vector2d> grain = {Eigen::Vector2d(1, 1).normalized(),
                                               Eigen::Vector2d(1, -1).normalized()};
   const double gap = 0.2, margin = 0.3;
-  const std::vector<Eigen::AlignedBox2d> boxes = qd::lay_out(pieces, grain, gap, margin);
+  const std::vector<Eigen::AlignedBox2d> boxes = qd::flatten::lay_out(pieces, grain, gap, margin);
   // Grown by the margin, the boxes keep the gap apart.
   Eigen::AlignedBox2d grown[2];
   for (int k = 0; k < 2; ++k)
@@ -94,7 +97,7 @@ TEST(Layout, PackedBoxesDoNotOverlapAndKeepTheGap) {
     boxes.emplace_back(Eigen::Vector2d(-i, 3),
                        Eigen::Vector2d(-i + 1 + (i * 7) % 5, 4 + (i * 3) % 4));
   const double gap = 0.25;
-  const std::vector<Eigen::Vector2d> corner = qd::shelf_pack(boxes, gap);
+  const std::vector<Eigen::Vector2d> corner = qd::flatten::shelf_pack(boxes, gap);
   for (size_t a = 0; a < boxes.size(); ++a)
     for (size_t b = a + 1; b < boxes.size(); ++b) {
       const Eigen::AlignedBox2d A(corner[a],

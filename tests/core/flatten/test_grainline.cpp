@@ -11,6 +11,9 @@
 
 namespace {
 
+using namespace qd::common;
+using namespace qd::flatten;
+
 Eigen::Matrix2d turn(double angle) { return Eigen::Rotation2Dd(angle).toRotationMatrix(); }
 
 TEST(Grainline, CylinderPanelGrainRunsAlongItsAxis) {
@@ -22,7 +25,8 @@ TEST(Grainline, CylinderPanelGrainRunsAlongItsAxis) {
     const double arc = r * std::atan2(panel.V(v, 1), panel.V(v, 0));
     uv.row(v) = (turn(0.7) * Eigen::Vector2d(arc, panel.V(v, 2))).transpose();
   }
-  const Eigen::Vector2d grain = qd::grain_direction(panel.V, panel.F, uv, Eigen::Vector3d(0, 0, 2));
+  const Eigen::Vector2d grain =
+      qd::flatten::grain_direction(panel.V, panel.F, uv, Eigen::Vector3d(0, 0, 2));
   EXPECT_NEAR(grain.norm(), 1, 1e-12);
   EXPECT_NEAR((grain - turn(0.7) * Eigen::Vector2d::UnitY()).norm(), 0, 1e-3);
 }
@@ -37,7 +41,7 @@ TEST(Grainline, ZeroDirectionTakesEveryPiecesLongestAxis) {
       uv.row(v) =
           Eigen::Vector2d(std::atan2(panel.V(v, 1), panel.V(v, 0)), panel.V(v, 2)).transpose();
     const Eigen::Vector2d grain =
-        qd::grain_direction(panel.V, panel.F, uv, Eigen::Vector3d::Zero());
+        qd::flatten::grain_direction(panel.V, panel.F, uv, Eigen::Vector3d::Zero());
     EXPECT_NEAR(std::abs(grain.y()), along ? 1 : 0, 1e-6) << sweep;
   }
 }
@@ -46,10 +50,11 @@ TEST(Grainline, HorizontalDiscFallsBackToItsLongestAxis) {
   // An elliptic disc in the plane z = 0, three times longer along x, laid out turned by 0.5.
   qd::test::GridMesh disc = qd::test::grid_mesh(24, 4, true, [](int i, int j) {
     const double t = 2 * M_PI * i / 24, s = (j + 1) / 5.0;
-    return qd::Vec3(3 * s * std::cos(t), s * std::sin(t), 0);
+    return qd::common::Vec3(3 * s * std::cos(t), s * std::sin(t), 0);
   });
   Eigen::MatrixX2d uv = disc.V.leftCols<2>() * turn(0.5).transpose();
-  const Eigen::Vector2d grain = qd::grain_direction(disc.V, disc.F, uv, Eigen::Vector3d::UnitZ());
+  const Eigen::Vector2d grain =
+      qd::flatten::grain_direction(disc.V, disc.F, uv, Eigen::Vector3d::UnitZ());
   EXPECT_NEAR(grain.norm(), 1, 1e-12);
   EXPECT_NEAR(std::abs(grain.dot(turn(0.5) * Eigen::Vector2d::UnitX())), 1, 1e-9);
   // Tilted 10° about y: up still says too little (sin 10° < kWeakGrain), and the fallback
@@ -57,20 +62,21 @@ TEST(Grainline, HorizontalDiscFallsBackToItsLongestAxis) {
   const Eigen::Matrix3d tilt =
       Eigen::AngleAxisd(10 * M_PI / 180, Eigen::Vector3d::UnitY()).toRotationMatrix();
   disc.V = disc.V * tilt.transpose();
-  const Eigen::Vector2d tilted = qd::grain_direction(disc.V, disc.F, uv, Eigen::Vector3d::UnitZ());
+  const Eigen::Vector2d tilted =
+      qd::flatten::grain_direction(disc.V, disc.F, uv, Eigen::Vector3d::UnitZ());
   EXPECT_NEAR(tilted.norm(), 1, 1e-12);
   EXPECT_NEAR(std::abs(tilted.dot(grain)), 1, 1e-9);
 }
 
 TEST(Grainline, FlattenedCylinderPanelIsLaidWithItsAxisUpTheSheet) {
   const qd::test::GridMesh panel = qd::test::cylinder(16, 8, 1.0, 0.8, 2.5);  // wider than tall
-  qd::FlattenProblem problem;
+  qd::flatten::FlattenProblem problem;
   problem.V = panel.V;
   problem.F = panel.F;
   problem.params.grain_up = Eigen::Vector3d::UnitZ();
-  const qd::FlattenResult r = qd::flatten(problem);
+  const qd::flatten::FlattenResult r = qd::flatten::flatten(problem);
   ASSERT_EQ(r.pattern.pieces.size(), 1u);
-  const qd::PatternPiece& p = r.pattern.pieces[0];
+  const qd::flatten::PatternPiece& p = r.pattern.pieces[0];
   EXPECT_NEAR((p.grain - Eigen::Vector2d::UnitY()).norm(), 0, 1e-12);
   // The axis (height 0.8) runs along y, the unrolled width (2.5 minus chords) along x.
   EXPECT_NEAR(r.pieces[0].box.sizes().y(), 0.8, 1e-3);

@@ -15,10 +15,13 @@
 
 namespace {
 
-using qd::Marker;
-using qd::Outline;
-using qd::Pattern;
-using qd::PatternPiece;
+using namespace qd::common;
+using namespace qd::marker;
+
+using qd::flatten::Outline;
+using qd::flatten::Pattern;
+using qd::flatten::PatternPiece;
+using qd::marker::Marker;
 
 PatternPiece piece(const std::string& label, Outline outline, int quantity = 1, int mirrored = 0) {
   PatternPiece p;
@@ -70,12 +73,12 @@ void expect_valid(const Marker& m) {
 }
 
 Pattern rectangles() {
-  return qd::make_pattern({piece("1", rectangle(3, 5), 2, 1), piece("2", rectangle(2, 4)),
-                           piece("3", rectangle(4, 2), 3)});
+  return qd::flatten::make_pattern({piece("1", rectangle(3, 5), 2, 1), piece("2", rectangle(2, 4)),
+                                    piece("3", rectangle(4, 2), 3)});
 }
 
 TEST(NestMarker, PlacesRectanglesWithoutOverlapInsideTheStrip) {
-  const Marker m = qd::nest_marker(rectangles(), 8, 0.1);
+  const Marker m = qd::marker::nest_marker(rectangles(), 8, 0.1);
   ASSERT_EQ(m.placements.size(), 6u);
   EXPECT_TRUE(m.unplaced.empty());
   expect_valid(m);
@@ -86,7 +89,7 @@ TEST(NestMarker, PlacesRectanglesWithoutOverlapInsideTheStrip) {
 }
 
 TEST(NestMarker, MirrorsTheAskedCopiesAndKeepsTheGrainAlongTheLength) {
-  const Marker m = qd::nest_marker(rectangles(), 8, 0.1);
+  const Marker m = qd::marker::nest_marker(rectangles(), 8, 0.1);
   int mirrored = 0;
   for (const auto& p : m.placements) {
     if (p.piece == 0 && p.mirrored) ++mirrored;
@@ -102,13 +105,13 @@ TEST(NestMarker, MirrorsTheAskedCopiesAndKeepsTheGrainAlongTheLength) {
 TEST(NestMarker, ReportsAPieceWiderThanTheFabric) {
   // On the marker a piece's sheet x runs across the width: 12 > 8.
   const Pattern pattern =
-      qd::make_pattern({piece("wide", rectangle(12, 3)), piece("ok", rectangle(3, 3))});
-  const Marker m = qd::nest_marker(pattern, 8, 0.1);
+      qd::flatten::make_pattern({piece("wide", rectangle(12, 3)), piece("ok", rectangle(3, 3))});
+  const Marker m = qd::marker::nest_marker(pattern, 8, 0.1);
   ASSERT_EQ(m.unplaced.size(), 1u);
   EXPECT_EQ(m.unplaced[0], "wide");
   ASSERT_EQ(m.placements.size(), 1u);
   expect_valid(m);
-  EXPECT_EQ(qd::row_marker(pattern, 8, 0.1).unplaced, m.unplaced);
+  EXPECT_EQ(qd::marker::row_marker(pattern, 8, 0.1).unplaced, m.unplaced);
 }
 
 // Triangles and L-shapes, which bounding boxes waste.
@@ -116,12 +119,13 @@ Pattern irregular() {
   const Outline triangle = {{0, 0}, {6, 0}, {0, 9}};
   const Outline ell = {{0, 0}, {5, 0}, {5, 2}, {2, 2}, {2, 7}, {0, 7}};
   const Outline slant = {{0, 0}, {4, 0}, {7, 6}, {3, 6}};
-  return qd::make_pattern({piece("T", triangle, 4, 2), piece("L", ell, 3), piece("S", slant, 2)});
+  return qd::flatten::make_pattern(
+      {piece("T", triangle, 4, 2), piece("L", ell, 3), piece("S", slant, 2)});
 }
 
 TEST(NestMarker, IsNoLongerThanRowsOnIrregularPieces) {
-  const Marker nest = qd::nest_marker(irregular(), 14, 0.1);
-  const Marker rows = qd::row_marker(irregular(), 14, 0.1);
+  const Marker nest = qd::marker::nest_marker(irregular(), 14, 0.1);
+  const Marker rows = qd::marker::row_marker(irregular(), 14, 0.1);
   ASSERT_EQ(nest.placements.size(), 9u);
   ASSERT_EQ(rows.placements.size(), 9u);
   expect_valid(nest);
@@ -138,8 +142,8 @@ Outline tromino(double s) {
 
 TEST(NestMarker, InterlocksTwoLShapesIntoTheirRectangle) {
   const double s = 5, gap = 0.01;
-  const Pattern pattern = qd::make_pattern({piece("L", tromino(s), 2)});
-  const Marker m = qd::nest_marker(pattern, 2 * s + 1, gap);
+  const Pattern pattern = qd::flatten::make_pattern({piece("L", tromino(s), 2)});
+  const Marker m = qd::marker::nest_marker(pattern, 2 * s + 1, gap);
   ASSERT_EQ(m.placements.size(), 2u);
   expect_valid(m);
   // Side by side their bounding boxes need 4 s; interlocked they touch along the notch: 3 s.
@@ -148,10 +152,10 @@ TEST(NestMarker, InterlocksTwoLShapesIntoTheirRectangle) {
 
 TEST(NestMarker, IsClearlyShorterThanRowsWhereLShapesInterlock) {
   const double s = 5, gap = 0.1;
-  const Pattern pattern = qd::make_pattern({piece("L", tromino(s), 8, 4)});
+  const Pattern pattern = qd::flatten::make_pattern({piece("L", tromino(s), 8, 4)});
   // Two boxes across: the rows stack them, the nesting has to interlock pairs to do better.
-  const Marker nest = qd::nest_marker(pattern, 4 * s + 1, gap);
-  const Marker rows = qd::row_marker(pattern, 4 * s + 1, gap);
+  const Marker nest = qd::marker::nest_marker(pattern, 4 * s + 1, gap);
+  const Marker rows = qd::marker::row_marker(pattern, 4 * s + 1, gap);
   ASSERT_EQ(nest.placements.size(), 8u);
   expect_valid(nest);
   // Pairs in 3 x 2 rectangles against 2 x 2 boxes: a quarter shorter at best.
@@ -169,7 +173,7 @@ ClipperLib::Path integer_path(const Outline& o) {
 
 TEST(NoFitPolygon, OfTwoUnitSquaresIsTheTwoByTwoSquareAround) {
   const ClipperLib::Path square = integer_path(rectangle(1, 1));
-  const ClipperLib::Path nfp = qd::no_fit_polygon(square, square, {0, 0});
+  const ClipperLib::Path nfp = qd::marker::no_fit_polygon(square, square, {0, 0});
   EXPECT_NEAR(ClipperLib::Area(nfp), 4e6, 1);
   for (const auto& q : nfp) {
     EXPECT_TRUE(std::abs(q.X) == 1000 || std::abs(q.Y) == 1000) << q.X << ' ' << q.Y;
@@ -182,8 +186,8 @@ Outline u_shape() { return {{0, 0}, {3, 0}, {3, 3}, {2, 3}, {2, 1}, {1, 1}, {1, 
 
 TEST(NoFitPolygon, LetsASmallSquareIntoAUsNotch) {
   // A square of side 0.8 moved by its bottom left corner.
-  const ClipperLib::Path nfp =
-      qd::no_fit_polygon(integer_path(u_shape()), integer_path(rectangle(0.8, 0.8)), {0, 0});
+  const ClipperLib::Path nfp = qd::marker::no_fit_polygon(
+      integer_path(u_shape()), integer_path(rectangle(0.8, 0.8)), {0, 0});
   const auto where = [&nfp](double x, double y) {
     return ClipperLib::PointInPolygon({std::llround(x * 1e3), std::llround(y * 1e3)}, nfp);
   };
@@ -196,8 +200,8 @@ TEST(NoFitPolygon, LetsASmallSquareIntoAUsNotch) {
 
 TEST(NestMarker, PutsASmallSquareIntoAUsNotch) {
   const Pattern pattern =
-      qd::make_pattern({piece("U", u_shape()), piece("square", rectangle(0.8, 0.8))});
-  const Marker m = qd::nest_marker(pattern, 3.2, 0.05);
+      qd::flatten::make_pattern({piece("U", u_shape()), piece("square", rectangle(0.8, 0.8))});
+  const Marker m = qd::marker::nest_marker(pattern, 3.2, 0.05);
   ASSERT_EQ(m.placements.size(), 2u);
   expect_valid(m);
   Eigen::AlignedBox2d u_box, square_box;
@@ -209,7 +213,7 @@ TEST(NestMarker, PutsASmallSquareIntoAUsNotch) {
 // The marker written keeps the placement with more pieces placed, then the shorter one.
 TEST(CutMarker, KeepsTheShorterOfNestingAndRows) {
   for (const double width : {7.5, 12.0, 15.0, 20.0}) {
-    const qd::MarkerChoice c = qd::cut_marker(irregular(), width, 0.1);
+    const qd::marker::MarkerChoice c = qd::marker::cut_marker(irregular(), width, 0.1);
     const size_t nested = c.nested.placements.size(), rows = c.rows.placements.size();
     if (nested == rows)
       EXPECT_EQ(c.kept().length, std::min(c.nested.length, c.rows.length)) << width;

@@ -10,7 +10,10 @@
 
 namespace {
 
-using qd::Outline;
+using namespace qd::common;
+using namespace qd::flatten;
+
+using qd::flatten::Outline;
 
 double signed_area(const Outline& loop) {
   double sum = 0;
@@ -46,7 +49,7 @@ Outline reversed(Outline loop) {
 TEST(SeamAllowance, SquareGrowsByTheAllowanceOnEverySide) {
   const double s = 2, a = 0.1, eps = 1e-6;
   for (const Outline& sew : {square(3, -1, s), reversed(square(3, -1, s))}) {
-    const std::vector<Outline> cut = qd::cut_lines({sew}, a);
+    const std::vector<Outline> cut = qd::flatten::cut_lines({sew}, a);
     ASSERT_EQ(cut.size(), 1u);
     EXPECT_NEAR(signed_area(cut[0]), (s + 2 * a) * (s + 2 * a), 1e-6);  // counter-clockwise
     for (const Eigen::Vector2d& p : cut[0]) {
@@ -59,7 +62,7 @@ TEST(SeamAllowance, SquareGrowsByTheAllowanceOnEverySide) {
 TEST(SeamAllowance, SharpCornerIsSquaredOffAtTheMiterLimit) {
   const Outline sliver = {{0, 0}, {10, 0}, {0, 1}};  // about 5.7° at (10, 0)
   const double a = 0.2, eps = 1e-6;
-  const std::vector<Outline> cut = qd::cut_lines({sliver}, a);
+  const std::vector<Outline> cut = qd::flatten::cut_lines({sliver}, a);
   ASSERT_EQ(cut.size(), 1u);
   double farthest = 0;
   for (const Eigen::Vector2d& p : cut[0]) {
@@ -74,7 +77,7 @@ TEST(SeamAllowance, HoleShrinksWhicheverWayThePieceTurns) {
   const std::vector<Outline> ccw = {square(0, 0, 4), reversed(square(1, 1, 2))};
   const std::vector<Outline> cw = {reversed(ccw[0]), reversed(ccw[1])};  // a mirrored piece
   for (const std::vector<Outline>& sew : {ccw, cw}) {
-    const std::vector<Outline> cut = qd::cut_lines(sew, a);
+    const std::vector<Outline> cut = qd::flatten::cut_lines(sew, a);
     ASSERT_EQ(cut.size(), 2u);
     std::vector<double> areas = {signed_area(cut[0]), signed_area(cut[1])};
     std::sort(areas.begin(), areas.end());
@@ -85,26 +88,26 @@ TEST(SeamAllowance, HoleShrinksWhicheverWayThePieceTurns) {
 
 TEST(SeamAllowance, ZeroAllowanceKeepsTheSewLines) {
   const std::vector<Outline> sew = {reversed(square(0.3, 0.7, 1.9)), square(0.5, 0.9, 0.2)};
-  const std::vector<Outline> cut = qd::cut_lines(sew, 0);
+  const std::vector<Outline> cut = qd::flatten::cut_lines(sew, 0);
   ASSERT_EQ(cut.size(), sew.size());
   for (size_t k = 0; k < sew.size(); ++k) EXPECT_EQ(cut[k], sew[k]);
 }
 
 TEST(SeamAllowance, NotchesAreCutThroughToTheCutLine) {
-  qd::PatternPiece piece;
+  qd::flatten::PatternPiece piece;
   piece.outlines = {square(0, 0, 2)};
   piece.notches = {{{1, 0}, {0, 1}, {1, 0}},
                    {{2, 2}, Eigen::Vector2d(-1, -1).normalized(), {2, 2}}};
   const double a = 0.1;
-  qd::add_seam_allowance(piece, a);
+  qd::flatten::add_seam_allowance(piece, a);
   EXPECT_NEAR((piece.notches[0].cut_at - Eigen::Vector2d(1, -a)).norm(), 0, 1e-6);
   EXPECT_NEAR((piece.notches[1].cut_at - Eigen::Vector2d(2 + a, 2 + a)).norm(), 0,
               1e-6);  // the miter's tip
-  for (const qd::Notch& n : piece.notches)
+  for (const qd::flatten::Notch& n : piece.notches)
     EXPECT_NEAR(distance(n.cut_at, piece.cut_outlines), 0, 1e-9);
-  qd::add_seam_allowance(piece, 0);
+  qd::flatten::add_seam_allowance(piece, 0);
   EXPECT_EQ(piece.cut_outlines, piece.outlines);
-  for (const qd::Notch& n : piece.notches) EXPECT_EQ(n.cut_at, n.at);
+  for (const qd::flatten::Notch& n : piece.notches) EXPECT_EQ(n.cut_at, n.at);
 }
 
 }  // namespace

@@ -13,8 +13,11 @@
 
 namespace {
 
-using qd::Outline;
-using qd::PatternPiece;
+using namespace qd::common;
+using namespace qd::flatten;
+
+using qd::flatten::Outline;
+using qd::flatten::PatternPiece;
 
 // A smooth outline with no symmetry (no mirror axis, not centrally symmetric), about 4 × 2.
 Outline blob() {
@@ -63,8 +66,8 @@ PatternPiece turned(const Outline& o, double degrees) {
 }
 
 TEST(SymmetricPieces, MirrorImageGroupsAsMirrored) {
-  const std::vector<qd::PieceGroup> g =
-      qd::symmetric_groups({piece({blob()}), mirror_of(blob())}, 1);
+  const std::vector<qd::flatten::PieceGroup> g =
+      qd::flatten::symmetric_groups({piece({blob()}), mirror_of(blob())}, 1);
   ASSERT_EQ(g.size(), 1u);
   EXPECT_EQ(g[0].members, (std::vector<int>{0, 1}));
   EXPECT_EQ(g[0].mirrored, (std::vector<char>{0, 1}));
@@ -72,8 +75,8 @@ TEST(SymmetricPieces, MirrorImageGroupsAsMirrored) {
 }
 
 TEST(SymmetricPieces, CopyTurnedHalfWayGroupsUnmirrored) {
-  const std::vector<qd::PieceGroup> g =
-      qd::symmetric_groups({piece({blob()}), turned(blob(), 180)}, 1);
+  const std::vector<qd::flatten::PieceGroup> g =
+      qd::flatten::symmetric_groups({piece({blob()}), turned(blob(), 180)}, 1);
   ASSERT_EQ(g.size(), 1u);
   EXPECT_EQ(g[0].mirrored, (std::vector<char>{0, 0}));
   EXPECT_LT(g[0].difference, 0.01);
@@ -86,11 +89,12 @@ TEST(SymmetricPieces, SlightTurnIsFittedButALargeOneIsNot) {
   double reach = 0;
   for (const Eigen::Vector2d& p : o) reach = std::max(reach, p.norm());
   ASSERT_GT(2 * std::sin(M_PI / 180) * reach, 0.01 * size_of(o));
-  const std::vector<qd::PieceGroup> slight = qd::symmetric_groups({piece({o}), turned(o, 2)}, 1);
+  const std::vector<qd::flatten::PieceGroup> slight =
+      qd::flatten::symmetric_groups({piece({o}), turned(o, 2)}, 1);
   ASSERT_EQ(slight.size(), 1u);
   EXPECT_LT(slight[0].difference, 0.05);
   // 30° off would put the grain off: not the same piece to cut, whatever the tolerance.
-  EXPECT_EQ(qd::symmetric_groups({piece({o}), turned(o, 30)}, 5).size(), 2u);
+  EXPECT_EQ(qd::flatten::symmetric_groups({piece({o}), turned(o, 30)}, 5).size(), 2u);
 }
 
 TEST(SymmetricPieces, LargerPieceGroupsOnlyAtALargeTolerance) {
@@ -99,8 +103,8 @@ TEST(SymmetricPieces, LargerPieceGroupsOnlyAtALargeTolerance) {
       piece({o}), piece({mapped(o, false, [](const Eigen::Vector2d& p) -> Eigen::Vector2d {
         return 1.05 * p;
       })})};
-  EXPECT_EQ(qd::symmetric_groups(pieces, 1).size(), 2u);
-  const std::vector<qd::PieceGroup> loose = qd::symmetric_groups(pieces, 10);
+  EXPECT_EQ(qd::flatten::symmetric_groups(pieces, 1).size(), 2u);
+  const std::vector<qd::flatten::PieceGroup> loose = qd::flatten::symmetric_groups(pieces, 10);
   ASSERT_EQ(loose.size(), 1u);
   EXPECT_GT(loose[0].difference, 1.0);
   EXPECT_LT(loose[0].difference, 10.0);
@@ -115,14 +119,16 @@ TEST(SymmetricPieces, SmallPerturbationGroupsWithItsSizeReported) {
     const double a = angle(random);
     return p + amplitude * Eigen::Vector2d(std::cos(a), std::sin(a));
   });
-  const std::vector<qd::PieceGroup> g = qd::symmetric_groups({piece({o}), piece({noisy})}, 1);
+  const std::vector<qd::flatten::PieceGroup> g =
+      qd::flatten::symmetric_groups({piece({o}), piece({noisy})}, 1);
   ASSERT_EQ(g.size(), 1u);
   EXPECT_GT(g[0].difference, 0.05);
   EXPECT_LT(g[0].difference, 1.0);
 }
 
 TEST(SymmetricPieces, ZeroToleranceLeavesEveryPieceAlone) {
-  const std::vector<qd::PieceGroup> g = qd::symmetric_groups({piece({blob()}), piece({blob()})}, 0);
+  const std::vector<qd::flatten::PieceGroup> g =
+      qd::flatten::symmetric_groups({piece({blob()}), piece({blob()})}, 0);
   ASSERT_EQ(g.size(), 2u);
   EXPECT_EQ(g[0].members, (std::vector<int>{0}));
   EXPECT_EQ(g[1].members, (std::vector<int>{1}));
@@ -131,11 +137,12 @@ TEST(SymmetricPieces, ZeroToleranceLeavesEveryPieceAlone) {
 
 // Above the bound every piece stays alone (the search is quadratic); at it, copies still group.
 TEST(SymmetricPieces, ManyPiecesAreLeftAloneAboveTheBound) {
-  const std::vector<PatternPiece> at(qd::kMaxSymmetryPieces, piece({{{0, 0}, {1, 0}, {0, 2}}}));
-  EXPECT_EQ(qd::symmetric_groups(at, 1).size(), 1u);
+  const std::vector<PatternPiece> at(qd::flatten::kMaxSymmetryPieces,
+                                     piece({{{0, 0}, {1, 0}, {0, 2}}}));
+  EXPECT_EQ(qd::flatten::symmetric_groups(at, 1).size(), 1u);
   std::vector<PatternPiece> above = at;
   above.push_back(at.front());
-  EXPECT_EQ(qd::symmetric_groups(above, 1).size(), above.size());
+  EXPECT_EQ(qd::flatten::symmetric_groups(above, 1).size(), above.size());
 }
 
 TEST(SymmetricPieces, ThreeCopiesAreOneGroupInIndexOrder) {
@@ -145,12 +152,12 @@ TEST(SymmetricPieces, ThreeCopiesAreOneGroupInIndexOrder) {
         return Eigen::Vector2d(p.x(), 2 * p.y());
       })});
   const std::vector<PatternPiece> pieces = {mirror_of(o), other, piece({o}), turned(o, 180)};
-  const std::vector<qd::PieceGroup> g = qd::symmetric_groups(pieces, 1);
+  const std::vector<qd::flatten::PieceGroup> g = qd::flatten::symmetric_groups(pieces, 1);
   ASSERT_EQ(g.size(), 2u);
   EXPECT_EQ(g[0].members, (std::vector<int>{0, 2, 3}));
   EXPECT_EQ(g[0].mirrored, (std::vector<char>{0, 1, 1}));
   EXPECT_EQ(g[1].members, (std::vector<int>{1}));
-  const std::vector<qd::PieceGroup> again = qd::symmetric_groups(pieces, 1);
+  const std::vector<qd::flatten::PieceGroup> again = qd::flatten::symmetric_groups(pieces, 1);
   ASSERT_EQ(again.size(), g.size());
   for (size_t k = 0; k < g.size(); ++k) {
     EXPECT_EQ(again[k].members, g[k].members);
@@ -167,8 +174,8 @@ TEST(SymmetricPieces, PieceJoinsTheRepresentativeItFitsBest) {
   for (double scale : {1.0, 1.04, 1.025})
     pieces.push_back(piece({mapped(
         o, false, [&](const Eigen::Vector2d& p) -> Eigen::Vector2d { return scale * p; })}));
-  ASSERT_EQ(qd::symmetric_groups({pieces[0], pieces[2]}, 1.5).size(), 1u);
-  const std::vector<qd::PieceGroup> g = qd::symmetric_groups(pieces, 1.5);
+  ASSERT_EQ(qd::flatten::symmetric_groups({pieces[0], pieces[2]}, 1.5).size(), 1u);
+  const std::vector<qd::flatten::PieceGroup> g = qd::flatten::symmetric_groups(pieces, 1.5);
   ASSERT_EQ(g.size(), 2u);
   EXPECT_EQ(g[0].members, (std::vector<int>{0}));
   EXPECT_EQ(g[1].members, (std::vector<int>{1, 2}));
@@ -178,8 +185,8 @@ TEST(SymmetricPieces, PieceWithAHoleNeverGroupsWithOneWithout) {
   const Outline o = blob();
   const Outline hole =
       mapped(o, true, [](const Eigen::Vector2d& p) -> Eigen::Vector2d { return 0.05 * p; });
-  EXPECT_EQ(qd::symmetric_groups({piece({o, hole}), piece({o})}, 50).size(), 2u);
-  EXPECT_EQ(qd::symmetric_groups({piece({o, hole}), piece({o, hole})}, 1).size(), 1u);
+  EXPECT_EQ(qd::flatten::symmetric_groups({piece({o, hole}), piece({o})}, 50).size(), 2u);
+  EXPECT_EQ(qd::flatten::symmetric_groups({piece({o, hole}), piece({o, hole})}, 1).size(), 1u);
 }
 
 // A left patch and its mirror image in x, meshed with the other diagonals, flattened separately:
@@ -191,16 +198,16 @@ TEST(SymmetricPieces, MirrorImagePatchesFlattenIntoAMirroredPair) {
     const double t = 1.5 * i / 24, s = static_cast<double>(j) / 8;
     const double r =
         1 + 0.5 * s + 0.1 * std::exp(-(std::pow(t - 0.4, 2) + std::pow(s - 0.3, 2)) / 0.05);
-    return qd::Vec3(3 + r * std::cos(t), r * std::sin(t), (0.8 + 0.3 * t) * s);
+    return qd::common::Vec3(3 + r * std::cos(t), r * std::sin(t), (0.8 + 0.3 * t) * s);
   };
   // Columns run the other way, so the faces keep their orientation and the quads are split
   // along their other diagonal.
   const qd::test::GridMesh a = qd::test::grid_mesh(24, 8, false, left);
   const qd::test::GridMesh b = qd::test::grid_mesh(24, 8, false, [&](int i, int j) {
-    const qd::Vec3 p = left(24 - i, j);
-    return qd::Vec3(-p.x(), p.y(), p.z());
+    const qd::common::Vec3 p = left(24 - i, j);
+    return qd::common::Vec3(-p.x(), p.y(), p.z());
   });
-  qd::FlattenProblem problem;
+  qd::flatten::FlattenProblem problem;
   const int nv = static_cast<int>(a.V.rows()), nf = static_cast<int>(a.F.rows());
   problem.V.resize(2 * nv, 3);
   problem.V << a.V, b.V;
@@ -208,9 +215,10 @@ TEST(SymmetricPieces, MirrorImagePatchesFlattenIntoAMirroredPair) {
   problem.F << a.F, b.F.array() + nv;
   problem.patch.assign(nf, 0);
   problem.patch.resize(2 * nf, 1);
-  const qd::FlattenResult r = qd::flatten(problem);  // symmetry_tolerance 1 % by default
+  const qd::flatten::FlattenResult r =
+      qd::flatten::flatten(problem);  // symmetry_tolerance 1 % by default
   ASSERT_EQ(r.pieces.size(), 2u);
-  const std::vector<qd::PieceGroup>& g = r.groups;
+  const std::vector<qd::flatten::PieceGroup>& g = r.groups;
   ASSERT_EQ(g.size(), 1u);
   EXPECT_EQ(g[0].mirrored, (std::vector<char>{0, 1}));
   EXPECT_LT(g[0].difference, 1.0);

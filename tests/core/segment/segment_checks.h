@@ -13,6 +13,9 @@
 
 namespace qd::test {
 
+using namespace qd::common;
+using namespace qd::segment;
+
 // Faces of one patch connected through shared edges (two faces with two common vertices).
 inline bool edge_connected(const Triangles& F, const std::vector<int>& faces) {
   std::map<std::pair<int, int>, std::vector<int>> edge_faces;
@@ -84,7 +87,7 @@ inline void expect_pieces(const SegmentResult& r, const std::vector<int>& piece)
 // Segments the problem and expects a valid partition into exactly
 // its pieces; returns the result for further checks.
 inline SegmentResult segment_into_pieces(const std::vector<int>& pieces, SegmentProblem p) {
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   expect_pieces(r, pieces);
   return r;

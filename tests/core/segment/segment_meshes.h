@@ -12,6 +12,9 @@
 
 namespace qd::test {
 
+using namespace qd::common;
+using namespace qd::segment;
+
 class MeshBuilder {
  public:
   using Surface = std::function<Vec3(double u, double v)>;

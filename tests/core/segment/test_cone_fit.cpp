@@ -11,6 +11,9 @@
 namespace qd::test {
 namespace {
 
+using namespace qd::common;
+using namespace qd::segment;
+
 // Faces of area 1 with normals at `angle` to `axis`, spread over `arc` radians around it.
 FaceGeometry cone_normals(const Vec3& axis, double angle, double arc, int count) {
   const Vec3 a = axis.normalized();

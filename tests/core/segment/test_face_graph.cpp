@@ -11,6 +11,9 @@
 namespace qd::test {
 namespace {
 
+using namespace qd::common;
+using namespace qd::segment;
+
 FaceGraph graph_of(const SegmentProblem& p, const std::vector<int>& region = {}) {
   return face_graph(p.V, p.F, region);
 }

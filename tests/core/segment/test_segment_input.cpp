@@ -13,6 +13,9 @@
 namespace qd::test {
 namespace {
 
+using namespace qd::common;
+using namespace qd::segment;
+
 double centroid_y(const SegmentProblem& p, size_t f) {
   const auto i = static_cast<Eigen::Index>(f);
   return p.V(p.F(i, 0), 1) + p.V(p.F(i, 1), 1) + p.V(p.F(i, 2), 1);
@@ -29,7 +32,7 @@ TEST(SegmentInput, ExistingPatchesThatFitAreKept) {
   SegmentProblem p = b.problem();
   for (size_t f = 0; f < b.pieces().size(); ++f)  // cylinder in two halves (ids 4, 5), cone 9
     p.patch.push_back(b.pieces()[f] == 1 ? 9 : centroid_y(p, f) > 0 ? 4 : 5);
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   ASSERT_EQ(r.patches.size(), 3u);
   for (size_t f = 0; f < r.patch.size(); ++f)
@@ -55,7 +58,7 @@ TEST(SegmentInput, SelectionBordersAreKept) {
   SegmentProblem p = b.problem();
   for (size_t f = 0; f < b.pieces().size(); ++f)  // half of the cylinder and of the cone
     p.selected.push_back(centroid_y(p, f) > 0);
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   EXPECT_EQ(r.patches.size(), 4u);
   std::map<int, std::set<char>> states;
@@ -83,19 +86,19 @@ TEST(SegmentInput, MisorientedFacesAreBordersAndSaidSo) {
       std::swap(p.F(f, 1), p.F(f, 2));
       block.push_back(f);
     }
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   EXPECT_EQ(r.patches.size(), 2u);
   for (const int f : block) EXPECT_EQ(r.patch[f], r.patch[block.front()]);
   EXPECT_TRUE(logged(r, "orientation"));
 }
 
-// The call fails with qd::Error whose message holds `hint`.
+// The call fails with qd::common::Error whose message holds `hint`.
 void expect_refused(const std::function<void(SegmentProblem&)>& spoil, const std::string& hint) {
   SegmentProblem p = cube(3).problem();
   spoil(p);
   try {
-    segment(p);
+    segment::segment(p);
     ADD_FAILURE() << "accepted; expected: " << hint;
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find(hint), std::string::npos) << e.what();

@@ -10,6 +10,9 @@
 namespace qd::test {
 namespace {
 
+using namespace qd::common;
+using namespace qd::segment;
+
 TEST(SegmentPieces, CappedCylinderIsACylinderAndTwoDiscs) {
   const MeshBuilder b = capped_cylinder();
   const SegmentResult r = segment_into_pieces(b.pieces(), b.problem());

@@ -12,11 +12,14 @@
 namespace qd::test {
 namespace {
 
+using namespace qd::common;
+using namespace qd::segment;
+
 TEST(SegmentProperties, TorusPartitionsAreValidAtSeveralLimits) {
   for (const double limit : {5.0, 10.0, 20.0, 40.0}) {
     SegmentProblem p = torus(48, 24).problem();
     p.params.max_error_deg = limit;
-    const SegmentResult r = segment(p);
+    const SegmentResult r = segment::segment(p);
     SCOPED_TRACE(limit);
     expect_valid(p, r);
     EXPECT_GT(r.patches.size(), 1u);
@@ -27,10 +30,10 @@ TEST(SegmentProperties, SameTorusPatchesForAnyThreadCount) {
   SegmentProblem p = torus(64, 32).problem();
   p.params.max_error_deg = 10;
   p.params.threads = 1;
-  const SegmentResult one = segment(p);
+  const SegmentResult one = segment::segment(p);
   for (const int threads : {2, 3, 8}) {
     p.params.threads = threads;
-    const SegmentResult r = segment(p);
+    const SegmentResult r = segment::segment(p);
     EXPECT_EQ(r.patch, one.patch) << threads << " threads";
     ASSERT_EQ(r.patches.size(), one.patches.size());
     for (size_t id = 0; id < r.patches.size(); ++id) {
@@ -45,7 +48,7 @@ TEST(SegmentProperties, SameTorusPatchesForAnyThreadCount) {
 TEST(SegmentProperties, TooCurvedPartsArePatchesOfTheSmallestSizeOverTheLimit) {
   SegmentProblem p = bumped_plane().problem();
   p.params.max_error_deg = 5;
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   int flagged = 0;
   for (size_t id = 0; id < r.patches.size(); ++id) {
@@ -69,7 +72,7 @@ TEST(SegmentProperties, SmallestPatchAsAnAreaFraction) {
   p.params.max_error_deg = 10;
   p.params.min_faces = 1;
   p.params.min_area = 0.05;
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   double total = 0;
   for (const SegmentPatch& s : r.patches) total += s.area;
@@ -80,7 +83,7 @@ TEST(SegmentProperties, ProgressIsReportedOncePerRoundInOrder) {
   SegmentProblem p = torus(48, 24).problem();
   std::vector<int> percents;
   int rounds = 0;
-  const SegmentResult r = segment(p, [&](int percent, const std::string& message) {
+  const SegmentResult r = segment::segment(p, [&](int percent, const std::string& message) {
     percents.push_back(percent);
     rounds += message.find("round") != std::string::npos;
   });
@@ -93,7 +96,7 @@ TEST(SegmentProperties, ProgressIsReportedOncePerRoundInOrder) {
 TEST(SegmentProperties, TargetCountMergesOverTheLimitAndSaysSo) {
   SegmentProblem p = torus(48, 24).problem();
   p.params.target_patches = 3;
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   EXPECT_EQ(r.patches.size(), 3u);
   for (const SegmentPatch& s : r.patches) {
@@ -107,7 +110,7 @@ TEST(SegmentProperties, TargetCountSplitsWhenTheFitNeedsFewer) {
   const MeshBuilder b = capped_cylinder();
   SegmentProblem p = b.problem();
   p.params.target_patches = 7;
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   EXPECT_EQ(r.patches.size(), 7u);
   for (const SegmentPatch& s : r.patches) EXPECT_EQ(s.over_limit, OverLimit::No);
@@ -119,7 +122,7 @@ TEST(SegmentProperties, TargetCountSplitsWhenTheFitNeedsFewer) {
 TEST(SegmentProperties, TargetCountOutOfReachIsSaid) {
   SegmentProblem p = book().problem();  // three pages that no merge may join
   p.params.target_patches = 2;
-  const SegmentResult r = segment(p);
+  const SegmentResult r = segment::segment(p);
   expect_valid(p, r);
   EXPECT_EQ(r.patches.size(), 3u);
   bool said = false;
