@@ -44,11 +44,8 @@ void choose_term(PatchFit& p, Developability mode);
 // Above this many vertices in its solve group, a patch whose curve fits races no candidate
 // with angle-defect rows: those are always factorised (deformation_system.h), while the curve
 // term's conjugate gradients (from 10,000 unknowns) never factorise, and the defect candidate's
-// factorisation then dominates the race. Measured with scripts/bench.py (5 iterations) when
-// the bound was 100,000: a 100k-face sheet (50k vertices) 0.53 s with the curve term alone,
-// 3.4 s and 6x the memory with the race; 16 patches of 62k vertices 3.6 s against 22 s (the 1M
-// tube's factorisation took over 16 GB and 15 minutes). The garments' panels (the 40k-face
-// tee's largest has 8.8k vertices) and the robustness sweep's members (at most 6.2k) are raced.
+// factorisation would then dominate the race (docs/measurements-behind-the-code.md). The
+// garments' panels and the robustness sweep's members are all below the bound, so they race.
 constexpr Eigen::Index kMaxDefectRaceVertices = 25000;
 
 // The candidate terms of Developability::Auto for a patch of a group with `vertices` vertices:
