@@ -101,8 +101,10 @@ SolveReports patch_reports(const SolveSchedule& s, const Params& params, size_t 
       if (first || !run.race.empty())
         rep.developability_reason = term_choice(p, !rep.candidates.empty());
       rep.stops.push_back(pass_stop(p, run.outcome, scheduled.pass, params));
-      if (first && p.idle() && !p.fitted() && out.unfitted++ == 0)
-        out.first_unfitted = "patch " + std::to_string(p.id) + ": " + p.skipped;
+      if (first && p.idle() && !p.fitted() && out.unfitted++ == 0) {
+        out.first_unfitted = p.id;
+        out.first_unfitted_why = p.skipped;
+      }
       rep.history.insert(rep.history.end(), run.outcome.history.begin(), run.outcome.history.end());
       rep.time_ms += run.time_ms / static_cast<double>(run.fits.size());
     }

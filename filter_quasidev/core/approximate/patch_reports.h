@@ -16,7 +16,8 @@ struct SolveReports {
   std::vector<Vec3> initial_target;    // per face: its first run's initial target
   StageTimes times;                    // summed over the runs
   size_t unfitted = 0;                 // patches Step 1 could not fit in their first run
-  std::string first_unfitted;          // "patch 3: why" of the first of them
+  int first_unfitted = -1;             // the first of them, and why Step 1 could not fit it
+  std::string first_unfitted_why;
 };
 
 SolveReports patch_reports(const SolveSchedule& s, const Params& params, size_t faces);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cassert>
 #include <chrono>
+#include <string>
 
 #include "approximate/approximate_log.h"
 #include "approximate/common_names.h"
@@ -63,9 +64,11 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   r.times += reports.times;
   r.factorizations = r.times.factorizations;
   if (reports.unfitted == reports.patches.size()) {
-    const std::string& first = reports.first_unfitted;
-    throw Error(reports.patches.size() == 1 ? first.substr(first.find(": ") + 2)
-                                            : "no patch can be made developable; " + first);
+    const std::string& why = reports.first_unfitted_why;
+    throw Error(reports.patches.size() == 1
+                    ? why
+                    : "no patch can be made developable; patch " +
+                          std::to_string(reports.first_unfitted) + ": " + why);
   }
   {
     StageTimer timer(r.times.metrics);
