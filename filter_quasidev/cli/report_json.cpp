@@ -36,7 +36,8 @@ Json stage_times(const approximate::StageTimes& t) {
           {"metrics", t.metrics},
           {"factorizations", t.factorizations},
           {"solves", t.solves},
-          {"cg_iterations", t.cg_iterations}};
+          {"cg_iterations", t.cg_iterations},
+          {"substituted", t.substituted}};
 }
 
 Json candidate(const approximate::CandidateReport& c) {

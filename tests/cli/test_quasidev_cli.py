@@ -400,6 +400,30 @@ def test_report_says_which_developability_term_each_patch_used(tmp_path):
     assert "(auto, measured: curve −" in r.stdout
 
 
+def test_a_substituted_solver_is_reported_and_gives_the_same_result(tmp_path):
+    """eigen-llt cannot factorise the quasi-definite systems of the angle-defect rows: the
+    engine factorises them by LDLᵀ, says so in the log and the report, and the positions agree
+    with eigen-ldlt's to within a millionth of the average edge."""
+    mesh = REPO / "sample_meshes" / "draped_panels.ply"
+    positions, reports = {}, {}
+    for solver in ("eigen-llt", "eigen-ldlt"):
+        out, rep = tmp_path / f"{solver}.ply", tmp_path / f"{solver}.json"
+        r = run(mesh, out, "--developability", "defect", "--solver", solver, "--report", rep)
+        assert r.returncode == 0, r.stderr
+        positions[solver] = PlyData.read(str(out))["vertex"]
+        reports[solver] = json.loads(rep.read_text())
+    patches = len(reports["eigen-llt"]["patches"])
+    assert reports["eigen-llt"]["stage_ms"]["substituted"] == patches > 0
+    assert reports["eigen-ldlt"]["stage_ms"]["substituted"] == 0
+    notes = [line for line in reports["eigen-llt"]["log"] if "LLᵀ cannot factorise" in line]
+    assert len(notes) == 1 and notes[0].startswith(f"note: {patches} system(s)")
+    assert not any("LLᵀ" in line for line in reports["eigen-ldlt"]["log"])
+    ae = reports["eigen-llt"]["average_edge"]
+    for axis in "xyz":
+        a, b = positions["eigen-llt"][axis], positions["eigen-ldlt"][axis]
+        assert max(abs(p - q) for p, q in zip(a, b)) <= 1e-6 * ae
+
+
 def test_missing_input_and_unwritable_output(tmp_path):
     out = tmp_path / "out.ply"
     assert_clean_failure(run(tmp_path / "nope.ply", out), out, status=1)

@@ -116,6 +116,10 @@ std::vector<std::string> approximate_log(const Result& r, const std::vector<Patc
                   ", solved at once, raised the curvature where they meet; solved again one "
                   "after the other");
   }
+  if (r.times.substituted > 0)
+    log.push_back("note: " + std::to_string(r.times.substituted) +
+                  " system(s) with angle-defect rows are quasi-definite, which LLᵀ cannot "
+                  "factorise: they were factorised by LDLᵀ instead (the result is the same)");
   for (const PatchReport& p : r.patches) log.push_back(patch_log_line(p, r.average_edge));
   log.push_back(total_log_line(r));
   for (const std::string& line : advice(r, params, held_share)) log.push_back("note: " + line);

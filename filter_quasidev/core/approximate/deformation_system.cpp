@@ -321,6 +321,7 @@ Positions DeformationSystem::solve(const Positions& ref) {
                                              : solve_augmented(b, ref);
   ++times_.solves;
   times_.factorizations = strategy_->factorizations();
+  times_.substituted = strategy_->substituted() ? 1 : 0;
   Positions out = ref;
   for (size_t v = 0; v < unknown_.size(); ++v)
     if (unknown_[v] >= 0)

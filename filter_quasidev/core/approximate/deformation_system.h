@@ -74,8 +74,6 @@ class DeformationSystem {
   // Unknown block of each local vertex (-1 when fixed).
   const std::vector<int>& unknown() const { return unknown_; }
   const StageTimes& times() const { return times_; }
-  // The factor runs on another back end than params.solver (eigen-llt cannot factorise K).
-  bool solver_substituted() const { return strategy_->substituted(); }
 
  private:
   void build_pattern(const std::vector<std::pair<int, int>>& edges);

@@ -174,7 +174,7 @@ bool Deformation::accept(const Positions& candidate, const std::string& label,
 bool Deformation::step() {
   if (!running()) return false;
   if (it_ == params_.max_iter) {
-    out_.stop = StopReason::MaxIter;
+    halt(PatchStop::MaxIter);
     return false;
   }
   ++it_;
@@ -207,7 +207,7 @@ bool Deformation::step() {
                       : accept(step, scale_label(1), report, before))
       break;
     if (!can_back_off) {
-      out_.stop = StopReason::NoStep;
+      halt(PatchStop::NoStep);
       out_.stop_detail = report.note;
       return false;
     }
@@ -233,11 +233,11 @@ bool Deformation::step() {
 void Deformation::check_stop(const IterationReport& report) {
   if (params_.stop_rule == StopRule::Paper) {
     if (report.ratio_abd < params_.stop_abd) {
-      out_.stop = StopReason::RatioAbd;
+      halt(PatchStop::RatioAbd);
     } else if (params_.targets == TargetMode::Fixed && report.ratio_obd < params_.stop_obd) {
       // D(P) is comparable between iterations only while the targets stay put (the paper's
       // mode); with re-projected or re-fitted targets only ratio_ABD stops the iteration.
-      out_.stop = StopReason::RatioObd;
+      halt(PatchStop::RatioObd);
     }
     return;
   }
@@ -246,13 +246,12 @@ void Deformation::check_stop(const IterationReport& report) {
   const double removed =
       decrease_ratio(best_track_[n - 1 - kPlateauIterations], best_track_[n - 1]);
   if (removed < params_.stop_abd) {
-    out_.stop = StopReason::Plateau;
+    halt(PatchStop::Plateau);
     out_.plateau_removed = removed;
   }
 }
 
 DeformOutcome Deformation::finish() {
-  if (out_.stop == StopReason::Running) out_.stop = StopReason::MaxIter;
   out_.history.resize(best_iterations_);  // the best iterate, and the history up to it
   out_.V = std::move(best_V_);
   out_.times += system_->times();

@@ -45,14 +45,12 @@ constexpr double kMinWeightScale = 1.0 / 9;
 using Retarget = std::function<std::vector<Vec3>(const Positions& current)>;
 
 // Why a run stopped.
-enum class StopReason { Running, MaxIter, Plateau, RatioAbd, RatioObd, NoStep, NothingToDo };
-
 struct DeformOutcome {
   Positions V;                           // the best iterate's local positions
   std::vector<IterationReport> history;  // accepted iterations up to the best one
   int iterations_run = 0;                // accepted iterations, including those after the best
-  StopReason stop = StopReason::Running;
-  std::string stop_detail;     // NoStep: the refused candidates; NothingToDo: why
+  PatchStop stop = PatchStop::MaxIter;
+  std::string stop_detail;     // NoStep: the refused candidates; Unfitted: why
   double plateau_removed = 0;  // Plateau: percent of G_ABD the last iterations removed
   StageTimes times;            // assembly, factorisation, solve, re-targeting, metrics
 };
@@ -71,7 +69,7 @@ class Deformation {
 
   // One iteration; false once the run has stopped.
   bool step();
-  bool running() const { return out_.stop == StopReason::Running; }
+  bool running() const { return !stopped_; }
   int iterations() const { return out_.iterations_run; }
   double initial_g_abd() const { return initial_g_; }
   double best_g_abd() const { return best_.g_abd; }
@@ -85,6 +83,11 @@ class Deformation {
   bool accept_shortened(const Positions& step, IterationReport& report, const Figures& before);
   void set_rows();
   void check_stop(const IterationReport& report);
+  // Ends the run (out_.stop says why; a run that never halts stopped at maxIter).
+  void halt(PatchStop why) {
+    out_.stop = why;
+    stopped_ = true;
+  }
 
   const GroupMesh& g_;
   Params params_;
@@ -102,6 +105,7 @@ class Deformation {
   double initial_g_ = 0;
   double weight_scale_ = 1;  // of the developability weights, after back-offs
   int it_ = 0;
+  bool stopped_ = false;
   DeformOutcome out_;
 };
 

@@ -105,8 +105,8 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
   for (const PatchFit& p : run.fits) all_idle = all_idle && p.idle();
   if (all_idle) {
     run.outcome.V = g.V0;
-    run.outcome.stop = StopReason::NothingToDo;
-    run.outcome.stop_detail = run.fits.front().skipped;  // empty: planar
+    run.outcome.stop_detail = run.fits.front().skipped;
+    run.outcome.stop = run.outcome.stop_detail.empty() ? PatchStop::Planar : PatchStop::Unfitted;
   } else if (candidates.size() > 1) {
     race(run, candidates, params, in.ae, threads, progress);
   } else {

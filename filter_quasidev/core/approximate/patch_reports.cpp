@@ -46,27 +46,7 @@ PassStop pass_stop(const PatchFit& p, const DeformOutcome& o, SolvePass pass,
     s.detail = p.skipped;
     return s;
   }
-  switch (o.stop) {
-    case StopReason::Running:
-    case StopReason::MaxIter:
-      s.reason = PatchStop::MaxIter;
-      break;
-    case StopReason::Plateau:
-      s.reason = PatchStop::Plateau;
-      break;
-    case StopReason::RatioAbd:
-      s.reason = PatchStop::RatioAbd;
-      break;
-    case StopReason::RatioObd:
-      s.reason = PatchStop::RatioObd;
-      break;
-    case StopReason::NoStep:
-      s.reason = PatchStop::NoStep;
-      break;
-    case StopReason::NothingToDo:
-      s.reason = o.stop_detail.empty() ? PatchStop::Planar : PatchStop::Unfitted;
-      break;
-  }
+  s.reason = o.stop;
   s.plateau_removed = o.plateau_removed;
   s.stop_abd = params.stop_abd;
   s.iterations_run = o.iterations_run;

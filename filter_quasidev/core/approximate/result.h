@@ -34,7 +34,8 @@ enum class TargetKind { Curve, ClosedCurve, Plane, Unchanged };
 // The passes of a solve (solve_schedule.h): one with fixed seams, three with free seams.
 enum class SolvePass { Only, AllAtOnce, SeamsHeld, SeamsFree };
 
-// Why a patch's run in one pass stopped.
+// Why a patch's run in one pass stopped: the deformer's stop rules (deformer.h), or nothing to
+// do (Planar, or Unfitted: Step 1 found no model).
 enum class PatchStop { MaxIter, Plateau, RatioAbd, RatioObd, NoStep, Planar, Unfitted };
 
 struct PassStop {
@@ -101,10 +102,12 @@ struct StageTimes {
   int factorizations = 0;
   int solves = 0;         // linear solves, one per iteration
   int cg_iterations = 0;  // conjugate-gradient iterations of the iterative solves
+  int substituted = 0;    // systems factorised by another back end than the one asked for
   StageTimes& operator+=(const StageTimes& o) {
     setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
     solve += o.solve, metrics += o.metrics;
     factorizations += o.factorizations, solves += o.solves, cg_iterations += o.cg_iterations;
+    substituted += o.substituted;
     return *this;
   }
 };
