@@ -25,6 +25,7 @@
 #include "approximate/quasidev.h"
 #include "bench_mesh.h"
 #include "common/error.h"
+#include "common/format_text.h"
 #include "io/mesh_reader.h"
 #include "mesh_geometry.h"
 #include "mesh_problem.h"
@@ -123,10 +124,8 @@ std::string approximate(const qd::io::MeshDocument& mesh, const std::vector<int>
   const qd::cli::ApproximateOptions options = qd::cli::parse_command_line(quasidev).approximate;
   const qd::approximate::Result r =
       qd::approximate::approximate(qd::cli::make_problem(segmented, options));
-  char text[160];
-  std::snprintf(text, sizeof text, ", \"abd_reduction\": %.2f, \"max_move_ae\": %.3f",
-                r.abd_reduction, r.total_after.max_disp / r.average_edge);
-  return text;
+  return qd::common::format_text(", \"abd_reduction\": %.2f, \"max_move_ae\": %.3f",
+                                 r.abd_reduction, r.total_after.max_disp / r.average_edge);
 }
 
 void run(const Args& a, const std::string& name) {

@@ -23,6 +23,7 @@
 
 #include "approximate/quasidev.h"
 #include "approximate_params.h"
+#include "common/format_text.h"
 #include "cut_marker.h"
 #include "flatten/flatten.h"
 #include "flatten_mesh.h"
@@ -217,11 +218,10 @@ qd::marker::MarkerChoice marker_of(const qd::params::FlattenSettings& s,
   qd::marker::MarkerChoice c = qd::marker::cut_marker(pattern, s.marker_width, gap);
   for (const auto& [name, m, kept] : {std::tuple{"nested (libnest2d)", &c.nested, c.nested_kept},
                                       std::tuple{"row by row", &c.rows, !c.nested_kept}}) {
-    std::ostringstream line;
-    line << "marker " << name << ": width " << s.marker_width << ", length " << m->length
-         << ", efficiency " << 100 * m->efficiency << " %, " << m->placements.size()
-         << " pieces, gap " << gap << (kept ? " (kept: the shorter)" : "");
-    log.push_back(line.str());
+    log.push_back(qd::common::format_text(
+        "marker %s: width %g, length %g, efficiency %g %%, %zu pieces, gap %g%s", name,
+        s.marker_width, m->length, 100 * m->efficiency, m->placements.size(), gap,
+        kept ? " (kept: the shorter)" : ""));
   }
   for (const std::string& label : c.kept().unplaced)
     log.push_back("marker: piece " + label + " is wider than the fabric, not placed");

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <iterator>
 
 #include "common/error.h"
 #include "io/obj_reader.h"
@@ -52,10 +52,7 @@ std::string read_file_bytes(const std::string& path) {
     throw common::Error("'" + path + "' is not a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw common::Error("cannot open '" + path + "': " + std::strerror(errno));
-  std::ostringstream content;
-  content << in.rdbuf();
-  if (in.bad()) throw common::Error("cannot read '" + path + "'");
-  return content.str();
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 MeshDocument read_mesh(const std::string& path) {

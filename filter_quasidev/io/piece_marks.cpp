@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <locale>
-#include <sstream>
 #include <utility>
 
+#include "common/format_text.h"
 #include "flatten/outline_measures.h"
 
 namespace qd::io {
@@ -25,11 +24,7 @@ size_t characters(const std::string& text) {
 }
 
 std::string measure_text(double x) {
-  std::ostringstream out;
-  out.imbue(std::locale::classic());
-  out.precision(12);
-  out << std::round(x * 100) / 100;
-  return out.str();
+  return common::format_text("%.12g", std::round(x * 100) / 100);
 }
 
 // How far from `at` along ±d the line first crosses the loops: {before (≤ 0), after (≥ 0)},

@@ -70,7 +70,7 @@ void append_binary(ScalarType type, double v, bool big_endian, std::string& out)
 
 // Shortest text that reads back to the same value of the type.
 void append_text(ScalarType type, double v, std::string& out) {
-  char buffer[40];
+  char buffer[40];  // not format_text: a stack buffer for every value of every PLY written
   if (type == ScalarType::Float32)
     std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(static_cast<float>(v)));
   else if (type == ScalarType::Float64)

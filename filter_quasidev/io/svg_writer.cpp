@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <locale>
-#include <sstream>
 #include <utility>
 #include <vector>
 
+#include "common/format_text.h"
 #include "io/piece_marks.h"
 #include "io/xml_text.h"
 
@@ -119,13 +119,11 @@ void write_svg(std::ostream& out, const flatten::Pattern& pattern, const std::st
   const double bar = round_length(
       kScaleBar * bounds.sizes().x() > 0 ? kScaleBar * bounds.sizes().x() : kScaleBar * side);
   const double x = page.margin, y = height - page.margin - font;
-  std::ostringstream length;
-  length.imbue(std::locale::classic());
-  length << bar << ' ' << (unit.empty() ? "model units" : unit);
   out << "<g id=\"scale-bar\">\n<path d=\"M " << x << ' ' << y - font / 2 << " L " << x << ' ' << y
       << " L " << x + bar << ' ' << y << " L " << x + bar << ' ' << y - font / 2 << "\"/>\n"
       << "<text x=\"" << x + bar / 2 << "\" y=\"" << y + font
-      << "\" stroke=\"none\" fill=\"black\">" << xml_escaped(length.str())
+      << "\" stroke=\"none\" fill=\"black\">"
+      << xml_escaped(common::format_text("%g %s", bar, unit.empty() ? "model units" : unit.c_str()))
       << "</text>\n</g>\n</g>\n</svg>\n";
   out.imbue(previous);
 }

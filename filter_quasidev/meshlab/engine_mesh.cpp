@@ -5,7 +5,7 @@
 #include <set>
 
 #include "common/error.h"
-#include "printf_string.h"
+#include "common/format_text.h"
 
 namespace qdml {
 
@@ -42,14 +42,15 @@ std::vector<int> read_patch_ids(const CMeshO& m, const EngineMesh& e, bool has_f
   for (std::size_t f = 0; f < e.face_slot.size(); ++f) {
     const double q = static_cast<double>(m.face[e.face_slot[f]].cQ());
     if (!std::isfinite(q) || std::fabs(q) > std::numeric_limits<int>::max())
-      throw qd::common::Error(
-          format("face %zu has per-face quality %g, which is not a patch id: set the "
-                 "per-face quality to an integer patch id per face",
-                 f, q));
+      throw qd::common::Error(qd::common::format_text(
+          "face %zu has per-face quality %g, which is not a patch id: set the "
+          "per-face quality to an integer patch id per face",
+          f, q));
     patch[f] = static_cast<int>(std::lround(q));
   }
   const std::set<int> ids(patch.begin(), patch.end());
-  log.push_back(format("patches from per-face quality: %zu patch(es)", ids.size()));
+  log.push_back(
+      qd::common::format_text("patches from per-face quality: %zu patch(es)", ids.size()));
   return patch;
 }
 

@@ -13,11 +13,11 @@
 #include "approximate/quasidev.h"
 #include "approximate/validate.h"
 #include "approximate_params.h"
+#include "common/format_text.h"
 #include "common/mesh.h"
 #include "common/quality_range.h"
 #include "declared_parameters.h"
 #include "jobs.h"
-#include "printf_string.h"
 #include "result_figures.h"
 
 namespace qdml {
@@ -91,8 +91,9 @@ qd::approximate::Problem make_problem(const CMeshO& m, bool has_face_quality, co
     throw qd::common::Error("Per-patch tolerance (AE) (patch_tolerance_ae) " +
                             std::string(error.what()));
   }
-  log.push_back(format("%zu selected vertices kept fixed; tolerance %g model units",
-                       count_selected(problem.constrained), problem.params.tolerance));
+  log.push_back(
+      qd::common::format_text("%zu selected vertices kept fixed; tolerance %g model units",
+                              count_selected(problem.constrained), problem.params.tolerance));
   return problem;
 }
 
@@ -135,7 +136,8 @@ FilterRun run(CMeshO& m, bool has_face_quality, const ParamValues& values, vcg::
 std::vector<qd::params::ParamInfo> approximate_parameters(const CMeshO& m) {
   qd::approximate::Problem geometry;
   read_geometry(m, geometry.V, geometry.F);
-  const std::string ae = format(" This mesh: AE = %g model units.", average_edge(geometry));
+  const std::string ae =
+      qd::common::format_text(" This mesh: AE = %g model units.", average_edge(geometry));
   std::vector<qd::params::ParamInfo> parameters =
       filter_parameters(qd::params::approximate_params());
   for (qd::params::ParamInfo& p : parameters)

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "common/format_text.h"
 #include "declared_parameters.h"
 #include "engine_mesh.h"
 #include "jobs.h"
-#include "printf_string.h"
 #include "segment/patch_color.h"
 #include "segment/segment.h"
 #include "segment_figures.h"
@@ -68,9 +68,10 @@ SegmentOutcome apply_segment(CMeshO& m, bool has_face_quality, const qd::params:
     if (s.keep_patches) problem.patch = read_patch_ids(m, e, has_face_quality, true, out.log);
     if (s.selection_border) problem.selected = read_selected(m.face, e.face_slot);
     if (!problem.selected.empty())
-      out.log.push_back(format("the border of %zu selected faces kept",
-                               static_cast<std::size_t>(std::count(problem.selected.begin(),
-                                                                   problem.selected.end(), 1))));
+      out.log.push_back(
+          qd::common::format_text("the border of %zu selected faces kept",
+                                  static_cast<std::size_t>(std::count(problem.selected.begin(),
+                                                                      problem.selected.end(), 1))));
     problem.params = s.engine;
     out.result = qd::segment::segment(problem, progress_of(cb));
     write_back(m, e, out.result);

@@ -2,9 +2,8 @@
 // and ApproximateSettings.
 #include "approximate_params.h"
 
-#include <sstream>
-
 #include "approximate/deformation_system.h"
+#include "common/format_text.h"
 #include "common/solver_kind.h"
 #include "declare.h"
 
@@ -24,13 +23,11 @@ std::string solver_help() {
 }
 
 std::string method_help() {
-  std::ostringstream out;
-  out << "direct: factorise each patch's coupled system; iterative: conjugate gradients with two "
-         "scalar factors, to a relative error of "
-      << approximate::kCgTolerance << "; auto: iterative from "
-      << approximate::kIterativeFromUnknowns
-      << " unknowns per patch. Patches with angle-defect rows are always factorised.";
-  return out.str();
+  return common::format_text(
+      "direct: factorise each patch's coupled system; iterative: conjugate gradients with two "
+      "scalar factors, to a relative error of %g; auto: iterative from %ld unknowns per patch. "
+      "Patches with angle-defect rows are always factorised.",
+      approximate::kCgTolerance, approximate::kIterativeFromUnknowns);
 }
 
 std::vector<Param<S>> declare() {

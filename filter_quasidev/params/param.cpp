@@ -2,15 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+
+#include "common/format_text.h"
 
 namespace qd::params {
 
-std::string number_text(double v) {
-  std::ostringstream out;
-  out << v;
-  return out.str();
-}
+std::string number_text(double v) { return common::format_text("%g", v); }
 
 std::string option_name(const std::string& name) {
   std::string option = "--" + name;

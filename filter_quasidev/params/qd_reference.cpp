@@ -5,7 +5,7 @@
 //                                would write (a test runs it on docs/reference/)
 #include <fstream>
 #include <iostream>
-#include <sstream>
+#include <iterator>
 #include <string>
 
 #include "approximate_params.h"
@@ -33,9 +33,7 @@ std::vector<Job> jobs() {
 
 std::string read(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 }  // namespace

@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 
 #include "common/error.h"
+#include "common/format_text.h"
 #include "io/piece_marks.h"
 
 namespace qd::pdf {
@@ -108,15 +108,11 @@ void draw_piece(cairo_t* cr, const View& view, const flatten::PatternPiece& piec
          kFont);
 }
 
-std::string page_line(int k, int n) {
-  return "page " + std::to_string(k) + " of " + std::to_string(n);
-}
+std::string page_line(int k, int n) { return common::format_text("page %d of %d", k, n); }
 
 // A length on paper in mm, with `decimals` places.
 std::string millimetres(double points, int decimals) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%.*f", decimals, points / kPointsPerMm);
-  return s;
+  return common::format_text("%.*f", decimals, points / kPointsPerMm);
 }
 
 // Page 1: title, the whole pattern scaled into the space left above the test square, each

@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
+#include "common/format_text.h"
 #include "param.h"
 
 namespace qd::params::test {
@@ -47,10 +47,7 @@ inline Value sample_value(const ParamInfo& p) {
 inline std::string sample_text(const ParamInfo& p) {
   const Value v = sample_value(p);
   if (const auto* text = std::get_if<std::string>(&v)) return *text;
-  std::ostringstream out;
-  out.precision(17);
-  out << std::get<double>(v);
-  return out.str();
+  return common::format_text("%.17g", std::get<double>(v));
 }
 
 }  // namespace qd::params::test

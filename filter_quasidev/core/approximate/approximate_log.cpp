@@ -6,8 +6,12 @@
 #include "approximate/deformer.h"
 #include "approximate/report_text.h"
 #include "approximate/segment_first.h"
+#include "common/format_text.h"
 
 namespace qd::approximate {
+
+using common::format_text;
+
 namespace {
 
 // Above this fit residual the patch is far from one developable surface: the paper's curve
@@ -16,7 +20,7 @@ constexpr double kFarResidualDeg = 10.0;
 
 // "G_ABD a → b (−r%), " with the sign of the change: a rise reads "(+r%)".
 std::string g_abd_change(const Figures& before, const Figures& after, double reduction) {
-  return printf_text(
+  return format_text(
       reduction >= 0 ? "G_ABD %.4g → %.4g (−%.1f%%), " : "G_ABD %.4g → %.4g (+%.1f%%), ",
       before.g_abd, after.g_abd, std::abs(reduction));
 }
@@ -30,16 +34,16 @@ std::string patch_log_line(const PatchReport& p, double ae) {
   const IterationReport last = p.history.empty() ? IterationReport{} : p.history.back();
   const std::string fit = !p.fitted ? "no curve fit"
                                     : target_kind_name(p.target_kind) +
-                                          printf_text(" fit residual %.2f°", p.fit_residual_deg);
+                                          format_text(" fit residual %.2f°", p.fit_residual_deg);
   std::string s =
       "patch " + std::to_string(p.id) + ": " + std::to_string(p.faces) + " faces, " + fit +
       ", developability " + term_name(p.developability) + " (" + term_choice_text(p) + "), " +
       std::to_string(p.iterations) + " iteration(s) (stop: " + stop_reason_text(p.stops) + "), " +
       g_abd_change(p.before, p.after, p.abd_reduction) +
-      printf_text("last ratio_ABD %.1f%%, ratio_OBD %.1f%%, ", last.ratio_abd, last.ratio_obd) +
-      printf_text("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
+      format_text("last ratio_ABD %.1f%%, ratio_OBD %.1f%%, ", last.ratio_abd, last.ratio_obd) +
+      format_text("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
   if (p.developability == Term::Curve && p.fit_residual_deg > kFarResidualDeg)
-    s += printf_text(
+    s += format_text(
         "; warning: fit residual %.1f°: this patch is far from one developable surface, which "
         "the paper's method assumes: use the angle-defect term (developability defect or auto), "
         "or split it into finer patches",
@@ -54,10 +58,10 @@ std::string total_log_line(const Result& r) {
   for (const PatchReport& p : r.patches) iterations = std::max(iterations, p.iterations);
   return "total: " + std::to_string(r.patches.size()) + " patch(es), " +
          g_abd_change(r.total_before, r.total_after, r.abd_reduction) +
-         printf_text("max displacement %.3g AE (AE = %.4g), ",
+         format_text("max displacement %.3g AE (AE = %.4g), ",
                      r.total_after.max_disp / r.average_edge, r.average_edge) +
          "up to " + std::to_string(iterations) + " iterations, " +
-         std::to_string(r.factorizations) + printf_text(" factorisation(s), %.0f ms", r.time_ms);
+         format_text("%d factorisation(s), %.0f ms", r.factorizations, r.time_ms);
 }
 
 // When the run removed less than half of the curvature: why, with the figures the engine has,
@@ -65,11 +69,11 @@ std::string total_log_line(const Result& r) {
 std::vector<std::string> advice(const Result& r, const Params& params, double held_share) {
   std::vector<std::string> out;
   if (r.abd_reduction >= 50.0) return out;
-  const std::string head = printf_text("little was removed (%.1f%% of G_ABD): ", r.abd_reduction);
+  const std::string head = format_text("little was removed (%.1f%% of G_ABD): ", r.abd_reduction);
   if (held_share >= 25.0)
     out.push_back(
         head +
-        printf_text("%.0f%% of the curvature lies on vertices that do not move (", held_share) +
+        format_text("%.0f%% of the curvature lies on vertices that do not move (", held_share) +
         (params.seams == SeamMode::Fixed ? "fixed seams, " : "") +
         (params.keep_boundary ? "the kept boundary, " : "") +
         "the selection); free seams or a free boundary can reach it");
@@ -83,7 +87,7 @@ std::vector<std::string> advice(const Result& r, const Params& params, double he
           then > 0 ? 100.0 * (then - p.history.back().figures.g_abd) / then : 0.0;
       out.push_back(
           head + "patch " + std::to_string(p.id) +
-          printf_text(" stopped at maxIter while its last %.0f iterations still removed %.1f%% "
+          format_text(" stopped at maxIter while its last %d iterations still removed %.1f%% "
                       "of its curvature: a larger maxIter goes further",
                       kPlateauIterations, removed));
     }

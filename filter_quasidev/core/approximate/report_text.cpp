@@ -1,17 +1,12 @@
 #include "approximate/report_text.h"
 
-#include <cstdio>
-
 #include "approximate/deformer.h"
 #include "approximate/patch_fit.h"
+#include "common/format_text.h"
 
 namespace qd::approximate {
 
-std::string printf_text(const char* fmt, double a, double b, double c, double d) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b, c, d);
-  return buf;
-}
+using common::format_text;
 
 const char* term_name(Term t) {
   switch (t) {
@@ -70,11 +65,11 @@ std::string term_choice_text(const PatchReport& p) {
     case TermChoice::AutoNoCurveFits:
       return "auto: no Gauss-image curve fits";
     case TermChoice::AutoNotRaced:
-      return printf_text(
-          "auto: above %.0f vertices the angle-defect rows are not raced (their "
+      return format_text(
+          "auto: above %td vertices the angle-defect rows are not raced (their "
           "factorisation would cost many times the curve term's run); "
           "developability defect or both runs them",
-          static_cast<double>(kMaxDefectRaceVertices));
+          kMaxDefectRaceVertices);
     case TermChoice::Auto:
       return "auto";
     case TermChoice::AutoMeasured:
@@ -83,7 +78,7 @@ std::string term_choice_text(const PatchReport& p) {
   std::string s = "auto, measured:";
   for (const CandidateReport& c : p.candidates)
     s += std::string(" ") + term_name(c.term) +
-         printf_text(" −%.1f%% in %.0f it.", c.abd_reduction, c.iterations) +
+         format_text(" −%.1f%% in %d it.", c.abd_reduction, c.iterations) +
          (c.kept      ? " (kept)"
           : c.dropped ? " (left after the trial)"
                       : "") +
@@ -99,7 +94,7 @@ std::string pass_stop_text(const PassStop& s) {
       t = "maxIter reached";
       break;
     case PatchStop::Plateau:
-      t = printf_text("plateau: the last %.0f iterations removed %.2f%% of G_ABD (< δ_ABD %g%%)",
+      t = format_text("plateau: the last %d iterations removed %.2f%% of G_ABD (< δ_ABD %g%%)",
                       kPlateauIterations, s.plateau_removed, s.stop_abd);
       break;
     case PatchStop::RatioAbd:

@@ -9,9 +9,6 @@
 
 namespace qd::approximate {
 
-// fmt (printf style) with up to four numbers.
-std::string printf_text(const char* fmt, double a, double b = 0, double c = 0, double d = 0);
-
 // "none", "curve", "defect", "both".
 const char* term_name(Term t);
 

@@ -1,10 +1,10 @@
 #include "flatten/cut_to_disk.h"
 
 #include <algorithm>
-#include <sstream>
 
 #include "common/disjoint_sets.h"
 #include "common/error.h"
+#include "common/format_text.h"
 #include "flatten/boundary_loops.h"
 #include "flatten/common_names.h"
 #include "flatten/shortest_paths.h"
@@ -124,18 +124,16 @@ void cut_loops(Piece& p, const Shape& s, const std::vector<int>& sources, DiskCu
 }
 
 std::string note_of(const DiskCut& c, int loops, int genus) {
-  std::ostringstream out;
-  out.precision(4);
-  out << "cut to a disk along ";
+  std::string out = "cut to a disk along ";
   if (c.joining_paths > 0)
-    out << c.joining_paths << (c.joining_paths == 1 ? " shortest path" : " shortest paths")
-        << " joining its " << loops << " boundary loops";
-  if (c.joining_paths > 0 && (c.handle_loops > 0 || c.slit)) out << " and ";
+    out += format_text("%d %s joining its %d boundary loops", c.joining_paths,
+                       c.joining_paths == 1 ? "shortest path" : "shortest paths", loops);
+  if (c.joining_paths > 0 && (c.handle_loops > 0 || c.slit)) out += " and ";
   if (c.handle_loops > 0)
-    out << c.handle_loops << " loops around its " << genus << (genus == 1 ? " handle" : " handles");
-  if (c.slit) out << "a slit (the patch is closed)";
-  out << ": " << c.edges << " edges, length " << c.length;
-  return out.str();
+    out += format_text("%d loops around its %d %s", c.handle_loops, genus,
+                       genus == 1 ? "handle" : "handles");
+  if (c.slit) out += "a slit (the patch is closed)";
+  return out + format_text(": %d edges, length %.4g", c.edges, c.length);
 }
 
 }  // namespace

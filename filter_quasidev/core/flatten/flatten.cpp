@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <iomanip>
-#include <sstream>
 #include <thread>
 
+#include "common/format_text.h"
 #include "common/parallel_for.h"
 #include "common/serial_libraries.h"
 #include "common/thread_count.h"
@@ -48,14 +47,12 @@ std::vector<char> notches_of(const Positions& V, const std::vector<FlatPiece>& f
 
 // "pieces 2, 4 (mirrored): one pattern piece, cut 2; they differ by 0.33 %"
 std::string group_line(const PieceGroup& g, const std::vector<PieceReport>& pieces) {
-  std::ostringstream line;
-  line << "pieces ";
+  std::string line = "pieces ";
   for (size_t k = 0; k < g.members.size(); ++k)
-    line << (k ? ", " : "") << pieces[static_cast<size_t>(g.members[k])].label
-         << (g.mirrored[k] ? " (mirrored)" : "");
-  line << std::fixed << std::setprecision(2) << ": one pattern piece, cut " << g.members.size()
-       << "; they differ by " << g.difference << " % of its size";
-  return line.str();
+    line += (k ? ", " : "") + pieces[static_cast<size_t>(g.members[k])].label +
+            (g.mirrored[k] ? " (mirrored)" : "");
+  return line + format_text(": one pattern piece, cut %zu; they differ by %.2f %% of its size",
+                            g.members.size(), g.difference);
 }
 
 }  // namespace
@@ -138,11 +135,9 @@ FlattenResult flatten(const FlattenProblem& problem, const Progress& progress) {
                       : make_pattern(std::move(pattern));
   r.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-  std::ostringstream total_line;
-  total_line << std::fixed << std::setprecision(2) << "flattened " << r.pieces.size()
-             << " pieces in " << r.time_ms / 1000 << " s; largest length distortion "
-             << r.max_distortion << " % (patch " << worst_label << ")";
-  r.log.push_back(total_line.str());
+  r.log.push_back(
+      format_text("flattened %zu pieces in %.2f s; largest length distortion %.2f %% (patch %s)",
+                  r.pieces.size(), r.time_ms / 1000, r.max_distortion, worst_label.c_str()));
   if (progress) progress(100, "done");
   return r;
 }

@@ -1,10 +1,10 @@
 #include "flatten/flatten_validate.h"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "common/error.h"
+#include "common/format_text.h"
 #include "common/validate_mesh.h"
 #include "flatten/common_names.h"
 
@@ -28,28 +28,25 @@ void validate_mesh(const FlattenProblem& problem) {
   check_orientation(topology);
 }
 
-std::string str(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
-
 void check_params(const FlattenParams& q) {
   if (q.max_iterations < 0 || q.max_iterations > 100000)
-    throw Error("The maximum number of ARAP iterations is " + std::to_string(q.max_iterations) +
-                ": use a value from 0 (the initial layout only) to 100000, e.g. 100.");
+    throw Error(
+        format_text("The maximum number of ARAP iterations is %d: use a value from 0 (the "
+                    "initial layout only) to 100000, e.g. 100.",
+                    q.max_iterations));
   if (!std::isfinite(q.tolerance) || q.tolerance < 0 || q.tolerance >= 1)
-    throw Error("The ARAP tolerance is " + str(q.tolerance) +
-                ": it is a relative change of the energy, use a value in [0, 1), e.g. 1e-4.");
+    throw Error(format_text(
+        "The ARAP tolerance is %g: it is a relative change of the energy, use a value in [0, 1), "
+        "e.g. 1e-4.",
+        q.tolerance));
   if (!std::isfinite(q.gap) || q.gap < 0)
-    throw Error("The gap between pieces is " + str(q.gap) +
-                ": use a distance >= 0 (0 = automatic).");
+    throw Error(
+        format_text("The gap between pieces is %g: use a distance >= 0 (0 = automatic).", q.gap));
   if (!std::isfinite(q.notch_spacing) || q.notch_spacing < 0)
-    throw Error("The notch spacing is " + str(q.notch_spacing) +
-                ": use a distance >= 0 (0 = automatic).");
+    throw Error(format_text("The notch spacing is %g: use a distance >= 0 (0 = automatic).",
+                            q.notch_spacing));
   if (q.threads < 0)
-    throw Error("The number of threads is " + std::to_string(q.threads) +
-                ": use 0 (all cores) or more.");
+    throw Error(format_text("The number of threads is %d: use 0 (all cores) or more.", q.threads));
 }
 
 }  // namespace

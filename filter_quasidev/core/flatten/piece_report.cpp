@@ -1,7 +1,7 @@
 #include "flatten/piece_report.h"
 
-#include <iomanip>
-#include <sstream>
+#include "common/format_text.h"
+#include "flatten/common_names.h"
 
 namespace qd::flatten {
 
@@ -31,15 +31,15 @@ PieceReport piece_report(const FlatPiece& flat, const std::string& label,
 }
 
 std::string log_line(const PieceReport& r) {
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(2) << "patch " << r.label << ": " << r.faces << " faces";
-  if (!r.cut.empty()) s << ", " << r.cut;
-  s << "; " << r.iterations << " ARAP iterations (" << r.stop_reason << "); length distortion max "
-    << r.max_distortion << " %, mean " << r.mean_distortion << " %; area " << std::showpos
-    << r.area_change << " %, boundary " << r.boundary_change << " %; " << std::noshowpos
-    << r.flipped << " flipped, " << r.overlapping << " overlapping";
-  if (!r.flattenable) s << ": not flattenable without a cut";
-  return s.str();
+  std::string s = format_text("patch %s: %d faces", r.label.c_str(), r.faces);
+  if (!r.cut.empty()) s += ", " + r.cut;
+  s += format_text(
+      "; %d ARAP iterations (%s); length distortion max %.2f %%, mean %.2f %%; area %+.2f %%, "
+      "boundary %+.2f %%; %d flipped, %d overlapping",
+      r.iterations, r.stop_reason.c_str(), r.max_distortion, r.mean_distortion, r.area_change,
+      r.boundary_change, r.flipped, r.overlapping);
+  if (!r.flattenable) s += ": not flattenable without a cut";
+  return s;
 }
 
 }  // namespace qd::flatten

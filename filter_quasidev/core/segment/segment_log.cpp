@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
+#include "common/format_text.h"
 #include "common/message_text.h"
 #include "segment/common_names.h"
 
 namespace qd::segment {
+
+using common::format_text;
 
 namespace {
 
@@ -42,20 +44,16 @@ std::string over_limit_text(OverLimit over, const SegmentParams& q) {
 }
 
 std::string patch_line(int id, const SegmentPatch& p, const SegmentParams& q) {
-  char head[320];
-  std::snprintf(head, sizeof head,
-                "Patch %d: %d faces, area %.6g, %s (axis %.4f %.4f %.4f, angle %.2f deg), fit "
-                "error max %.2f deg, rms %.2f deg, %d boundary loop%s, %s",
-                id, p.faces, p.area, proxy_kind(p.proxy), p.proxy.axis.x(), p.proxy.axis.y(),
-                p.proxy.axis.z(), degrees(p.proxy.angle), p.max_error_deg, p.rms_error_deg,
-                p.boundary_loops, p.boundary_loops == 1 ? "" : "s",
-                p.disk ? "a disk" : "not a disk (needs a cut to flatten)");
-  std::string line = head;
+  std::string line = format_text(
+      "Patch %d: %d faces, area %.6g, %s (axis %.4f %.4f %.4f, angle %.2f deg), fit "
+      "error max %.2f deg, rms %.2f deg, %d boundary loop%s, %s",
+      id, p.faces, p.area, proxy_kind(p.proxy), p.proxy.axis.x(), p.proxy.axis.y(),
+      p.proxy.axis.z(), degrees(p.proxy.angle), p.max_error_deg, p.rms_error_deg, p.boundary_loops,
+      p.boundary_loops == 1 ? "" : "s", p.disk ? "a disk" : "not a disk (needs a cut to flatten)");
   if (p.kept) line += ", kept whole";
   if (p.over_limit != OverLimit::No) {
-    char limit[64];
-    std::snprintf(limit, sizeof limit, "; over the %.4g deg limit: ", q.max_error_deg);
-    line += limit + over_limit_text(p.over_limit, q);
+    line += format_text("; over the %.4g deg limit: ", q.max_error_deg) +
+            over_limit_text(p.over_limit, q);
   }
   return line + ".";
 }
@@ -105,13 +103,11 @@ std::vector<std::string> segment_log(const SegmentResult& r, int faces, const Se
     worst = std::max(worst, r.patches[id].max_error_deg);
     disks += r.patches[id].disk;
   }
-  char summary[256];
-  std::snprintf(summary, sizeof summary,
-                "Segmented %d faces into %d patches (%d disks) in %d rounds; largest fit error "
-                "%.2f deg (limit %.4g deg); %.0f ms.",
-                faces, static_cast<int>(r.patches.size()), disks, r.rounds, worst, q.max_error_deg,
-                r.time_ms);
-  log.push_back(summary);
+  log.push_back(
+      format_text("Segmented %d faces into %d patches (%d disks) in %d rounds; largest fit error "
+                  "%.2f deg (limit %.4g deg); %.0f ms.",
+                  faces, static_cast<int>(r.patches.size()), disks, r.rounds, worst,
+                  q.max_error_deg, r.time_ms));
   return log;
 }
 
