@@ -77,13 +77,15 @@ PlyProperty list_property(const std::string& name, ScalarType type,
   p.name = name;
   p.is_list = true;
   p.count_type = ScalarType::UInt8;
-  p.values = ScalarColumn(type);
+  std::vector<double> values;
+  values.reserve(rows.size() * N);
   p.offsets.reserve(rows.size() + 1);
   p.offsets.push_back(0);
   for (const std::array<T, N>& row : rows) {
-    for (T v : row) p.values.push_back(static_cast<double>(v));
-    p.offsets.push_back(p.values.size());
+    values.insert(values.end(), row.begin(), row.end());
+    p.offsets.push_back(values.size());
   }
+  p.values = ScalarColumn(type, values);
   return p;
 }
 
@@ -128,9 +130,9 @@ void set_positions(MeshDocument& doc, const common::Positions& V) {
   const std::vector<std::array<double, 3>> n = vertex_normals(doc, V);
   for (std::size_t k = 0; k < 3; ++k) {
     ScalarColumn& column = doc.vertex_extra[static_cast<std::size_t>(normals[k])].values;
-    column = ScalarColumn(column.type());
-    column.reserve(n.size());
-    for (const std::array<double, 3>& x : n) column.push_back(x[k]);
+    std::vector<double> values(n.size());
+    for (std::size_t i = 0; i < n.size(); ++i) values[i] = n[i][k];
+    column = ScalarColumn(column.type(), values);
   }
 }
 

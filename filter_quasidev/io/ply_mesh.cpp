@@ -32,8 +32,10 @@ void read_vertices(PlyElement& vertex, MeshDocument& mesh) {
   const PlyProperty z = take_scalar(vertex, "z");
   mesh.positions.resize(vertex.count);
   mesh.position_types = {x.type(), y.type(), z.type()};
+  const std::vector<double> xs = x.values.to_doubles(), ys = y.values.to_doubles(),
+                            zs = z.values.to_doubles();
   for (std::size_t i = 0; i < vertex.count; ++i) {
-    mesh.positions[i] = {x.values[i], y.values[i], z.values[i]};
+    mesh.positions[i] = {xs[i], ys[i], zs[i]};
     for (double c : mesh.positions[i])
       if (!std::isfinite(c))
         fail("vertex " + std::to_string(i) + " has a non-finite coordinate (" + std::to_string(c) +
@@ -41,11 +43,12 @@ void read_vertices(PlyElement& vertex, MeshDocument& mesh) {
   }
   const int flags = vertex.find("flags");
   if (flags >= 0 && !vertex.properties[static_cast<std::size_t>(flags)].is_list) {
-    const PlyProperty& p = vertex.properties[static_cast<std::size_t>(flags)];
+    const std::vector<double> values =
+        vertex.properties[static_cast<std::size_t>(flags)].values.to_doubles();
     std::vector<char> selected(vertex.count, 0);
     bool any = false;
     for (std::size_t i = 0; i < vertex.count; ++i) {
-      selected[i] = (static_cast<long long>(p.values[i]) & kSelectedFlag) != 0;
+      selected[i] = (static_cast<long long>(values[i]) & kSelectedFlag) != 0;
       any = any || selected[i];
     }
     if (any) mesh.constrained = std::move(selected);
@@ -60,11 +63,12 @@ std::vector<int> face_patch_ids(const PlyElement& face) {
   if (column < 0) return {};
   const PlyProperty& p = face.properties[static_cast<std::size_t>(column)];
   if (p.is_list) fail("the face property '" + p.name + "' is a list; expected one patch id");
+  const std::vector<double> values = p.values.to_doubles();
   std::vector<int> ids(face.count);
   for (std::size_t f = 0; f < face.count; ++f) {
-    const double v = std::round(p.values[f]);
+    const double v = std::round(values[f]);
     if (!std::isfinite(v) || std::fabs(v) > 1e9)
-      fail("face " + std::to_string(f) + " has " + p.name + " " + std::to_string(p.values[f]) +
+      fail("face " + std::to_string(f) + " has " + p.name + " " + std::to_string(values[f]) +
            ", not usable as a patch id");
     ids[f] = static_cast<int>(v);
   }

@@ -9,7 +9,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
-#include <limits>
+#include <utility>
 
 #include "common/error.h"
 #include "io/scalar_value.h"
@@ -149,14 +149,15 @@ class AsciiSource {
   std::size_t min_bytes(ScalarType) const { return 1; }
   std::size_t remaining() const { return bytes_.size() - pos_; }
 
-  double read(ScalarType type, const Place& place) {
+  template <typename T>
+  T read(const Place& place) {
     const std::string_view token = next_token(place);
     double value = 0;
-    if (!parse_number(token, value) || !fits_scalar_type(type, value))
+    if (!parse_number(token, value) || !fits_type<T>(value))
       fail("line " + std::to_string(line_) + ": '" + std::string(token.substr(0, 40)) +
-           "' is not a valid " + scalar_type_name(type) + " for " + place.text());
+           "' is not a valid " + scalar_type_name(scalar_type_of<T>()) + " for " + place.text());
     // A float property holds the nearest float, as a binary file would.
-    return type == ScalarType::Float32 ? static_cast<double>(static_cast<float>(value)) : value;
+    return static_cast<T>(value);
   }
 
   void expect_end() {
@@ -199,16 +200,18 @@ class BinarySource {
   std::size_t min_bytes(ScalarType type) const { return scalar_type_size(type); }
   std::size_t remaining() const { return bytes_.size() - pos_; }
 
-  double read(ScalarType type, const Place& place) {
-    const std::size_t size = scalar_type_size(type);
-    if (bytes_.size() - pos_ < size)
+  template <typename T>
+  T read(const Place& place) {
+    if (bytes_.size() - pos_ < sizeof(T))
       fail("truncated binary data at byte " + std::to_string(pos_) + ": missing " + place.text());
-    unsigned char raw[8];
-    std::memcpy(raw, bytes_.data() + pos_, size);
+    unsigned char raw[sizeof(T)];
+    std::memcpy(raw, bytes_.data() + pos_, sizeof(T));
     if (swap_)
-      for (std::size_t i = 0; i < size / 2; ++i) std::swap(raw[i], raw[size - 1 - i]);
-    pos_ += size;
-    return decode(type, raw);
+      for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(raw[i], raw[sizeof(T) - 1 - i]);
+    pos_ += sizeof(T);
+    T value;
+    std::memcpy(&value, raw, sizeof(T));
+    return value;
   }
 
   void expect_end() const {
@@ -219,35 +222,6 @@ class BinarySource {
   }
 
  private:
-  template <typename T>
-  static double as(const unsigned char* raw) {
-    T v;
-    std::memcpy(&v, raw, sizeof v);
-    return static_cast<double>(v);
-  }
-
-  static double decode(ScalarType type, const unsigned char* raw) {
-    switch (type) {
-      case ScalarType::Int8:
-        return as<std::int8_t>(raw);
-      case ScalarType::UInt8:
-        return as<std::uint8_t>(raw);
-      case ScalarType::Int16:
-        return as<std::int16_t>(raw);
-      case ScalarType::UInt16:
-        return as<std::uint16_t>(raw);
-      case ScalarType::Int32:
-        return as<std::int32_t>(raw);
-      case ScalarType::UInt32:
-        return as<std::uint32_t>(raw);
-      case ScalarType::Float32:
-        return as<float>(raw);
-      case ScalarType::Float64:
-        return as<double>(raw);
-    }
-    return 0;
-  }
-
   std::string_view bytes_;
   std::size_t pos_;
   bool swap_;
@@ -265,6 +239,35 @@ void check_count_fits(const PlyElement& e, const Source& source) {
          " bytes of data remain (wrong count or truncated file)");
 }
 
+// The list length of item i of list property p.
+template <typename Source>
+std::size_t read_list_length(Source& source, const PlyElement& e, std::size_t i,
+                             const PlyProperty& p) {
+  const double n = with_scalar_type(p.count_type, [&](auto count) {
+    return static_cast<double>(source.template read<decltype(count)>(Place{e, i, p, true}));
+  });
+  if (n < 0) fail("negative list length of " + Place{e, i, p, false}.text());
+  const auto length = static_cast<std::size_t>(n);
+  if (length > source.remaining() / source.min_bytes(p.type()))
+    fail("list length " + std::to_string(length) + " of " + Place{e, i, p, false}.text() +
+         " exceeds the remaining data (truncated or corrupt file)");
+  return length;
+}
+
+// Reads item i's entry of property p (a value, or a list) onto `column`, p's typed values.
+template <typename Source, typename T>
+void read_entry(Source& source, const PlyElement& e, std::size_t i, PlyProperty& p,
+                std::vector<T>& column) {
+  if (!p.is_list) {
+    column.push_back(source.template read<T>(Place{e, i, p, false}));
+    return;
+  }
+  const std::size_t length = read_list_length(source, e, i, p);
+  for (std::size_t k = 0; k < length; ++k)
+    column.push_back(source.template read<T>(Place{e, i, p, false}));
+  p.offsets.push_back(column.size());
+}
+
 template <typename Source>
 void read_element(PlyElement& e, Source& source) {
   if (e.properties.empty()) return;  // nothing stored, nothing to read
@@ -273,23 +276,9 @@ void read_element(PlyElement& e, Source& source) {
     p.values.reserve(e.count);
     if (p.is_list) p.offsets.assign(1, 0);
   }
-  for (std::size_t i = 0; i < e.count; ++i) {
-    for (PlyProperty& p : e.properties) {
-      if (!p.is_list) {
-        p.values.push_back(source.read(p.type(), Place{e, i, p, false}));
-        continue;
-      }
-      const double n = source.read(p.count_type, Place{e, i, p, true});
-      if (n < 0) fail("negative list length of " + Place{e, i, p, false}.text());
-      const auto length = static_cast<std::size_t>(n);
-      if (length > source.remaining() / source.min_bytes(p.type()))
-        fail("list length " + std::to_string(length) + " of " + Place{e, i, p, false}.text() +
-             " exceeds the remaining data (truncated or corrupt file)");
-      for (std::size_t k = 0; k < length; ++k)
-        p.values.push_back(source.read(p.type(), Place{e, i, p, false}));
-      p.offsets.push_back(p.values.size());
-    }
-  }
+  for (std::size_t i = 0; i < e.count; ++i)
+    for (PlyProperty& p : e.properties)
+      p.values.visit([&](auto& column) { read_entry(source, e, i, p, column); });
 }
 
 template <typename Source>

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <type_traits>
 
 #include "common/error.h"
 #include "io/scalar_value.h"
@@ -47,52 +48,54 @@ void append_raw(T v, bool big_endian, std::string& out) {
   out.append(reinterpret_cast<const char*>(raw), sizeof raw);
 }
 
-void append_binary(ScalarType type, double v, bool big_endian, std::string& out) {
-  switch (type) {
-    case ScalarType::Int8:
-      return append_raw(static_cast<std::int8_t>(v), big_endian, out);
-    case ScalarType::UInt8:
-      return append_raw(static_cast<std::uint8_t>(v), big_endian, out);
-    case ScalarType::Int16:
-      return append_raw(static_cast<std::int16_t>(v), big_endian, out);
-    case ScalarType::UInt16:
-      return append_raw(static_cast<std::uint16_t>(v), big_endian, out);
-    case ScalarType::Int32:
-      return append_raw(static_cast<std::int32_t>(v), big_endian, out);
-    case ScalarType::UInt32:
-      return append_raw(static_cast<std::uint32_t>(v), big_endian, out);
-    case ScalarType::Float32:
-      return append_raw(static_cast<float>(v), big_endian, out);
-    case ScalarType::Float64:
-      return append_raw(v, big_endian, out);
-  }
-}
-
-// Shortest text that reads back to the same value of the type.
-void append_text(ScalarType type, double v, std::string& out) {
+// Shortest text that reads back to the same value of T.
+template <typename T>
+void append_text(T v, std::string& out) {
   char buffer[40];  // not format_text: a stack buffer for every value of every PLY written
-  if (type == ScalarType::Float32)
-    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(static_cast<float>(v)));
-  else if (type == ScalarType::Float64)
+  if constexpr (std::is_same_v<T, float>)
+    std::snprintf(buffer, sizeof buffer, "%.9g", static_cast<double>(v));
+  else if constexpr (std::is_same_v<T, double>)
     std::snprintf(buffer, sizeof buffer, "%.17g", v);
   else
     std::snprintf(buffer, sizeof buffer, "%lld", static_cast<long long>(v));
   out += buffer;
 }
 
-// Appends value v of property p of element e's item i (named in the error, built only then).
-void append_value(ScalarType type, double v, PlyFormat format, const PlyElement& e,
-                  const PlyProperty& p, std::size_t i, std::string& out) {
-  if (!fits_scalar_type(type, v))
-    throw common::Error("cannot write property '" + p.name + "' of " + e.name + " " +
-                        std::to_string(i) + ": value " + std::to_string(v) + " does not fit type " +
-                        scalar_type_name(type));
+template <typename T>
+void append_value(T v, PlyFormat format, std::string& out) {
   if (format == PlyFormat::Ascii) {
-    append_text(type, v, out);
+    append_text(v, out);
     out += ' ';
   } else {
-    append_binary(type, v, format == PlyFormat::BinaryBigEndian, out);
+    append_raw(v, format == PlyFormat::BinaryBigEndian, out);
   }
+}
+
+// Appends the list length of item i of list property p, in p's count type.
+void append_list_length(const PlyElement& e, const PlyProperty& p, std::size_t i, PlyFormat format,
+                        std::string& out) {
+  const std::size_t n = p.list_size(i);
+  with_scalar_type(p.count_type, [&](auto count) {
+    using Count = decltype(count);
+    if (!fits_type<Count>(static_cast<double>(n)))
+      throw common::Error("cannot write property '" + p.name + "' of " + e.name + " " +
+                          std::to_string(i) + ": list length " + std::to_string(n) +
+                          " does not fit type " + scalar_type_name(p.count_type));
+    append_value(static_cast<Count>(n), format, out);
+  });
+}
+
+// Appends item i's entry of property p (a value, or a list) from `column`, p's typed values.
+template <typename T>
+void append_entry(const PlyElement& e, const PlyProperty& p, std::size_t i,
+                  const std::vector<T>& column, PlyFormat format, std::string& out) {
+  if (!p.is_list) {
+    append_value(column[i], format, out);
+    return;
+  }
+  append_list_length(e, p, i, format, out);
+  for (std::size_t k = p.offsets[i]; k < p.offsets[i + 1]; ++k)
+    append_value(column[k], format, out);
 }
 
 void append_element(const PlyElement& e, PlyFormat format, std::string& out) {
@@ -103,15 +106,8 @@ void append_element(const PlyElement& e, PlyFormat format, std::string& out) {
                           "' does not have one entry per element");
   }
   for (std::size_t i = 0; i < e.count; ++i) {
-    for (const PlyProperty& p : e.properties) {
-      if (!p.is_list) {
-        append_value(p.type(), p.values[i], format, e, p, i, out);
-        continue;
-      }
-      append_value(p.count_type, static_cast<double>(p.list_size(i)), format, e, p, i, out);
-      for (std::size_t k = p.offsets[i]; k < p.offsets[i + 1]; ++k)
-        append_value(p.type(), p.values[k], format, e, p, i, out);
-    }
+    for (const PlyProperty& p : e.properties)
+      p.values.visit([&](const auto& column) { append_entry(e, p, i, column, format, out); });
     if (format == PlyFormat::Ascii && !e.properties.empty()) out.back() = '\n';
   }
 }

@@ -9,15 +9,9 @@ namespace qd::io {
 
 namespace {
 
-// The variant alternative of `type`, holding an empty vector.
-template <std::size_t I = 0, typename Variant>
-void select_type(Variant& data, ScalarType type) {
-  if constexpr (I < std::variant_size_v<Variant>) {
-    if (static_cast<std::size_t>(type) == I)
-      data.template emplace<I>();
-    else
-      select_type<I + 1>(data, type);
-  }
+[[noreturn]] void throw_misfit(double value, ScalarType type) {
+  throw common::Error("value " + std::to_string(value) + " does not fit type " +
+                      scalar_type_name(type));
 }
 
 }  // namespace
@@ -45,29 +39,23 @@ const char* scalar_type_name(ScalarType type) {
 }
 
 std::size_t scalar_type_size(ScalarType type) {
-  switch (type) {
-    case ScalarType::Int8:
-    case ScalarType::UInt8:
-      return 1;
-    case ScalarType::Int16:
-    case ScalarType::UInt16:
-      return 2;
-    case ScalarType::Int32:
-    case ScalarType::UInt32:
-    case ScalarType::Float32:
-      return 4;
-    case ScalarType::Float64:
-      return 8;
-  }
-  return 0;
+  return with_scalar_type(type, [](auto value) { return sizeof value; });
 }
 
-ScalarColumn::ScalarColumn(ScalarType type) { select_type(data_, type); }
+ScalarColumn::ScalarColumn(ScalarType type) {
+  with_scalar_type(type, [this](auto value) { data_.emplace<std::vector<decltype(value)>>(); });
+}
 
 ScalarColumn::ScalarColumn(ScalarType type, const std::vector<double>& values)
     : ScalarColumn(type) {
-  reserve(values.size());
-  for (double v : values) push_back(v);
+  visit([&values, type](auto& column) {
+    using T = typename std::decay_t<decltype(column)>::value_type;
+    column.reserve(values.size());
+    for (double v : values) {
+      if (!fits_type<T>(v)) throw_misfit(v, type);
+      column.push_back(static_cast<T>(v));
+    }
+  });
 }
 
 std::size_t ScalarColumn::size() const {
@@ -79,9 +67,7 @@ double ScalarColumn::operator[](std::size_t i) const {
 }
 
 void ScalarColumn::push_back(double value) {
-  if (!fits_scalar_type(type(), value))
-    throw common::Error("value " + std::to_string(value) + " does not fit type " +
-                        scalar_type_name(type()));
+  if (!fits_scalar_type(type(), value)) throw_misfit(value, type());
   std::visit(
       [value](auto& v) {
         v.push_back(static_cast<typename std::decay_t<decltype(v)>::value_type>(value));

@@ -1,6 +1,9 @@
 // ScalarColumn: values held in their PLY type; the PLY reader keeps each property's type.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <type_traits>
+
 #include "common/error.h"
 #include "io/ply_reader.h"
 #include "io/scalar_column.h"
@@ -35,4 +38,33 @@ TEST(ScalarColumn, TheReaderStoresEachPropertyInItsFileType) {
   EXPECT_EQ(v.properties[3].type(), ScalarType::Float64);
   EXPECT_EQ(v.properties[1].values[0], 200);
   EXPECT_EQ(v.properties[2].values[0], -3);
+}
+
+TEST(ScalarColumn, VisitHandsOverTheTypedVector) {
+  ScalarColumn c(ScalarType::Int16, {-2, 9});
+  c.visit([](auto& values) { values.push_back(values[0] + values[1]); });
+  const bool is_int16 = c.visit(
+      [](const auto& values) { return std::is_same_v<decltype(values[0]), const std::int16_t&>; });
+  EXPECT_TRUE(is_int16);
+  EXPECT_EQ(c.to_doubles(), (std::vector<double>{-2, 9, 7}));
+  EXPECT_EQ(ScalarColumn(std::vector<float>{1.5f}).type(), ScalarType::Float32);
+}
+
+TEST(ScalarColumn, TheBulkConstructorRefusesAValueItsTypeCannotHold) {
+  EXPECT_THROW(ScalarColumn(ScalarType::Int8, {1, 128}), qd::common::Error);
+  EXPECT_THROW(ScalarColumn(ScalarType::UInt32, {-1}), qd::common::Error);
+  EXPECT_NO_THROW(ScalarColumn(ScalarType::Float32, {1e30, -1e30}));
+  EXPECT_THROW(ScalarColumn(ScalarType::Float32, {1e39}), qd::common::Error);
+}
+
+TEST(ScalarColumn, EveryTypeMapsToItsCxxTypeAndBack) {
+  for (int t = 0; t <= static_cast<int>(ScalarType::Float64); ++t) {
+    const auto type = static_cast<ScalarType>(t);
+    const ScalarType back =
+        with_scalar_type(type, [](auto value) { return scalar_type_of<decltype(value)>(); });
+    EXPECT_EQ(back, type);
+    EXPECT_EQ(with_scalar_type(type, [](auto value) { return sizeof value; }),
+              scalar_type_size(type));
+    EXPECT_EQ(ScalarColumn(type).type(), type);
+  }
 }
