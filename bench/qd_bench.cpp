@@ -5,7 +5,6 @@
 // Usage: qd_bench (--grid TRIANGLES [--patches P] | --tube TRIANGLES | --mesh FILE) [--save FILE]
 //                 [--runs R]
 //                 [-- QUASIDEV OPTIONS]
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -44,10 +43,15 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// This program's own peak resident memory (VmHWM): getrusage's ru_maxrss would include the
+// peak of the parent that started it (a script holding large meshes), kept across fork and exec.
 double peak_rss_mb() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  double kb = 0;
+  while (status >> key && key != "VmHWM:") status.ignore(1 << 20, '\n');
+  status >> kb;
+  return kb / 1024.0;
 }
 
 struct Args {
