@@ -262,7 +262,14 @@ def main() -> int:
     a = ap.parse_args()
     a.size = a.size or (100000 if a.quick else 1000000)
     quasidev = os.path.join(a.build, "bin", "quasidev")
-    command = "scripts/bench_family.py " + shlex.join(sys.argv[1:])
+    # The command as a user would type it: where the build, cache and output live is the machine's.
+    args, skip = [], False
+    for arg in sys.argv[1:]:
+        if skip or arg in ("--build", "--cache", "--out"):
+            skip = not skip
+            continue
+        args.append(arg)
+    command = " ".join(["scripts/bench_family.py", shlex.join(args)]).strip()
     load = [os.getloadavg()]
     with tempfile.TemporaryDirectory() as tmp:
         cache = a.cache or tmp
