@@ -7,6 +7,9 @@
 
 namespace qd::cli {
 
+using frontend::Json;
+using frontend::report_text;
+
 namespace {
 
 Json box(const Eigen::AlignedBox2d& b) {

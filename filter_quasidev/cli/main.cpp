@@ -23,6 +23,7 @@
 
 #include "approximate/quasidev.h"
 #include "approximate_params.h"
+#include "approximate_report_json.h"
 #include "common/format_text.h"
 #include "cut_marker.h"
 #include "flatten/flatten.h"
@@ -38,7 +39,6 @@
 #include "mesh_problem.h"
 #include "options.h"
 #include "printable_pdf.h"
-#include "report_json.h"
 #include "segment/segment.h"
 #include "segment_mesh.h"
 #include "segment_report_json.h"
@@ -175,13 +175,15 @@ void approximate(const qd::cli::ApproximateOptions& o) {
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(qd::io::approximated_document(mesh, result, o.settings))}};
   if (!o.report.empty()) {
-    const qd::cli::ReportContext context{o,
-                                         static_cast<int>(mesh.positions.size()),
-                                         static_cast<int>(mesh.triangles.size()),
-                                         !mesh.patch.empty(),
-                                         count_constrained(problem.constrained),
-                                         mesh.notes};
-    files.emplace_back(o.report, report_json(result, context));
+    const qd::frontend::ReportContext context{o.input,
+                                              o.output,
+                                              o.settings,
+                                              static_cast<int>(mesh.positions.size()),
+                                              static_cast<int>(mesh.triangles.size()),
+                                              !mesh.patch.empty(),
+                                              count_constrained(problem.constrained),
+                                              mesh.notes};
+    files.emplace_back(o.report, qd::frontend::report_json(result, context));
   }
   write_files(files);
   print_outcome(o, result.warnings, result.log, mesh.notes);

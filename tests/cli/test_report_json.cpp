@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "approximate_params.h"
+#include "approximate_report_json.h"
 #include "flatten_report_json.h"
-#include "report_json.h"
 
 namespace {
 
@@ -39,8 +39,8 @@ Json report(const qd::approximate::Result& r, const std::vector<std::string>& no
   o.input = "in\xff.ply";  // not UTF-8
   o.output = "out.ply";
   o.settings.patch_tolerance_ae[7] = 3.0;
-  const qd::cli::ReportContext context{o, 3, 1, true, 0, notes};
-  return Json::parse(qd::cli::report_json(r, context));
+  const qd::frontend::ReportContext context{o.input, o.output, o.settings, 3, 1, true, 0, notes};
+  return Json::parse(qd::frontend::report_json(r, context));
 }
 
 TEST(ReportJson, ReadsBackBitIdentical) {
