@@ -1,0 +1,19 @@
+"""quasidev: quasi-developable mesh approximation (Zeng et al. 2012) on numpy arrays, on the
+engine of the `quasidev` command and the MeshLab filters.
+
+    import quasidev
+    result = quasidev.approximate(V, F, keep_boundary=True)
+    result.positions, result.k_after, result.report["abd_reduction"]
+"""
+
+from importlib.metadata import PackageNotFoundError, version
+
+from ._approximate import ApproximateResult, approximate
+from ._params import DECLARATION
+
+try:
+    __version__ = version("quasidev")
+except PackageNotFoundError:  # not installed
+    __version__ = "unknown"
+
+__all__ = ["ApproximateResult", "DECLARATION", "approximate"]

@@ -1,0 +1,94 @@
+// quasidev._engine: the engine for the quasidev Python package (python/quasidev/). Its
+// functions take arrays the package has already converted (C-contiguous float64 positions,
+// int64 indices and ids, bool flags) and the keyword parameters as numbers or strings; they
+// copy the inputs, release the GIL while the engine runs and return new arrays owned by Python.
+// qd::common::Error (the engine's refusals, bad parameters) becomes ValueError.
+#include <nanobind/nanobind.h>
+#include <nanobind/stl/map.h>
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/variant.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "approximate/quasidev.h"
+#include "approximate_params.h"
+#include "approximate_problem.h"
+#include "approximate_report_json.h"
+#include "numpy_arrays.h"
+#include "params_json.h"
+#include "python_progress.h"
+#include "python_settings.h"
+
+namespace nb = nanobind;
+using namespace qd;
+
+namespace {
+
+// The declaration of the parameters Python takes, per job, as JSON text.
+std::string declaration() {
+  std::vector<params::ParamInfo> approximate;
+  for (const params::ParamInfo& p : params::infos(params::approximate_params()))
+    if (python::in_python(p)) approximate.push_back(p);
+  return params::Json{{"approximate", params::declaration_json(approximate)}}.dump();
+}
+
+nb::dict run_approximate(const python::VertexArray& V, const python::FaceArray& F,
+                         std::optional<python::IdArray> patches,
+                         std::optional<python::FlagArray> fixed, const python::Given& given,
+                         nb::object progress) {
+  const params::ApproximateSettings settings =
+      python::settings_from(params::approximate_params(), given);
+  const size_t n = V.shape(0);
+  approximate::Problem problem = frontend::approximate_problem(
+      python::positions_of(V), python::triangles_of(F, n),
+      patches ? python::ids_of(*patches) : std::vector<int>{},
+      fixed ? python::flags_of(*fixed) : std::vector<char>{}, settings);
+  python::PythonProgress report(std::move(progress));
+  approximate::Result result;
+  {
+    nb::gil_scoped_release released;
+    result = approximate::approximate(problem, report.callback());
+  }
+  report.rethrow();
+  const int constrained =
+      static_cast<int>(std::count(problem.constrained.begin(), problem.constrained.end(), char{1}));
+  const std::string none;
+  const std::vector<std::string> notes;
+  const frontend::ReportContext context{none,
+                                        none,
+                                        settings,
+                                        static_cast<int>(n),
+                                        static_cast<int>(F.shape(0)),
+                                        patches.has_value(),
+                                        constrained,
+                                        notes};
+  nb::dict out;
+  out["report"] = frontend::report_json(result, context);
+  out["positions"] = python::numpy_positions(result.V);
+  out["k_before"] = python::numpy_array(std::move(result.k_before), {n});
+  out["k_after"] = python::numpy_array(std::move(result.k_after), {n});
+  out["displacement"] = python::numpy_array(std::move(result.displacement), {n});
+  const size_t segmented = result.segmented_patch.size();
+  if (segmented > 0)
+    out["patches"] = python::numpy_array(std::move(result.segmented_patch), {segmented});
+  return out;
+}
+
+}  // namespace
+
+NB_MODULE(_engine, m) {
+  nb::register_exception_translator([](const std::exception_ptr& p, void*) {
+    try {
+      std::rethrow_exception(p);
+    } catch (const common::Error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  m.def("declaration", &declaration,
+        "The parameters of each job as JSON text (name, type, unit, default, range, help).");
+  m.def("approximate", &run_approximate, nb::arg("V"), nb::arg("F"), nb::arg("patches").none(),
+        nb::arg("fixed").none(), nb::arg("params"), nb::arg("progress").none(),
+        "The quasi-developable approximation of a checked mesh (see quasidev.approximate).");
+}
