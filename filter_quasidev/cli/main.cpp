@@ -198,13 +198,15 @@ void segment(const qd::cli::SegmentOptions& o) {
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(qd::io::segmented_document(mesh, result))}};
   if (!o.report.empty()) {
-    const qd::cli::SegmentReportContext context{o,
-                                                static_cast<int>(mesh.positions.size()),
-                                                static_cast<int>(mesh.triangles.size()),
-                                                !mesh.patch.empty(),
-                                                count_constrained(problem.selected),
-                                                mesh.notes};
-    files.emplace_back(o.report, segment_report_json(result, context));
+    const qd::frontend::SegmentReportContext context{o.input,
+                                                     o.output,
+                                                     o.settings,
+                                                     static_cast<int>(mesh.positions.size()),
+                                                     static_cast<int>(mesh.triangles.size()),
+                                                     !mesh.patch.empty(),
+                                                     count_constrained(problem.selected),
+                                                     mesh.notes};
+    files.emplace_back(o.report, qd::frontend::segment_report_json(result, context));
   }
   write_files(files);
   print_outcome(o, result.warnings, result.log, mesh.notes);

@@ -4,16 +4,18 @@ engine of the `quasidev` command and the MeshLab filters.
     import quasidev
     result = quasidev.approximate(V, F, keep_boundary=True)
     result.positions, result.k_after, result.report["abd_reduction"]
+    quasidev.segment(V, F).patches      # a patch id per face
 """
 
 from importlib.metadata import PackageNotFoundError, version
 
 from ._approximate import ApproximateResult, approximate
 from ._params import DECLARATION
+from ._segment import SegmentResult, segment
 
 try:
     __version__ = version("quasidev")
 except PackageNotFoundError:  # not installed
     __version__ = "unknown"
 
-__all__ = ["ApproximateResult", "DECLARATION", "approximate"]
+__all__ = ["ApproximateResult", "DECLARATION", "SegmentResult", "approximate", "segment"]

@@ -3,8 +3,6 @@ as numpy arrays."""
 
 from __future__ import annotations
 
-import json
-import warnings
 from dataclasses import dataclass
 from typing import Any, Callable, Optional
 
@@ -37,10 +35,7 @@ def approximate(
 
     Parameters
     ----------
-    V : array_like, (n, 3)
-        Vertex positions, any real dtype and memory order.
-    F : array_like, (m, 3)
-        Triangles as vertex indices.
+    {mesh}
     patches : array_like, (m,), optional
         A patch id per face; each patch is made developable on its own. None: the whole mesh is
         one patch (or the engine splits it first, see segment_first).
@@ -62,21 +57,17 @@ def approximate(
     V64 = _arrays.vertices(V)
     F64 = _arrays.faces(F, len(V64))
     ids = _arrays.patch_ids(patches, len(F64))
-    mask = _arrays.fixed_mask(fixed, len(V64))
+    mask = _arrays.mask("fixed", fixed, len(V64), "vertex")
     out = _engine.approximate(V64, F64, ids, mask, _params.engine_values(params), progress)
-    report = json.loads(out["report"])
-    for w in report["warnings"]:
-        warnings.warn(w, UserWarning, stacklevel=2)
+    report = _params.report_of(out["report"])
     return ApproximateResult(
         positions=out["positions"],
         k_before=out["k_before"],
         k_after=out["k_after"],
         displacement=out["displacement"],
-        patches=out.get("patches"),
+        patches=None if "patches" not in out else out["patches"].astype(np.int64),
         report=report,
     )
 
 
-approximate.__doc__ = approximate.__doc__.replace(
-    "{parameters}", _params.parameters_doc("approximate").replace("\n", "\n    ")
-)
+_params.document(approximate, "approximate")

@@ -56,18 +56,19 @@ def patch_ids(patches, m: int) -> np.ndarray | None:
     return _whole("patches", arr)
 
 
-def fixed_mask(fixed, n: int) -> np.ndarray | None:
-    """fixed (an (n,) bool mask or an array of vertex indices) as a new (n,) bool mask, or None."""
-    if fixed is None:
+def mask(name: str, value, count: int, items: str) -> np.ndarray | None:
+    """value (a (count,) bool mask or an array of indices of items) as a new (count,) bool mask,
+    or None."""
+    if value is None:
         return None
-    arr = _array("fixed", fixed, "biuf", "an (n,) bool mask or an array of vertex indices")
+    arr = _array(name, value, "biuf", f"a ({count},) bool mask or an array of {items} indices")
     if arr.dtype.kind == "b":
-        if arr.shape != (n,):
-            raise ValueError(f"a bool fixed mask must have shape ({n},), got {arr.shape}")
+        if arr.shape != (count,):
+            raise ValueError(f"a bool {name} mask must have shape ({count},), got {arr.shape}")
         return np.array(arr, dtype=bool, order="C", copy=True)
-    index = _whole("fixed", arr.reshape(-1))
-    if index.size and (index.min() < 0 or index.max() >= n):
-        raise ValueError(f"fixed holds vertex indices outside 0..{n - 1}")
-    mask = np.zeros(n, dtype=bool)
-    mask[index] = True
-    return mask
+    index = _whole(name, arr.reshape(-1))
+    if index.size and (index.min() < 0 or index.max() >= count):
+        raise ValueError(f"{name} holds {items} indices outside 0..{count - 1}")
+    out = np.zeros(count, dtype=bool)
+    out[index] = True
+    return out

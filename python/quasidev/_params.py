@@ -7,10 +7,19 @@ from __future__ import annotations
 import json
 import numbers
 import textwrap
+import warnings
 
 from . import _engine
 
 DECLARATION: dict[str, list[dict]] = json.loads(_engine.declaration())
+
+
+def report_of(text: str) -> dict:
+    """The engine's JSON report as a dict; its warnings issued as UserWarning."""
+    report = json.loads(text)
+    for w in report["warnings"]:
+        warnings.warn(w, UserWarning, stacklevel=3)
+    return report
 
 
 def engine_values(params: dict) -> dict:
@@ -56,3 +65,15 @@ def parameters_doc(job: str) -> str:
         lines.append(f"{p['name']} : {python_type(p)}")
         lines.append(textwrap.indent(textwrap.fill(p["help"] + " (" + "; ".join(facts) + ".)", 88), "    "))
     return "\n".join(lines)
+
+
+MESH_DOC = """V : array_like, (n, 3)
+    Vertex positions, any real dtype and memory order.
+F : array_like, (m, 3)
+    Triangles as vertex indices."""
+
+
+def document(function, job: str) -> None:
+    """Fills function's docstring: the mesh arrays at {mesh}, job's parameters at {parameters}."""
+    function.__doc__ = function.__doc__.replace("{mesh}", MESH_DOC.replace("\n", "\n    ")).replace(
+        "{parameters}", parameters_doc(job).replace("\n", "\n    "))

@@ -20,18 +20,29 @@
 #include "params_json.h"
 #include "python_progress.h"
 #include "python_settings.h"
+#include "segment/segment.h"
+#include "segment_params.h"
+#include "segment_report_json.h"
 
 namespace nb = nanobind;
 using namespace qd;
 
 namespace {
 
-// The declaration of the parameters Python takes, per job, as JSON text.
+// The declaration of the parameters of `declared` that Python takes.
+template <typename S>
+params::Json python_declaration(const std::vector<params::Param<S>>& declared) {
+  std::vector<params::ParamInfo> kept;
+  for (const params::ParamInfo& p : params::infos(declared))
+    if (python::in_python(p)) kept.push_back(p);
+  return params::declaration_json(kept);
+}
+
+// The parameters Python takes, per job, as JSON text.
 std::string declaration() {
-  std::vector<params::ParamInfo> approximate;
-  for (const params::ParamInfo& p : params::infos(params::approximate_params()))
-    if (python::in_python(p)) approximate.push_back(p);
-  return params::Json{{"approximate", params::declaration_json(approximate)}}.dump();
+  return params::Json{{"approximate", python_declaration(params::approximate_params())},
+                      {"segment", python_declaration(params::segment_params())}}
+      .dump();
 }
 
 nb::dict run_approximate(const python::VertexArray& V, const python::FaceArray& F,
@@ -45,13 +56,9 @@ nb::dict run_approximate(const python::VertexArray& V, const python::FaceArray& 
       python::positions_of(V), python::triangles_of(F, n),
       patches ? python::ids_of(*patches) : std::vector<int>{},
       fixed ? python::flags_of(*fixed) : std::vector<char>{}, settings);
-  python::PythonProgress report(std::move(progress));
-  approximate::Result result;
-  {
-    nb::gil_scoped_release released;
-    result = approximate::approximate(problem, report.callback());
-  }
-  report.rethrow();
+  approximate::Result result = python::run_without_gil(
+      std::move(progress),
+      [&problem](const common::Progress& p) { return approximate::approximate(problem, p); });
   const int constrained =
       static_cast<int>(std::count(problem.constrained.begin(), problem.constrained.end(), char{1}));
   const std::string none;
@@ -76,6 +83,39 @@ nb::dict run_approximate(const python::VertexArray& V, const python::FaceArray& 
   return out;
 }
 
+nb::dict run_segment(const python::VertexArray& V, const python::FaceArray& F,
+                     std::optional<python::IdArray> patches,
+                     std::optional<python::FlagArray> selected, const python::Given& given,
+                     nb::object progress) {
+  const params::SegmentSettings settings = python::settings_from(params::segment_params(), given);
+  segment::SegmentProblem problem;
+  problem.V = python::positions_of(V);
+  problem.F = python::triangles_of(F, V.shape(0));
+  if (settings.keep_patches && patches) problem.patch = python::ids_of(*patches);
+  if (settings.selection_border && selected) problem.selected = python::flags_of(*selected);
+  problem.params = settings.engine;
+  segment::SegmentResult result = python::run_without_gil(
+      std::move(progress),
+      [&problem](const common::Progress& p) { return segment::segment(problem, p); });
+  const int selected_faces =
+      static_cast<int>(std::count(problem.selected.begin(), problem.selected.end(), char{1}));
+  const std::string none;
+  const std::vector<std::string> notes;
+  const frontend::SegmentReportContext context{none,
+                                               none,
+                                               settings,
+                                               static_cast<int>(V.shape(0)),
+                                               static_cast<int>(F.shape(0)),
+                                               patches.has_value(),
+                                               selected_faces,
+                                               notes};
+  nb::dict out;
+  out["report"] = frontend::segment_report_json(result, context);
+  const size_t faces = result.patch.size();
+  out["patches"] = python::numpy_array(std::move(result.patch), {faces});
+  return out;
+}
+
 }  // namespace
 
 NB_MODULE(_engine, m) {
@@ -91,4 +131,8 @@ NB_MODULE(_engine, m) {
   m.def("approximate", &run_approximate, nb::arg("V"), nb::arg("F"), nb::arg("patches").none(),
         nb::arg("fixed").none(), nb::arg("params"), nb::arg("progress").none(),
         "The quasi-developable approximation of a checked mesh (see quasidev.approximate).");
+  m.def("segment", &run_segment, nb::arg("V"), nb::arg("F"), nb::arg("patches").none(),
+        nb::arg("selected").none(), nb::arg("params"), nb::arg("progress").none(),
+        "The segmentation of a checked mesh into nearly developable patches (see "
+        "quasidev.segment).");
 }

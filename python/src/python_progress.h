@@ -6,6 +6,7 @@
 #include <nanobind/nanobind.h>
 
 #include <memory>
+#include <utility>
 
 #include "common/progress.h"
 
@@ -26,5 +27,19 @@ class PythonProgress {
   int last_percent_ = -1;
   std::unique_ptr<nb::python_error> error_;
 };
+
+// run(progress)'s result, run with the GIL released and its progress passed on to `callable`
+// (None: no reports); raises what the callable raised once run has returned.
+template <typename Run>
+auto run_without_gil(nb::object callable, Run run) {
+  PythonProgress progress(std::move(callable));
+  decltype(run(common::Progress{})) result;
+  {
+    nb::gil_scoped_release released;
+    result = run(progress.callback());
+  }
+  progress.rethrow();
+  return result;
+}
 
 }  // namespace qd::python
