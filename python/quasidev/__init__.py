@@ -5,11 +5,13 @@ engine of the `quasidev` command and the MeshLab filters.
     result = quasidev.approximate(V, F, keep_boundary=True)
     result.positions, result.k_after, result.report["abd_reduction"]
     quasidev.segment(V, F).patches      # a patch id per face
+    mesh = quasidev.read("in.ply"); quasidev.write("out.ply", mesh.V, mesh.F, mesh.patches)
 """
 
 from importlib.metadata import PackageNotFoundError, version
 
 from ._approximate import ApproximateResult, approximate
+from ._files import Mesh, read, write
 from ._params import DECLARATION
 from ._segment import SegmentResult, segment
 
@@ -18,4 +20,13 @@ try:
 except PackageNotFoundError:  # not installed
     __version__ = "unknown"
 
-__all__ = ["ApproximateResult", "DECLARATION", "SegmentResult", "approximate", "segment"]
+__all__ = [
+    "ApproximateResult",
+    "DECLARATION",
+    "Mesh",
+    "SegmentResult",
+    "approximate",
+    "read",
+    "segment",
+    "write",
+]

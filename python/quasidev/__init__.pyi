@@ -1,4 +1,5 @@
 # Made by `python -m quasidev._stub` from the engine's parameter declaration: do not edit.
+import os
 from dataclasses import dataclass
 from typing import Any, Callable, Literal, Optional
 
@@ -25,6 +26,28 @@ class ApproximateResult:
 class SegmentResult:
     patches: np.ndarray
     report: dict[str, Any]
+
+
+@dataclass(frozen=True)
+class Mesh:
+    V: np.ndarray
+    F: np.ndarray
+    patches: Optional[np.ndarray] = None
+    fixed: Optional[np.ndarray] = None
+    patch_names: dict[int, str] = ...
+    notes: list[str] = ...
+
+
+def read(path: str | os.PathLike[str]) -> Mesh: ...
+
+
+def write(
+    path: str | os.PathLike[str],
+    V: npt.ArrayLike,
+    F: npt.ArrayLike,
+    patches: Optional[npt.ArrayLike] = None,
+    quality: Optional[npt.ArrayLike] = None,
+) -> None: ...
 
 
 def approximate(

@@ -1,8 +1,9 @@
-// quasidev._engine: the engine for the quasidev Python package (python/quasidev/). Its
-// functions take arrays the package has already converted (C-contiguous float64 positions,
-// int64 indices and ids, bool flags) and the keyword parameters as numbers or strings; they
-// copy the inputs, release the GIL while the engine runs and return new arrays owned by Python.
-// qd::common::Error (the engine's refusals, bad parameters) becomes ValueError.
+// quasidev._engine: the engine and the mesh files for the quasidev Python package
+// (python/quasidev/). Its job functions take arrays the package has already converted
+// (C-contiguous float64 positions, int64 indices and ids, bool flags) and the keyword parameters
+// as numbers or strings; they copy the inputs, release the GIL while the engine runs and return
+// new arrays owned by Python. qd::common::Error (the engine's refusals, bad parameters, unreadable
+// files) becomes ValueError.
 #include <nanobind/nanobind.h>
 #include <nanobind/stl/map.h>
 #include <nanobind/stl/optional.h>
@@ -16,6 +17,7 @@
 #include "approximate_params.h"
 #include "approximate_problem.h"
 #include "approximate_report_json.h"
+#include "mesh_files.h"
 #include "numpy_arrays.h"
 #include "params_json.h"
 #include "python_progress.h"
@@ -135,4 +137,9 @@ NB_MODULE(_engine, m) {
         nb::arg("selected").none(), nb::arg("params"), nb::arg("progress").none(),
         "The segmentation of a checked mesh into nearly developable patches (see "
         "quasidev.segment).");
+  m.def("read", &python::read_mesh_file, nb::arg("path"),
+        "A PLY, OBJ or OFF file's arrays (see quasidev.read).");
+  m.def("write", &python::write_mesh_file, nb::arg("path"), nb::arg("V"), nb::arg("F"),
+        nb::arg("patches").none(), nb::arg("quality").none(),
+        "Checked arrays as binary PLY, written atomically (see quasidev.write).");
 }
