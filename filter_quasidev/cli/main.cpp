@@ -28,13 +28,13 @@
 #include "cut_marker.h"
 #include "flatten/flatten.h"
 #include "flatten_mesh.h"
-#include "flatten_report_json.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/output_mesh.h"
 #include "io/pattern_files.h"
 #include "io/result_document.h"
 #include "marker_dxf.h"
+#include "marker_report_json.h"
 #include "marker_svg.h"
 #include "mesh_problem.h"
 #include "options.h"
@@ -263,14 +263,16 @@ void flatten(const qd::cli::FlattenOptions& o) {
     }
   }
   if (!o.report.empty()) {
-    const qd::cli::FlattenReportContext context{o,
-                                                static_cast<int>(mesh.positions.size()),
-                                                static_cast<int>(mesh.triangles.size()),
-                                                !mesh.patch.empty(),
-                                                mesh.notes,
-                                                marker ? &*marker : nullptr,
-                                                log};
-    files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
+    const qd::frontend::FlattenReportContext context{o.input,
+                                                     o.output,
+                                                     o.settings,
+                                                     static_cast<int>(mesh.positions.size()),
+                                                     static_cast<int>(mesh.triangles.size()),
+                                                     !mesh.patch.empty(),
+                                                     mesh.notes,
+                                                     log};
+    files.emplace_back(o.report,
+                       qd::cli::flatten_report_json(result, context, marker ? &*marker : nullptr));
   }
   write_files(files);
   print_outcome(o, {}, log, mesh.notes);

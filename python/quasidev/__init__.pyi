@@ -29,6 +29,13 @@ class SegmentResult:
 
 
 @dataclass(frozen=True)
+class FlattenResult:
+    uv: np.ndarray
+    stretch: np.ndarray
+    report: dict[str, Any]
+
+
+@dataclass(frozen=True)
 class Mesh:
     V: np.ndarray
     F: np.ndarray
@@ -98,3 +105,21 @@ def segment(
     max_rounds: int = 10,
     threads: int = 0,
 ) -> SegmentResult: ...
+
+
+def flatten(
+    V: npt.ArrayLike,
+    F: npt.ArrayLike,
+    patches: Optional[npt.ArrayLike] = None,
+    progress: _Progress = None,
+    *,
+    arap_max_iter: int = 100,
+    arap_tolerance: float = 0.0001,
+    gap: float = 0.0,
+    notch_spacing: float = 0.0,
+    seam_allowance: float = 0.0,
+    grain_direction: str = '0,1,0',
+    symmetry_tolerance: float = 1.0,
+    solver: Literal['auto', 'cholmod', 'eigen-llt', 'eigen-ldlt'] = 'auto',
+    threads: int = 0,
+) -> FlattenResult: ...

@@ -50,8 +50,6 @@ def approximate(
     UserWarning. Raises ValueError with the engine's message for a bad parameter or a mesh the
     engine refuses, ValueError or TypeError for arrays of the wrong shape or dtype.
 
-    Keyword parameters (the engine's declaration; the same as the command's options)
-    ----------------------------------------------------------------------------------
     {parameters}
     """
     V64 = _arrays.vertices(V)

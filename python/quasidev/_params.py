@@ -17,7 +17,7 @@ DECLARATION: dict[str, list[dict]] = json.loads(_engine.declaration())
 def report_of(text: str) -> dict:
     """The engine's JSON report as a dict; its warnings issued as UserWarning."""
     report = json.loads(text)
-    for w in report["warnings"]:
+    for w in report.get("warnings", []):
         warnings.warn(w, UserWarning, stacklevel=3)
     return report
 
@@ -73,7 +73,23 @@ F : array_like, (m, 3)
     Triangles as vertex indices."""
 
 
+CONTRACT_DOC = """The inputs are copied and never modified; the GIL is released while the engine runs. Bad
+parameters and meshes the engine refuses raise ValueError with the engine's message."""
+
+PARAMETERS_HEAD = """Keyword parameters (the engine's declaration; the same as the command's options)
+----------------------------------------------------------------------------------
+"""
+
+
 def document(function, job: str) -> None:
-    """Fills function's docstring: the mesh arrays at {mesh}, job's parameters at {parameters}."""
-    function.__doc__ = function.__doc__.replace("{mesh}", MESH_DOC.replace("\n", "\n    ")).replace(
-        "{parameters}", parameters_doc(job).replace("\n", "\n    "))
+    """Fills function's docstring: the mesh arrays at {mesh}, what every job promises at
+    {contract}, job's parameters under their heading at {parameters}."""
+    parts = {
+        "{mesh}": MESH_DOC,
+        "{contract}": CONTRACT_DOC,
+        "{parameters}": PARAMETERS_HEAD + parameters_doc(job),
+    }
+    doc = function.__doc__
+    for mark, text in parts.items():
+        doc = doc.replace(mark, text.replace("\n", "\n    "))
+    function.__doc__ = doc

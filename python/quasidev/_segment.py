@@ -39,11 +39,8 @@ def segment(
     progress : callable, optional
         Called with the fraction done (0 to 1, never decreasing), with the GIL held.
 
-    The inputs are copied and never modified; the GIL is released while the engine runs. Bad
-    parameters and meshes the engine refuses raise ValueError with the engine's message.
+    {contract}
 
-    Keyword parameters (the engine's declaration; the same as the command's options)
-    ----------------------------------------------------------------------------------
     {parameters}
     """
     V64 = _arrays.vertices(V)

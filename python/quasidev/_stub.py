@@ -38,6 +38,13 @@ class SegmentResult:
 
 
 @dataclass(frozen=True)
+class FlattenResult:
+    uv: np.ndarray
+    stretch: np.ndarray
+    report: dict[str, Any]
+
+
+@dataclass(frozen=True)
 class Mesh:
     V: np.ndarray
     F: np.ndarray
@@ -64,8 +71,13 @@ _ARGUMENTS = {
                     "fixed: Optional[npt.ArrayLike] = None"],
     "segment": ["patches: Optional[npt.ArrayLike] = None",
                 "selected: Optional[npt.ArrayLike] = None"],
+    "flatten": ["patches: Optional[npt.ArrayLike] = None"],
 }
-_RESULTS = {"approximate": "ApproximateResult", "segment": "SegmentResult"}
+_RESULTS = {
+    "approximate": "ApproximateResult",
+    "segment": "SegmentResult",
+    "flatten": "FlattenResult",
+}
 
 
 def _function(job: str) -> str:

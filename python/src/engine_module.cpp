@@ -17,6 +17,9 @@
 #include "approximate_params.h"
 #include "approximate_problem.h"
 #include "approximate_report_json.h"
+#include "flatten/flatten.h"
+#include "flatten_params.h"
+#include "flatten_report_json.h"
 #include "mesh_files.h"
 #include "numpy_arrays.h"
 #include "params_json.h"
@@ -43,7 +46,8 @@ params::Json python_declaration(const std::vector<params::Param<S>>& declared) {
 // The parameters Python takes, per job, as JSON text.
 std::string declaration() {
   return params::Json{{"approximate", python_declaration(params::approximate_params())},
-                      {"segment", python_declaration(params::segment_params())}}
+                      {"segment", python_declaration(params::segment_params())},
+                      {"flatten", python_declaration(params::flatten_params())}}
       .dump();
 }
 
@@ -118,6 +122,35 @@ nb::dict run_segment(const python::VertexArray& V, const python::FaceArray& F,
   return out;
 }
 
+nb::dict run_flatten(const python::VertexArray& V, const python::FaceArray& F,
+                     std::optional<python::IdArray> patches, const python::Given& given,
+                     nb::object progress) {
+  const params::FlattenSettings settings = python::settings_from(params::flatten_params(), given);
+  flatten::FlattenProblem problem;
+  problem.V = python::positions_of(V);
+  problem.F = python::triangles_of(F, V.shape(0));
+  if (patches) problem.patch = python::ids_of(*patches);
+  problem.params = settings.engine;
+  const flatten::FlattenResult result = python::run_without_gil(
+      std::move(progress),
+      [&problem](const common::Progress& p) { return flatten::flatten(problem, p); });
+  const std::string none;
+  const std::vector<std::string> notes;
+  const frontend::FlattenReportContext context{
+      none, none,  settings,  static_cast<int>(V.shape(0)), static_cast<int>(F.shape(0)),
+      true, notes, result.log};
+  const size_t m = static_cast<size_t>(result.uv.rows());
+  std::vector<double> uv(6 * m);
+  for (size_t f = 0; f < m; ++f)
+    for (size_t k = 0; k < 6; ++k)
+      uv[6 * f + k] = result.uv(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(k));
+  nb::dict out;
+  out["report"] = frontend::report_text(frontend::flatten_report(result, context));
+  out["uv"] = python::numpy_array(std::move(uv), {m, 3, 2});
+  out["stretch"] = python::numpy_array(result.stretch, {result.stretch.size()});
+  return out;
+}
+
 }  // namespace
 
 NB_MODULE(_engine, m) {
@@ -137,6 +170,9 @@ NB_MODULE(_engine, m) {
         nb::arg("selected").none(), nb::arg("params"), nb::arg("progress").none(),
         "The segmentation of a checked mesh into nearly developable patches (see "
         "quasidev.segment).");
+  m.def("flatten", &run_flatten, nb::arg("V"), nb::arg("F"), nb::arg("patches").none(),
+        nb::arg("params"), nb::arg("progress").none(),
+        "The flattening of a checked mesh's patches (see quasidev.flatten).");
   m.def("read", &python::read_mesh_file, nb::arg("path"),
         "A PLY, OBJ or OFF file's arrays (see quasidev.read).");
   m.def("write", &python::write_mesh_file, nb::arg("path"), nb::arg("V"), nb::arg("F"),

@@ -6,10 +6,12 @@
 namespace qd::python {
 
 bool in_python(const params::ParamInfo& p) {
-  // The command's file of fixed vertices and the output mesh's quality and colour: the
-  // `fixed` argument and the returned arrays take their place.
-  static const std::vector<std::string> file_only = {"constraints_file", "output_quality",
-                                                     "colorize"};
+  // The command's file of fixed vertices, the output mesh's quality and colour, and the pattern
+  // files' style, unit, paper and marker: the `fixed` argument and the returned arrays take
+  // their place.
+  static const std::vector<std::string> file_only = {
+      "constraints_file", "output_quality", "colorize", "dxf_style", "unit", "paper",
+      "marker_width"};
   return p.type != params::Type::SaveFile &&
          std::find(file_only.begin(), file_only.end(), p.name) == file_only.end();
 }

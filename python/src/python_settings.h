@@ -1,5 +1,5 @@
 // The Python module's parameters: which declared parameters a job takes from Python (all but
-// those about output files, which arrays replace), and a job's settings from the keyword
+// those about files, which arrays replace), and a job's settings from the keyword
 // arguments. Each value is checked against its declaration (type, range, choices) and a bad
 // one, or a name the job does not declare, throws qd::common::Error naming the parameter.
 #pragma once

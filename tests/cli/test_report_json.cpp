@@ -8,7 +8,8 @@
 
 #include "approximate_params.h"
 #include "approximate_report_json.h"
-#include "flatten_report_json.h"
+#include "marker_report_json.h"
+#include "options.h"
 
 namespace {
 
@@ -135,8 +136,8 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   marker.rows.unplaced = {"2"};
   marker.nested.length = 90;
   marker.nested_kept = false;
-  const Json j =
-      Json::parse(qd::cli::flatten_report_json(r, {o, 10, 4, true, notes, &marker, r.log}));
+  const Json j = Json::parse(qd::cli::flatten_report_json(
+      r, {o.input, o.output, o.settings, 10, 4, true, notes, r.log}, &marker));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
   EXPECT_EQ(keys, (std::vector<std::string>{"input", "output", "vertices", "faces", "has_patch_ids",
