@@ -6,6 +6,8 @@
 # the core (scripts/clang_tidy.sh), then runs the unit tests (ctest) and the integration tests
 # (pytest: the quasidev command, meshlabserver 2020.09, the MeshLab GUIs 2020.09 and 2025.07
 # (the latter in the sid chroot of scripts/setup_sid_chroot.sh) under Xvfb, pymeshlab 2025.07),
+# the quasidev Python package installed with `pip install .` into its own venv and tested there
+# (tests/python/run.sh),
 # and last the engine and command tests again under ASan + UBSan with 60 s of libFuzzer per fuzz
 # target (tests/cli/run_sanitizers.sh, in build-asan/, which later runs reuse).
 set -euo pipefail
@@ -17,5 +19,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DQD_WERROR=ON -DQD_BUILD_TESTS=O
 cmake --build build -j2
 bash scripts/clang_tidy.sh build
 (cd build && ctest --output-on-failure -j2)
-QD_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest -q -rs -p no:cacheprovider tests  # -rs: say why a test skipped
+QD_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest -q -rs -p no:cacheprovider tests \
+  --ignore=tests/python  # -rs: say why a test skipped; tests/python needs the package's venv
+QD_BUILD_DIR="$PWD/build" bash tests/python/run.sh "$PWD/build/python-venv"
 bash tests/cli/run_sanitizers.sh "$PWD/build-asan"

@@ -23,22 +23,22 @@
 
 #include "approximate/quasidev.h"
 #include "approximate_params.h"
+#include "approximate_report_json.h"
 #include "common/format_text.h"
 #include "cut_marker.h"
 #include "flatten/flatten.h"
 #include "flatten_mesh.h"
-#include "flatten_report_json.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/output_mesh.h"
 #include "io/pattern_files.h"
 #include "io/result_document.h"
 #include "marker_dxf.h"
+#include "marker_report_json.h"
 #include "marker_svg.h"
 #include "mesh_problem.h"
 #include "options.h"
 #include "printable_pdf.h"
-#include "report_json.h"
 #include "segment/segment.h"
 #include "segment_mesh.h"
 #include "segment_report_json.h"
@@ -175,13 +175,15 @@ void approximate(const qd::cli::ApproximateOptions& o) {
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(qd::io::approximated_document(mesh, result, o.settings))}};
   if (!o.report.empty()) {
-    const qd::cli::ReportContext context{o,
-                                         static_cast<int>(mesh.positions.size()),
-                                         static_cast<int>(mesh.triangles.size()),
-                                         !mesh.patch.empty(),
-                                         count_constrained(problem.constrained),
-                                         mesh.notes};
-    files.emplace_back(o.report, report_json(result, context));
+    const qd::frontend::ReportContext context{o.input,
+                                              o.output,
+                                              o.settings,
+                                              static_cast<int>(mesh.positions.size()),
+                                              static_cast<int>(mesh.triangles.size()),
+                                              !mesh.patch.empty(),
+                                              count_constrained(problem.constrained),
+                                              mesh.notes};
+    files.emplace_back(o.report, qd::frontend::report_json(result, context));
   }
   write_files(files);
   print_outcome(o, result.warnings, result.log, mesh.notes);
@@ -196,13 +198,15 @@ void segment(const qd::cli::SegmentOptions& o) {
   std::vector<std::pair<std::string, std::string>> files = {
       {o.output, ply_bytes(qd::io::segmented_document(mesh, result))}};
   if (!o.report.empty()) {
-    const qd::cli::SegmentReportContext context{o,
-                                                static_cast<int>(mesh.positions.size()),
-                                                static_cast<int>(mesh.triangles.size()),
-                                                !mesh.patch.empty(),
-                                                count_constrained(problem.selected),
-                                                mesh.notes};
-    files.emplace_back(o.report, segment_report_json(result, context));
+    const qd::frontend::SegmentReportContext context{o.input,
+                                                     o.output,
+                                                     o.settings,
+                                                     static_cast<int>(mesh.positions.size()),
+                                                     static_cast<int>(mesh.triangles.size()),
+                                                     !mesh.patch.empty(),
+                                                     count_constrained(problem.selected),
+                                                     mesh.notes};
+    files.emplace_back(o.report, qd::frontend::segment_report_json(result, context));
   }
   write_files(files);
   print_outcome(o, result.warnings, result.log, mesh.notes);
@@ -259,14 +263,16 @@ void flatten(const qd::cli::FlattenOptions& o) {
     }
   }
   if (!o.report.empty()) {
-    const qd::cli::FlattenReportContext context{o,
-                                                static_cast<int>(mesh.positions.size()),
-                                                static_cast<int>(mesh.triangles.size()),
-                                                !mesh.patch.empty(),
-                                                mesh.notes,
-                                                marker ? &*marker : nullptr,
-                                                log};
-    files.emplace_back(o.report, qd::cli::flatten_report_json(result, context));
+    const qd::frontend::FlattenReportContext context{o.input,
+                                                     o.output,
+                                                     o.settings,
+                                                     static_cast<int>(mesh.positions.size()),
+                                                     static_cast<int>(mesh.triangles.size()),
+                                                     !mesh.patch.empty(),
+                                                     mesh.notes,
+                                                     log};
+    files.emplace_back(o.report,
+                       qd::cli::flatten_report_json(result, context, marker ? &*marker : nullptr));
   }
   write_files(files);
   print_outcome(o, {}, log, mesh.notes);

@@ -7,8 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "approximate_params.h"
-#include "flatten_report_json.h"
-#include "report_json.h"
+#include "approximate_report_json.h"
+#include "marker_report_json.h"
+#include "options.h"
 
 namespace {
 
@@ -39,8 +40,8 @@ Json report(const qd::approximate::Result& r, const std::vector<std::string>& no
   o.input = "in\xff.ply";  // not UTF-8
   o.output = "out.ply";
   o.settings.patch_tolerance_ae[7] = 3.0;
-  const qd::cli::ReportContext context{o, 3, 1, true, 0, notes};
-  return Json::parse(qd::cli::report_json(r, context));
+  const qd::frontend::ReportContext context{o.input, o.output, o.settings, 3, 1, true, 0, notes};
+  return Json::parse(qd::frontend::report_json(r, context));
 }
 
 TEST(ReportJson, ReadsBackBitIdentical) {
@@ -135,8 +136,8 @@ TEST(FlattenReportJson, ReadsBackEveryPieceFigure) {
   marker.rows.unplaced = {"2"};
   marker.nested.length = 90;
   marker.nested_kept = false;
-  const Json j =
-      Json::parse(qd::cli::flatten_report_json(r, {o, 10, 4, true, notes, &marker, r.log}));
+  const Json j = Json::parse(qd::cli::flatten_report_json(
+      r, {o.input, o.output, o.settings, 10, 4, true, notes, r.log}, &marker));
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
   EXPECT_EQ(keys, (std::vector<std::string>{"input", "output", "vertices", "faces", "has_patch_ids",

@@ -5,7 +5,7 @@
 #include "params_json.h"
 #include "report_text.h"
 
-namespace qd::cli {
+namespace qd::frontend {
 
 namespace {
 
@@ -56,49 +56,30 @@ Json pattern_piece(const flatten::PatternPiece& p, const flatten::PieceGroup& gr
           {"difference", group.difference}};
 }
 
-Json marker_json(const marker::Marker& m) {
-  return {{"width", m.width},
-          {"length", m.length},
-          {"efficiency", m.efficiency},
-          {"placed", m.placements.size()},
-          {"unplaced", m.unplaced}};
-}
-
-// The kept marker's figures, which placement it is, and both placements' figures.
-Json marker_json(const marker::MarkerChoice& c) {
-  Json j = marker_json(c.kept());
-  j["method"] = c.nested_kept ? "nested" : "rows";
-  j["nested"] = marker_json(c.nested);
-  j["rows"] = marker_json(c.rows);
-  return j;
-}
-
 }  // namespace
 
-std::string flatten_report_json(const flatten::FlattenResult& result,
-                                const FlattenReportContext& c) {
+Json flatten_report(const flatten::FlattenResult& result, const FlattenReportContext& c) {
   Json pieces = Json::array();
   for (const flatten::PieceReport& p : result.pieces) pieces.push_back(piece(p));
   Json pattern = Json::array();
   for (size_t i = 0; i < result.pattern.pieces.size(); ++i)
     pattern.push_back(pattern_piece(result.pattern.pieces[i], result.groups[i], result.pieces));
-  const Json parameters = params::values_json(params::flatten_params(), c.options.settings);
-  Json report = {{"input", c.options.input},
-                 {"output", c.options.output},
-                 {"vertices", c.vertices},
-                 {"faces", c.faces},
-                 {"has_patch_ids", c.has_patch_ids},
-                 {"parameters", parameters},
-                 {"pieces", pieces},
-                 {"pattern", pattern},
-                 {"max_distortion", result.max_distortion},
-                 {"flattenable_pieces", result.flattenable_pieces},
-                 {"sheet", box(result.pattern.bounds)},
-                 {"time_ms", result.time_ms},
-                 {"notes", c.notes},
-                 {"log", c.log}};
-  if (c.marker) report["marker"] = marker_json(*c.marker);
-  return report_text(report);
+  const Json parameters = params::values_json(params::flatten_params(), c.settings);
+  const Json report = {{"input", c.input},
+                       {"output", c.output},
+                       {"vertices", c.vertices},
+                       {"faces", c.faces},
+                       {"has_patch_ids", c.has_patch_ids},
+                       {"parameters", parameters},
+                       {"pieces", pieces},
+                       {"pattern", pattern},
+                       {"max_distortion", result.max_distortion},
+                       {"flattenable_pieces", result.flattenable_pieces},
+                       {"sheet", box(result.pattern.bounds)},
+                       {"time_ms", result.time_ms},
+                       {"notes", c.notes},
+                       {"log", c.log}};
+  return report;
 }
 
-}  // namespace qd::cli
+}  // namespace qd::frontend

@@ -7,7 +7,7 @@
 #include "segment/segment_log.h"
 #include "segment_params.h"
 
-namespace qd::cli {
+namespace qd::frontend {
 
 namespace {
 
@@ -54,10 +54,10 @@ Json patch(int id, const segment::SegmentPatch& p, const segment::SegmentParams&
 std::string segment_report_json(const segment::SegmentResult& r, const SegmentReportContext& c) {
   Json patches = Json::array();
   for (std::size_t id = 0; id < r.patches.size(); ++id)
-    patches.push_back(patch(static_cast<int>(id), r.patches[id], c.options.settings.engine));
-  const Json parameters = params::values_json(params::segment_params(), c.options.settings);
-  const Json report = {{"input", c.options.input},
-                       {"output", c.options.output},
+    patches.push_back(patch(static_cast<int>(id), r.patches[id], c.settings.engine));
+  const Json parameters = params::values_json(params::segment_params(), c.settings);
+  const Json report = {{"input", c.input},
+                       {"output", c.output},
                        {"vertices", c.vertices},
                        {"faces", c.faces},
                        {"has_patch_ids", c.has_patch_ids},
@@ -74,4 +74,4 @@ std::string segment_report_json(const segment::SegmentResult& r, const SegmentRe
   return report.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
-}  // namespace qd::cli
+}  // namespace qd::frontend

@@ -1,11 +1,11 @@
-#include "report_json.h"
+#include "approximate_report_json.h"
 
 #include "approximate/report_text.h"
 #include "approximate_params.h"
 #include "params_json.h"
 #include "report_text.h"
 
-namespace qd::cli {
+namespace qd::frontend {
 
 namespace {
 
@@ -82,9 +82,9 @@ std::string report_json(const approximate::Result& result, const ReportContext& 
   Json patches = Json::array();
   for (const approximate::PatchReport& p : result.patches)
     patches.push_back(patch(p, result.average_edge));
-  const Json parameters = params::values_json(params::approximate_params(), c.options.settings);
-  const Json report = {{"input", c.options.input},
-                       {"output", c.options.output},
+  const Json parameters = params::values_json(params::approximate_params(), c.settings);
+  const Json report = {{"input", c.input},
+                       {"output", c.output},
                        {"vertices", c.vertices},
                        {"faces", c.faces},
                        {"has_patch_ids", c.has_patch_ids},
@@ -105,4 +105,4 @@ std::string report_json(const approximate::Result& result, const ReportContext& 
   return report_text(report);
 }
 
-}  // namespace qd::cli
+}  // namespace qd::frontend

@@ -1,0 +1,36 @@
+"""quasidev: quasi-developable mesh approximation (Zeng et al. 2012) on numpy arrays, on the
+engine of the `quasidev` command and the MeshLab filters.
+
+    import quasidev
+    result = quasidev.approximate(V, F, keep_boundary=True)
+    result.positions, result.k_after, result.report["abd_reduction"]
+    quasidev.segment(V, F).patches      # a patch id per face
+    quasidev.flatten(V, F, patches).uv  # (m, 3, 2) texture coordinates per corner
+    mesh = quasidev.read("in.ply"); quasidev.write("out.ply", mesh.V, mesh.F, mesh.patches)
+"""
+
+from importlib.metadata import PackageNotFoundError, version
+
+from ._approximate import ApproximateResult, approximate
+from ._files import Mesh, read, write
+from ._flatten import FlattenResult, flatten
+from ._params import DECLARATION
+from ._segment import SegmentResult, segment
+
+try:
+    __version__ = version("quasidev")
+except PackageNotFoundError:  # not installed
+    __version__ = "unknown"
+
+__all__ = [
+    "ApproximateResult",
+    "DECLARATION",
+    "FlattenResult",
+    "Mesh",
+    "SegmentResult",
+    "approximate",
+    "flatten",
+    "read",
+    "segment",
+    "write",
+]
