@@ -52,9 +52,7 @@ def approximate(
 
     {parameters}
     """
-    V64 = _arrays.vertices(V)
-    F64 = _arrays.faces(F, len(V64))
-    ids = _arrays.patch_ids(patches, len(F64))
+    V64, F64, ids = _arrays.mesh(V, F, patches)
     mask = _arrays.mask("fixed", fixed, len(V64), "vertex")
     out = _engine.approximate(V64, F64, ids, mask, _params.engine_values(params), progress)
     report = _params.report_of(out["report"])

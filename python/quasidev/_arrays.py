@@ -56,6 +56,13 @@ def patch_ids(patches, m: int) -> np.ndarray | None:
     return _whole("patches", arr)
 
 
+def mesh(V, F, patches) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
+    """V, F and the patch ids as the engine takes them (vertices, faces, patch_ids above)."""
+    V64 = vertices(V)
+    F64 = faces(F, len(V64))
+    return V64, F64, patch_ids(patches, len(F64))
+
+
 def mask(name: str, value, count: int, items: str) -> np.ndarray | None:
     """value (a (count,) bool mask or an array of indices of items) as a new (count,) bool mask,
     or None."""

@@ -46,9 +46,7 @@ def write(
     """Write V (n, 3) and F (m, 3) as binary PLY with the command's writer: the patch ids (m,)
     as face quality, quality (n,) as vertex quality. The file is written atomically: it is
     replaced only once complete. The arrays are not modified."""
-    V64 = _arrays.vertices(V)
-    F64 = _arrays.faces(F, len(V64))
-    ids = _arrays.patch_ids(patches, len(F64))
+    V64, F64, ids = _arrays.mesh(V, F, patches)
     values = None
     if quality is not None:
         values = np.array(quality, dtype=np.float64, order="C", copy=True)

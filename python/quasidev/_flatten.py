@@ -41,9 +41,7 @@ def flatten(
 
     {parameters}
     """
-    V64 = _arrays.vertices(V)
-    F64 = _arrays.faces(F, len(V64))
-    ids = _arrays.patch_ids(patches, len(F64))
+    V64, F64, ids = _arrays.mesh(V, F, patches)
     out = _engine.flatten(V64, F64, ids, _params.engine_values(params), progress)
     return FlattenResult(
         uv=out["uv"], stretch=out["stretch"], report=_params.report_of(out["report"])

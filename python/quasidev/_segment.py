@@ -43,9 +43,7 @@ def segment(
 
     {parameters}
     """
-    V64 = _arrays.vertices(V)
-    F64 = _arrays.faces(F, len(V64))
-    ids = _arrays.patch_ids(patches, len(F64))
+    V64, F64, ids = _arrays.mesh(V, F, patches)
     chosen = _arrays.mask("selected", selected, len(F64), "face")
     out = _engine.segment(V64, F64, ids, chosen, _params.engine_values(params), progress)
     return SegmentResult(
