@@ -44,7 +44,7 @@ constexpr double kMinWeightScale = 1.0 / 9;
 // New target normal per group face for the current positions (re-projection or re-fit).
 using Retarget = std::function<std::vector<Vec3>(const Positions& current)>;
 
-// Why a run stopped.
+// What a run gives: the best iterate, its history, and why it stopped.
 struct DeformOutcome {
   Positions V;                           // the best iterate's local positions
   std::vector<IterationReport> history;  // accepted iterations up to the best one
