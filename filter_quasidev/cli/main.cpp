@@ -17,6 +17,7 @@
 #include <new>
 #include <optional>
 #include <sstream>
+#include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -39,6 +40,7 @@
 #include "mesh_problem.h"
 #include "options.h"
 #include "printable_pdf.h"
+#include "python_batch.h"
 #include "segment/segment.h"
 #include "segment_mesh.h"
 #include "segment_report_json.h"
@@ -291,6 +293,7 @@ int fail(const std::string& reason, int status) {
 
 int main(int argc, char** argv) {
   std::signal(SIGPIPE, SIG_IGN);  // a closed stdout must not kill the command by a signal
+  if (argc > 1 && std::string(argv[1]) == "batch") return qd::cli::run_python_batch(argc, argv);
   try {
     const qd::cli::CommandLine line =
         qd::cli::parse_command_line(std::vector<std::string>(argv + 1, argv + argc));

@@ -87,7 +87,9 @@ CommandLine parse_command_line(std::vector<std::string> args) {
       "Makes triangle mesh patches nearly developable: cuttable from flat sheet\n"
       "material without stretching; splits meshes into such patches and flattens\n"
       "them into a cutting pattern.\n"
-      "Without a subcommand, `quasidev INPUT OUTPUT [options]` runs `approximate`.\n",
+      "Without a subcommand, `quasidev INPUT OUTPUT [options]` runs `approximate`.\n"
+      "`quasidev batch INPUTS... -o OUT` runs them over many files (the Python package;\n"
+      "`quasidev batch --help`).\n",
       "quasidev");
   app.get_formatter()->column_width(25);
   app.footer(

@@ -7,11 +7,13 @@ engine of the `quasidev` command and the MeshLab filters.
     quasidev.segment(V, F).patches      # a patch id per face
     quasidev.flatten(V, F, patches).uv  # (m, 3, 2) texture coordinates per corner
     mesh = quasidev.read("in.ply"); quasidev.write("out.ply", mesh.V, mesh.F, mesh.patches)
+    quasidev.batch("garments/", "out/", steps=("segment", "approximate"))  # many files
 """
 
 from importlib.metadata import PackageNotFoundError, version
 
 from ._approximate import ApproximateResult, approximate
+from ._batch import BatchSummary, batch
 from ._files import Mesh, read, write
 from ._flatten import FlattenResult, flatten
 from ._params import DECLARATION
@@ -24,11 +26,13 @@ except PackageNotFoundError:  # not installed
 
 __all__ = [
     "ApproximateResult",
+    "BatchSummary",
     "DECLARATION",
     "FlattenResult",
     "Mesh",
     "SegmentResult",
     "approximate",
+    "batch",
     "flatten",
     "read",
     "segment",

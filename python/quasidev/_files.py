@@ -41,15 +41,26 @@ def read(path: str | os.PathLike) -> Mesh:
 
 
 def write(
-    path: str | os.PathLike, V: Any, F: Any, patches: Any = None, quality: Any = None
+    path: str | os.PathLike,
+    V: Any,
+    F: Any,
+    patches: Any = None,
+    quality: Any = None,
+    uv: Any = None,
 ) -> None:
     """Write V (n, 3) and F (m, 3) as binary PLY with the command's writer: the patch ids (m,)
-    as face quality, quality (n,) as vertex quality. The file is written atomically: it is
-    replaced only once complete. The arrays are not modified."""
+    as face quality, quality (n,) as vertex quality, uv (m, 3, 2) (quasidev.flatten's texture
+    coordinates per corner) as the face texcoord MeshLab reads. The file is written atomically:
+    it is replaced only once complete. The arrays are not modified."""
     V64, F64, ids = _arrays.mesh(V, F, patches)
     values = None
     if quality is not None:
         values = np.array(quality, dtype=np.float64, order="C", copy=True)
         if values.shape != (len(V64),):
             raise ValueError(f"quality must have shape ({len(V64)},), got {values.shape}")
-    _engine.write(os.fspath(path), V64, F64, ids, values)
+    corners = None
+    if uv is not None:
+        corners = np.array(uv, dtype=np.float64, order="C", copy=True)
+        if corners.shape != (len(F64), 3, 2):
+            raise ValueError(f"uv must have shape ({len(F64)}, 3, 2), got {corners.shape}")
+    _engine.write(os.fspath(path), V64, F64, ids, values, corners)

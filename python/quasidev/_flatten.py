@@ -18,6 +18,8 @@ class FlattenResult:
     uv: np.ndarray  #: (m, 3, 2) float64 texture coordinates (u, v) of each face's three corners
     stretch: np.ndarray  #: (m,) float64 signed stretch per face
     report: dict  #: the figures of `quasidev flatten --report` (without a marker)
+    svg: str  #: the pattern as `quasidev flatten --svg` writes it
+    dxf: str  #: the pattern as `quasidev flatten --dxf` writes it
 
 
 def flatten(
@@ -44,7 +46,11 @@ def flatten(
     V64, F64, ids = _arrays.mesh(V, F, patches)
     out = _engine.flatten(V64, F64, ids, _params.engine_values(params), progress)
     return FlattenResult(
-        uv=out["uv"], stretch=out["stretch"], report=_params.report_of(out["report"])
+        uv=out["uv"],
+        stretch=out["stretch"],
+        report=_params.report_of(out["report"]),
+        svg=out["svg"],
+        dxf=out["dxf"],
     )
 
 

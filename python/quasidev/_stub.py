@@ -10,7 +10,8 @@ from ._params import DECLARATION, python_type
 _HEADER = '''# Made by `python -m quasidev._stub` from the engine's parameter declaration: do not edit.
 import os
 from dataclasses import dataclass
-from typing import Any, Callable, Literal, Optional
+from pathlib import Path
+from typing import Any, Callable, Iterable, Literal, Optional
 
 import numpy as np
 import numpy.typing as npt
@@ -42,6 +43,8 @@ class FlattenResult:
     uv: np.ndarray
     stretch: np.ndarray
     report: dict[str, Any]
+    svg: str
+    dxf: str
 
 
 @dataclass(frozen=True)
@@ -63,7 +66,29 @@ def write(
     F: npt.ArrayLike,
     patches: Optional[npt.ArrayLike] = None,
     quality: Optional[npt.ArrayLike] = None,
+    uv: Optional[npt.ArrayLike] = None,
 ) -> None: ...
+
+
+@dataclass(frozen=True)
+class BatchSummary:
+    records: list[dict[str, Any]]
+    counts: dict[str, int]
+    seconds: float
+    summary_csv: Path
+    summary_json: Path
+
+
+def batch(
+    inputs: str | os.PathLike[str] | Iterable[str | os.PathLike[str]],
+    out_dir: str | os.PathLike[str],
+    steps: Iterable[Literal["segment", "approximate", "flatten"]] = ("approximate",),
+    params: Optional[dict[str, Any]] = None,
+    *,
+    workers: Optional[int] = None,
+    client: Any = None,
+    progress: bool = True,
+) -> BatchSummary: ...
 '''
 
 _ARGUMENTS = {

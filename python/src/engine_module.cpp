@@ -20,6 +20,7 @@
 #include "flatten/flatten.h"
 #include "flatten_params.h"
 #include "flatten_report_json.h"
+#include "io/pattern_files.h"
 #include "mesh_files.h"
 #include "numpy_arrays.h"
 #include "params_json.h"
@@ -148,6 +149,11 @@ nb::dict run_flatten(const python::VertexArray& V, const python::FaceArray& F,
   out["report"] = frontend::report_text(frontend::flatten_report(result, context));
   out["uv"] = python::numpy_array(std::move(uv), {m, 3, 2});
   out["stretch"] = python::numpy_array(result.stretch, {result.stretch.size()});
+  params::FlattenSettings files = settings;  // the command's SVG and DXF writers, into text
+  files.svg_file = "svg";
+  files.dxf_file = "dxf";
+  for (const auto& [kind, text] : io::pattern_files(files, result.pattern))
+    out[kind.c_str()] = text;
   return out;
 }
 
@@ -176,6 +182,6 @@ NB_MODULE(_engine, m) {
   m.def("read", &python::read_mesh_file, nb::arg("path"),
         "A PLY, OBJ or OFF file's arrays (see quasidev.read).");
   m.def("write", &python::write_mesh_file, nb::arg("path"), nb::arg("V"), nb::arg("F"),
-        nb::arg("patches").none(), nb::arg("quality").none(),
+        nb::arg("patches").none(), nb::arg("quality").none(), nb::arg("uv").none(),
         "Checked arrays as binary PLY, written atomically (see quasidev.write).");
 }

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/error.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
 #include "io/output_mesh.h"
@@ -43,7 +44,8 @@ nb::dict read_mesh_file(const std::string& path) {
 }
 
 void write_mesh_file(const std::string& path, const VertexArray& V, const FaceArray& F,
-                     std::optional<IdArray> patches, std::optional<ValueArray> quality) {
+                     std::optional<IdArray> patches, std::optional<ValueArray> quality,
+                     std::optional<CornerUVArray> uv) {
   io::MeshDocument doc;
   const size_t n = V.shape(0), m = F.shape(0);
   doc.positions.resize(n);
@@ -53,6 +55,15 @@ void write_mesh_file(const std::string& path, const VertexArray& V, const FaceAr
   for (size_t f = 0; f < m; ++f) {
     const auto r = static_cast<Eigen::Index>(f);
     doc.triangles[f] = {triangles(r, 0), triangles(r, 1), triangles(r, 2)};
+  }
+  if (uv) {
+    if (uv->shape(0) != m) throw common::Error("uv must hold one row per face");
+    flatten::WedgeUV corners(static_cast<Eigen::Index>(m), 6);
+    for (size_t f = 0; f < m; ++f)
+      for (size_t k = 0; k < 6; ++k)
+        corners(static_cast<Eigen::Index>(f), static_cast<Eigen::Index>(k)) =
+            (*uv)(f, k / 2, k % 2);
+    io::set_texcoords(doc, corners);
   }
   if (quality)
     io::set_quality(doc, io::Element::Vertex,

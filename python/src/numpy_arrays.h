@@ -20,6 +20,7 @@ using FaceArray = nb::ndarray<const std::int64_t, nb::shape<-1, 3>, nb::c_contig
 using IdArray = nb::ndarray<const std::int64_t, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using FlagArray = nb::ndarray<const bool, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
 using ValueArray = nb::ndarray<const double, nb::ndim<1>, nb::c_contig, nb::device::cpu>;
+using CornerUVArray = nb::ndarray<const double, nb::shape<-1, 3, 2>, nb::c_contig, nb::device::cpu>;
 
 common::Positions positions_of(const VertexArray& V);
 // F's rows; qd::common::Error when an index is not a vertex of V.
