@@ -157,6 +157,6 @@ if [ "$(id -u)" -eq 0 ]; then
 else
   command -v sudo >/dev/null || die "not root and no sudo: the chroot needs root"
   sudo env QD_WHEEL_CHROOT="$CHROOT" QD_DEBIAN_MIRROR="$MIRROR" \
-    bash "$0" --chroot-stage "${wheel[0]}"
+    bash "$ROOT/scripts/test_wheel.sh" --chroot-stage "${wheel[0]}"
 fi
 say "passed in $(( $(date +%s) - start )) s"
