@@ -98,8 +98,10 @@ make_chroot() {
 chroot_stage() {
   local wheel="$1"
   make_chroot
-  local bad
-  bad=$(in_chroot "$CHROOT" -- dpkg-query -W -f '${Package}\n' | grep -E "^($FORBIDDEN)" || true)
+  local installed bad
+  installed=$(in_chroot "$CHROOT" -- dpkg-query -W -f '${Package}\n') || die "dpkg-query in the chroot"
+  grep -qx python3 <<<"$installed" || die "dpkg in the chroot lists no python3"
+  bad=$(grep -E "^($FORBIDDEN)" <<<"$installed" || true)
   [ -z "$bad" ] || die "the chroot has packages it must not have: $bad"
   say "dpkg in the chroot: no package matching $FORBIDDEN"
   local stage="$OUT/chroot-input"
