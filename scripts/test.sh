@@ -7,7 +7,8 @@
 # (pytest: the quasidev command, meshlabserver 2020.09, the MeshLab GUIs 2020.09 and 2025.07
 # (the latter in the sid chroot of scripts/setup_sid_chroot.sh) under Xvfb, pymeshlab 2025.07),
 # the quasidev Python package installed with `pip install .` into its own venv and tested there
-# (tests/python/run.sh),
+# (tests/python/run.sh), its wheel repaired by auditwheel and run in a Debian 12 chroot without
+# SuiteSparse or OpenBLAS (scripts/test_wheel.sh),
 # and last the engine and command tests again under ASan + UBSan with 60 s of libFuzzer per fuzz
 # target (tests/cli/run_sanitizers.sh, in build-asan/, which later runs reuse).
 set -euo pipefail
@@ -22,4 +23,5 @@ bash scripts/clang_tidy.sh build
 QD_BUILD_DIR="$PWD/build" .venv/bin/python -m pytest -q -rs -p no:cacheprovider tests \
   --ignore=tests/python  # -rs: say why a test skipped; tests/python needs the package's venv
 QD_BUILD_DIR="$PWD/build" bash tests/python/run.sh "$PWD/build/python-venv"
+QD_WHEEL_VENV="$PWD/build/python-venv" bash scripts/test_wheel.sh
 bash tests/cli/run_sanitizers.sh "$PWD/build-asan"
