@@ -23,7 +23,8 @@
 // They are kept apart instead, one multiplier y per row, in the quasi-definite system
 //   K [x; y] = [[M, Cᵀ], [C, −I]] [x; y] = [b; d],  so that (M + CᵀC) x = b + Cᵀd,
 // the same least-squares solution, numbered in M's vertex order and factorised by LDLᵀ
-// (quasi_definite_factor.h).
+// (quasi_definite_factor.h). The order, the patterns and K's analysis are the layout's
+// (system_layout.h), which the systems of one group may share.
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -35,6 +36,7 @@
 #include "approximate/group_mesh.h"
 #include "approximate/result.h"
 #include "approximate/solve_strategy.h"
+#include "approximate/system_layout.h"
 #include "common/block_pattern.h"
 
 namespace qd::approximate {
@@ -46,6 +48,8 @@ class DeformationSystem {
   // it gets an angle-defect row (angle_defect.h; empty = none).
   DeformationSystem(const GroupMesh& group, const Params& params, double ae,
                     const std::vector<char>& defect_rows = {});
+  // On a layout of the group's (SystemLayouts::get), for the same params.
+  DeformationSystem(const GroupMesh& group, const Params& params, SystemLayout layout);
 
   // Assembles M (Eq. 17) for one target normal per group face (a zero vector: no
   // developability rows of Eq. 13 for that face) and the angle-defect rows linearised at the
@@ -58,7 +62,7 @@ class DeformationSystem {
   bool has_defect_rows() const { return !defects_.empty(); }
   // The angle-defect rows linearised at X (angles: vertex_angles of X), for set_rows.
   DefectLinearisation linearise_defects_at(const Positions& X, const VertexAngles& angles) const {
-    return linearise_defects(defects_, g_, incident_, X, angles);
+    return linearise_defects(defects_, g_, m_.incident, X, angles);
   }
 
   // Right-hand side Aᵀc − M_fc·x_c + anchor terms for reference positions `ref` (the defect
@@ -72,12 +76,10 @@ class DeformationSystem {
   // coordinate d of block k.
   const Eigen::SparseMatrix<double>& matrix() const { return M_; }
   // Unknown block of each local vertex (-1 when fixed).
-  const std::vector<int>& unknown() const { return unknown_; }
+  const std::vector<int>& unknown() const { return m_.unknown; }
   const StageTimes& times() const { return times_; }
 
  private:
-  void build_pattern(const std::vector<std::pair<int, int>>& edges);
-  void build_augmented_pattern();
   void set_augmented_values();
   Eigen::VectorXd defect_rhs(const Positions& ref) const;
   Eigen::VectorXd solve_augmented(const Eigen::VectorXd& b, const Positions& ref);
@@ -86,23 +88,14 @@ class DeformationSystem {
 
   const GroupMesh& g_;
   double w_;
-  VertexFaces incident_;           // faces of each local vertex, ascending
-  std::vector<int> block_vertex_;  // local vertex of each unknown block
-  std::vector<double> anchor2_;    // α²·w(v)² per unknown block
-  std::vector<int> unknown_;
-  int blocks_ = 0;
-  BlockPattern pattern_;
-  std::vector<int> face_slot_;  // per face and corner pair (0,1),(0,2),(1,2): off-diag block
+  SystemLayout layout_;
+  const MatrixLayout& m_;  // *layout_.matrix
   std::vector<Vec3> targets_;
-  DefectStars defects_;
+  DefectStars defects_;  // the layout's, with the weights scaled
   DefectLinearisation linearised_;
-  std::vector<int> entry_row_;  // row of each defect star entry
   Eigen::SparseMatrix<double> M_;
   int threads_;
   Eigen::SparseMatrix<double> K_;  // lower triangle of [[M, Cᵀ], [C, −I]] (defect rows C)
-  std::vector<int> place_;         // K's unknown of each unknown of M
-  std::vector<int> multiplier_;    // K's unknown of each defect row's multiplier
-  std::vector<int> slot_;          // place in K's values of each source (build_augmented_pattern)
   StageTimes times_;
   std::optional<SolveStrategy> strategy_;  // chosen once the system's size is known
 };

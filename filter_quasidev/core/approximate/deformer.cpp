@@ -87,7 +87,8 @@ int flipped_faces(const Triangles& F, const Positions& V0, const Positions& V) {
 }
 
 Deformation::Deformation(const GroupMesh& group, std::vector<Vec3> targets, Retarget retarget,
-                         const std::vector<char>& defect_rows, const Params& params, double ae)
+                         SystemLayouts& layouts, const std::vector<char>& defect_rows,
+                         const Params& params)
     : g_(group),
       params_(params),
       targets_(std::move(targets)),
@@ -96,8 +97,8 @@ Deformation::Deformation(const GroupMesh& group, std::vector<Vec3> targets, Reta
       vertices_(all_indices(group.solve_vertices)),
       V_(group.V0) {
   {
-    StageTimer timer(out_.times.setup);  // MLS weights, ordering, sparsity pattern
-    system_ = std::make_unique<DeformationSystem>(g_, params_, ae, defect_rows);
+    StageTimer timer(out_.times.setup);  // the layout's parts not yet computed
+    system_ = std::make_unique<DeformationSystem>(g_, params_, layouts.get(defect_rows));
   }
   {
     StageTimer timer(out_.times.metrics);
@@ -261,7 +262,8 @@ DeformOutcome Deformation::finish() {
 DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
                      const Retarget& retarget, const std::vector<char>& defect_rows,
                      const Params& params, double ae, const std::function<void(double)>& progress) {
-  Deformation run(group, targets, retarget, defect_rows, params, ae);
+  SystemLayouts layouts(group, params, ae);
+  Deformation run(group, targets, retarget, layouts, defect_rows, params);
   while (run.step())
     if (progress) progress(static_cast<double>(run.iterations()) / params.max_iter);
   return run.finish();

@@ -31,6 +31,7 @@
 #include "approximate/group_mesh.h"
 #include "approximate/params.h"
 #include "approximate/result.h"
+#include "approximate/system_layout.h"
 #include "common/progress.h"
 
 namespace qd::approximate {
@@ -61,9 +62,10 @@ class Deformation {
  public:
   // targets: initial target per group face (zero: no Eq. 13 developability rows for it);
   // retarget: used between iterations unless params.targets == TargetMode::Fixed;
-  // defect_rows: per local vertex, 1 = an angle-defect row (angle_defect.h; empty = none).
+  // layouts: the group's (for the same params), which the runs on it share; defect_rows: per
+  // local vertex, 1 = an angle-defect row (angle_defect.h; empty = none).
   Deformation(const GroupMesh& group, std::vector<Vec3> targets, Retarget retarget,
-              const std::vector<char>& defect_rows, const Params& params, double ae);
+              SystemLayouts& layouts, const std::vector<char>& defect_rows, const Params& params);
   ~Deformation();
   Deformation(Deformation&&) noexcept;
 

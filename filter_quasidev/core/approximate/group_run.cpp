@@ -58,10 +58,11 @@ void race(GroupRun& run, const std::vector<Term>& candidates, const Params& para
   // Each candidate's fits outlive its run: the re-projection keeps a reference to them.
   std::map<Term, std::vector<PatchFit>> fits_of;
   for (Term t : candidates) fits_of[t] = with_term(run.fits, t);
+  SystemLayouts layouts(g, params, ae);  // the candidates share the order and the analyses
   const auto start = [&](Term t) {
     const std::vector<PatchFit>& fits = fits_of.at(t);
     return Deformation(g, group_targets(g, fits), make_retarget(g, fits, params.targets, threads),
-                       group_defect_rows(g, fits), params, ae);
+                       layouts, group_defect_rows(g, fits), params);
   };
   RaceOutcome raced =
       race_terms(candidates, start, params.max_iter, params.stop_abd / 100, progress);

@@ -7,7 +7,8 @@
 namespace qd::approximate {
 
 SolveStrategy::SolveStrategy(const Params& params, long unknowns, bool quasi_definite,
-                             const BlockPattern& pattern, StageTimes& times)
+                             const BlockPattern& pattern, StageTimes& times,
+                             std::shared_ptr<SharedAnalysis> analysis)
     : solver_(params.solver),
       threads_(params.threads),
       iterative_(!quasi_definite &&
@@ -16,7 +17,7 @@ SolveStrategy::SolveStrategy(const Params& params, long unknowns, bool quasi_def
       pattern_(pattern),
       times_(times),
       positive_(params.solver),
-      quasi_(params.solver) {}
+      quasi_(params.solver, std::move(analysis)) {}
 
 int SolveStrategy::factorizations() const {
   return positive_.factorizations() + quasi_.factorizations() + scalar_factorizations_;

@@ -36,9 +36,11 @@ constexpr int kCgIterations = 40;
 class SolveStrategy {
  public:
   // unknowns: M's size; quasi_definite: the group solves K (angle-defect rows); pattern: M's
-  // block pattern, for the preconditioner; times: where the stages' times are added.
+  // block pattern, for the preconditioner; times: where the stages' times are added;
+  // analysis: where the systems with K's pattern keep its analysis (null: not shared).
   SolveStrategy(const Params& params, long unknowns, bool quasi_definite,
-                const BlockPattern& pattern, StageTimes& times);
+                const BlockPattern& pattern, StageTimes& times,
+                std::shared_ptr<SharedAnalysis> analysis = nullptr);
 
   // M's (and K's) values changed: the next direct solve factorises again.
   void values_changed() { factor_current_ = false; }

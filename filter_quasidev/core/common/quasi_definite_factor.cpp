@@ -10,9 +10,14 @@ namespace {
 
 #ifdef QD_WITH_CHOLMOD
 struct SupernodalBackend : SparseFactor::Backend {
+  std::shared_ptr<SharedAnalysis> shared;  // never null
   std::unique_ptr<QuasiDefiniteLdlt> ldlt;
+  explicit SupernodalBackend(std::shared_ptr<SharedAnalysis> s) : shared(std::move(s)) {}
   bool analyse_and_factorize(const Eigen::SparseMatrix<double>& lower, bool analyse) override {
-    if (analyse) ldlt = std::make_unique<QuasiDefiniteLdlt>(lower);
+    if (analyse) {
+      if (!shared->supernodal) shared->supernodal = QuasiDefiniteLdlt::analyse(lower);
+      ldlt = std::make_unique<QuasiDefiniteLdlt>(shared->supernodal);
+    }
     return ldlt->factorize(lower);
   }
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override {
@@ -42,7 +47,8 @@ SparseFactor::Choice QuasiDefiniteFactor::choose(long) const {
 std::unique_ptr<SparseFactor::Backend> QuasiDefiniteFactor::make(FactorBackend kind) const {
   if (kind == FactorBackend::EigenLdlt) return std::make_unique<EigenLdlt>();
 #ifdef QD_WITH_CHOLMOD
-  return std::make_unique<SupernodalBackend>();
+  return std::make_unique<SupernodalBackend>(shared_ ? shared_
+                                                     : std::make_shared<SharedAnalysis>());
 #else
   throw_no_cholmod();
 #endif

@@ -3,21 +3,35 @@
 // (deformation_system.h). LLᵀ cannot factorise K. SolverKind::Auto and Cholmod take the
 // supernodal LDLᵀ on CHOLMOD's analysis (quasi_definite_ldlt.h); EigenLDLT, and Auto in a build
 // without CHOLMOD, Eigen's SimplicialLDLT. EigenLLT is substituted by SimplicialLDLT, and the
-// factor says so (substituted()).
+// factor says so (substituted()). Factors of one pattern may share the supernodal analysis.
 #pragma once
+
+#include <memory>
 
 #include "common/sparse_factor.h"
 
 namespace qd::common {
 
+struct SupernodalAnalysis;  // quasi_definite_ldlt.h
+
+// The symbolic analysis kept for the factors of one pattern: the first supernodal factor to
+// factorise fills it, the others take it.
+struct SharedAnalysis {
+  std::shared_ptr<const SupernodalAnalysis> supernodal;
+};
+
 class QuasiDefiniteFactor : public SparseFactor {
  public:
-  explicit QuasiDefiniteFactor(SolverKind kind) : SparseFactor(kind) {}
+  // shared: where the factors of this matrix's pattern keep its analysis (null: none shared).
+  explicit QuasiDefiniteFactor(SolverKind kind, std::shared_ptr<SharedAnalysis> shared = nullptr)
+      : SparseFactor(kind), shared_(std::move(shared)) {}
 
  private:
   Choice choose(long unknowns) const override;
   std::unique_ptr<Backend> make(FactorBackend kind) const override;
   const char* failure() const override { return "has a vanishing pivot"; }
+
+  [[maybe_unused]] std::shared_ptr<SharedAnalysis> shared_;  // read by the supernodal back end
 };
 
 }  // namespace qd::common

@@ -92,16 +92,60 @@ cholmod_sparse pattern_view(int n, const int* outer, const int* inner) {
   return A;
 }
 
+// slot: each entry (i, j) of `lower` goes to row max and column min of (inverse[i], inverse[j]);
+// entries are taken column by column of the factor, each supernode's rows mapped once.
+void place_entries(SupernodalAnalysis& an, const Eigen::SparseMatrix<double>& lower) {
+  const int n = an.n;
+  std::vector<int> inverse(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) inverse[static_cast<size_t>(an.perm[static_cast<size_t>(k)])] = k;
+  std::vector<int> start(static_cast<size_t>(n) + 1, 0),
+      entry(static_cast<size_t>(lower.nonZeros()));
+  const auto column_of = [&](int j, int e) {
+    return std::min(inverse[static_cast<size_t>(j)],
+                    inverse[static_cast<size_t>(lower.innerIndexPtr()[e])]);
+  };
+  for (int j = 0; j < n; ++j)
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
+      ++start[static_cast<size_t>(column_of(j, e)) + 1];
+  for (size_t k = 0; k < static_cast<size_t>(n); ++k) start[k + 1] += start[k];
+  std::vector<int> next(start.begin(), start.end() - 1);
+  for (int j = 0; j < n; ++j)
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
+      entry[static_cast<size_t>(next[static_cast<size_t>(column_of(j, e))]++)] = e;
+  std::vector<int> column_of_entry(entry.size());
+  for (int j = 0; j < n; ++j)
+    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
+      column_of_entry[static_cast<size_t>(e)] = j;
+  an.slot.resize(entry.size());
+  std::vector<int> map(static_cast<size_t>(n));
+  for (size_t t = 0; t + 1 < an.super.size(); ++t) {
+    const int height = an.row_start[t + 1] - an.row_start[t];
+    for (int p = 0; p < height; ++p)
+      map[static_cast<size_t>(an.rows[static_cast<size_t>(an.row_start[t] + p)])] = p;
+    for (int k = an.super[t]; k < an.super[t + 1]; ++k)
+      for (int q = start[static_cast<size_t>(k)]; q < start[static_cast<size_t>(k) + 1]; ++q) {
+        const int e = entry[static_cast<size_t>(q)];
+        const int a = inverse[static_cast<size_t>(lower.innerIndexPtr()[e])];
+        const int b = inverse[static_cast<size_t>(column_of_entry[static_cast<size_t>(e)])];
+        an.slot[static_cast<size_t>(e)] = an.value_start[t] +
+                                          static_cast<long>(k - an.super[t]) * height +
+                                          map[static_cast<size_t>(std::max(a, b))];
+      }
+  }
+}
+
 }  // namespace
 
-QuasiDefiniteLdlt::QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower)
-    : n_(static_cast<int>(lower.rows())) {
+std::shared_ptr<const SupernodalAnalysis> QuasiDefiniteLdlt::analyse(
+    const Eigen::SparseMatrix<double>& lower) {
+  auto an = std::make_shared<SupernodalAnalysis>();
+  an->n = static_cast<int>(lower.rows());
   cholmod_common c;
   cholmod_start(&c);
   c.nmethods = 1;
   c.method[0].ordering = CHOLMOD_NATURAL;  // then postordered, which keeps the fill
   c.supernodal = CHOLMOD_SUPERNODAL;
-  cholmod_sparse A = pattern_view(n_, lower.outerIndexPtr(), lower.innerIndexPtr());
+  cholmod_sparse A = pattern_view(an->n, lower.outerIndexPtr(), lower.innerIndexPtr());
   cholmod_factor* L = cholmod_analyze(&A, &c);
   if (!L || !L->is_super) {
     cholmod_free_factor(&L, &c);
@@ -113,70 +157,35 @@ QuasiDefiniteLdlt::QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower)
     return std::vector<int>(first, first + n);
   };
   const size_t ns = L->nsuper;
-  perm_ = copy(L->Perm, static_cast<size_t>(n_));
-  super_ = copy(L->super, ns + 1);
-  row_start_ = copy(L->pi, ns + 1);
-  rows_ = copy(L->s, static_cast<size_t>(row_start_.back()));
+  an->perm = copy(L->Perm, static_cast<size_t>(an->n));
+  an->super = copy(L->super, ns + 1);
+  an->row_start = copy(L->pi, ns + 1);
+  an->rows = copy(L->s, static_cast<size_t>(an->row_start.back()));
   const std::vector<int> px = copy(L->px, ns + 1);
-  value_start_.assign(px.begin(), px.end());
-  values_.resize(L->xsize);
+  an->value_start.assign(px.begin(), px.end());
+  an->values = L->xsize;
   cholmod_free_factor(&L, &c);
   cholmod_finish(&c);
 
-  owner_.resize(static_cast<size_t>(n_));
+  an->owner.resize(static_cast<size_t>(an->n));
   for (size_t s = 0; s < ns; ++s)
-    std::fill(owner_.begin() + super_[s], owner_.begin() + super_[s + 1], static_cast<int>(s));
-  place_entries(lower);
+    std::fill(an->owner.begin() + an->super[s], an->owner.begin() + an->super[s + 1],
+              static_cast<int>(s));
+  place_entries(*an, lower);
+  return an;
 }
 
-// slot_: each entry (i, j) of `lower` goes to row max and column min of (inverse[i], inverse[j]);
-// entries are taken column by column of the factor, each supernode's rows mapped once.
-void QuasiDefiniteLdlt::place_entries(const Eigen::SparseMatrix<double>& lower) {
-  std::vector<int> inverse(static_cast<size_t>(n_));
-  for (int k = 0; k < n_; ++k) inverse[static_cast<size_t>(perm_[static_cast<size_t>(k)])] = k;
-  std::vector<int> start(static_cast<size_t>(n_) + 1, 0),
-      entry(static_cast<size_t>(lower.nonZeros()));
-  const auto column_of = [&](int j, int e) {
-    return std::min(inverse[static_cast<size_t>(j)],
-                    inverse[static_cast<size_t>(lower.innerIndexPtr()[e])]);
-  };
-  for (int j = 0; j < n_; ++j)
-    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
-      ++start[static_cast<size_t>(column_of(j, e)) + 1];
-  for (size_t k = 0; k < static_cast<size_t>(n_); ++k) start[k + 1] += start[k];
-  std::vector<int> next(start.begin(), start.end() - 1);
-  for (int j = 0; j < n_; ++j)
-    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
-      entry[static_cast<size_t>(next[static_cast<size_t>(column_of(j, e))]++)] = e;
-  std::vector<int> column_of_entry(entry.size());
-  for (int j = 0; j < n_; ++j)
-    for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
-      column_of_entry[static_cast<size_t>(e)] = j;
-  slot_.resize(entry.size());
-  std::vector<int> map(static_cast<size_t>(n_));
-  for (size_t t = 0; t + 1 < super_.size(); ++t) {
-    const int height = row_start_[t + 1] - row_start_[t];
-    for (int p = 0; p < height; ++p)
-      map[static_cast<size_t>(rows_[static_cast<size_t>(row_start_[t] + p)])] = p;
-    for (int k = super_[t]; k < super_[t + 1]; ++k)
-      for (int q = start[static_cast<size_t>(k)]; q < start[static_cast<size_t>(k) + 1]; ++q) {
-        const int e = entry[static_cast<size_t>(q)];
-        const int a = inverse[static_cast<size_t>(lower.innerIndexPtr()[e])];
-        const int b = inverse[static_cast<size_t>(column_of_entry[static_cast<size_t>(e)])];
-        slot_[static_cast<size_t>(e)] = value_start_[t] +
-                                        static_cast<long>(k - super_[t]) * height +
-                                        map[static_cast<size_t>(std::max(a, b))];
-      }
-  }
-}
+QuasiDefiniteLdlt::QuasiDefiniteLdlt(std::shared_ptr<const SupernodalAnalysis> analysis)
+    : a_(std::move(analysis)), values_(a_->values) {}
 
 bool QuasiDefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& lower) {
   std::fill(values_.begin(), values_.end(), 0.0);
   const double* value = lower.valuePtr();
-  for (size_t e = 0; e < slot_.size(); ++e) values_[static_cast<size_t>(slot_[e])] += value[e];
+  for (size_t e = 0; e < a_->slot.size(); ++e)
+    values_[static_cast<size_t>(a_->slot[e])] += value[e];
   std::vector<double> work;
-  std::vector<int> map(static_cast<size_t>(n_), -1);
-  for (int s = 0; s + 1 < static_cast<int>(super_.size()); ++s)
+  std::vector<int> map(static_cast<size_t>(a_->n), -1);
+  for (int s = 0; s + 1 < static_cast<int>(a_->super.size()); ++s)
     if (!factorize_supernode(s, work, map)) return false;
   return true;
 }
@@ -186,10 +195,10 @@ bool QuasiDefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& lower) {
 bool QuasiDefiniteLdlt::factorize_supernode(int s, std::vector<double>& work,
                                             std::vector<int>& map) {
   const auto su = static_cast<size_t>(s);
-  const int columns = super_[su + 1] - super_[su];
-  const int height = row_start_[su + 1] - row_start_[su];
+  const int columns = a_->super[su + 1] - a_->super[su];
+  const int height = a_->row_start[su + 1] - a_->row_start[su];
   const int below = height - columns;
-  double* X = values_.data() + value_start_[su];
+  double* X = values_.data() + a_->value_start[su];
   if (!dense_ldlt(columns, X, height)) return false;
   if (below == 0) return true;
   double* X21 = X + columns;
@@ -206,23 +215,24 @@ bool QuasiDefiniteLdlt::factorize_supernode(int s, std::vector<double>& work,
 void QuasiDefiniteLdlt::update_ancestors(int s, const double* W, std::vector<double>& work,
                                          std::vector<int>& map) {
   const auto su = static_cast<size_t>(s);
-  const int columns = super_[su + 1] - super_[su];
-  const int height = row_start_[su + 1] - row_start_[su];
+  const int columns = a_->super[su + 1] - a_->super[su];
+  const int height = a_->row_start[su + 1] - a_->row_start[su];
   const int below = height - columns;
-  const int* row = rows_.data() + row_start_[su] + columns;
-  const double* L21 = values_.data() + value_start_[su] + columns;
+  const int* row = a_->rows.data() + a_->row_start[su] + columns;
+  const double* L21 = values_.data() + a_->value_start[su] + columns;
   std::vector<int> place;  // the places in t's rows of the rows from i on
   int mapped = -1;
   for (int i = 0; i < below;) {
-    const int t = owner_[static_cast<size_t>(row[i])];
+    const int t = a_->owner[static_cast<size_t>(row[i])];
     int last = i;
-    while (last < below && owner_[static_cast<size_t>(row[last])] == t && last - i < kUpdateColumns)
+    while (last < below && a_->owner[static_cast<size_t>(row[last])] == t &&
+           last - i < kUpdateColumns)
       ++last;
     const auto tu = static_cast<size_t>(t);
-    const int t_height = row_start_[tu + 1] - row_start_[tu];
+    const int t_height = a_->row_start[tu + 1] - a_->row_start[tu];
     if (mapped != t) {
       for (int p = 0; p < t_height; ++p)
-        map[static_cast<size_t>(rows_[static_cast<size_t>(row_start_[tu] + p)])] = p;
+        map[static_cast<size_t>(a_->rows[static_cast<size_t>(a_->row_start[tu] + p)])] = p;
       mapped = t;
     }
     const int m = below - i, width = last - i;
@@ -232,7 +242,7 @@ void QuasiDefiniteLdlt::update_ancestors(int s, const double* W, std::vector<dou
     for (int k = 0; k < m; ++k)
       place[static_cast<size_t>(k)] = map[static_cast<size_t>(row[i + k])];
     for (int j = 0; j < width; ++j) {  // t's own rows come first: a row's place is its column
-      double* target = values_.data() + value_start_[tu] +
+      double* target = values_.data() + a_->value_start[tu] +
                        static_cast<long>(place[static_cast<size_t>(j)]) * t_height;
       const double* u = work.data() + static_cast<long>(j) * m;
       for (int k = j; k < m; ++k) target[place[static_cast<size_t>(k)]] += u[k];
@@ -244,9 +254,9 @@ void QuasiDefiniteLdlt::update_ancestors(int s, const double* W, std::vector<dou
 // Each supernode's part of x is gathered into a dense vector t (its rows), worked on there, and
 // scattered back: the loops then run over contiguous memory.
 Eigen::VectorXd QuasiDefiniteLdlt::solve(const Eigen::VectorXd& b) const {
-  Eigen::VectorXd x(n_);
-  for (int k = 0; k < n_; ++k) x[k] = b[perm_[static_cast<size_t>(k)]];
-  const int ns = static_cast<int>(super_.size()) - 1;
+  Eigen::VectorXd x(a_->n);
+  for (int k = 0; k < a_->n; ++k) x[k] = b[a_->perm[static_cast<size_t>(k)]];
+  const int ns = static_cast<int>(a_->super.size()) - 1;
   std::vector<double> t;
   for (int s = 0; s < ns; ++s) {  // L y = b, then D z = y
     const Panel p = panel(s);
@@ -273,22 +283,22 @@ Eigen::VectorXd QuasiDefiniteLdlt::solve(const Eigen::VectorXd& b) const {
     }
     for (int j = 0; j < p.columns; ++j) x[p.row[j]] = t[static_cast<size_t>(j)];
   }
-  Eigen::VectorXd out(n_);
-  for (int k = 0; k < n_; ++k) out[perm_[static_cast<size_t>(k)]] = x[k];
+  Eigen::VectorXd out(a_->n);
+  for (int k = 0; k < a_->n; ++k) out[a_->perm[static_cast<size_t>(k)]] = x[k];
   return out;
 }
 
 int QuasiDefiniteLdlt::widest_supernode() const {
   int widest = 0;
-  for (size_t s = 0; s + 1 < super_.size(); ++s)
-    widest = std::max(widest, super_[s + 1] - super_[s]);
+  for (size_t s = 0; s + 1 < a_->super.size(); ++s)
+    widest = std::max(widest, a_->super[s + 1] - a_->super[s]);
   return widest;
 }
 
 QuasiDefiniteLdlt::Panel QuasiDefiniteLdlt::panel(int s) const {
   const auto su = static_cast<size_t>(s);
-  return {super_[su + 1] - super_[su], row_start_[su + 1] - row_start_[su],
-          rows_.data() + row_start_[su], values_.data() + value_start_[su]};
+  return {a_->super[su + 1] - a_->super[su], a_->row_start[su + 1] - a_->row_start[su],
+          a_->rows.data() + a_->row_start[su], values_.data() + a_->value_start[su]};
 }
 
 }  // namespace qd::common

@@ -7,14 +7,29 @@
 // analysis (postorder, relaxed supernodes) and does the numeric LDLᵀ itself, supernode by
 // supernode with dense BLAS kernels, and the solves: kept apart from the normal matrix, the
 // angle-defect rows make a factor about three times cheaper than their CᵀC (docs/solvers.md).
+// The symbolic analysis depends on K's pattern alone, so factors of one pattern may share it.
 // QuasiDefiniteFactor (quasi_definite_factor.h) is how the engine uses it.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <memory>
 #include <vector>
 
 namespace qd::common {
+
+// The symbolic analysis of a pattern: supernodes, their rows and where each entry goes.
+struct SupernodalAnalysis {
+  int n = 0;
+  std::vector<int> perm;          // row k of the factor is row perm[k] of K
+  std::vector<int> super;         // supernode s holds columns super[s] .. super[s+1]
+  std::vector<int> row_start;     // its row indices rows[row_start[s] .. row_start[s+1])
+  std::vector<int> rows;          //   (its own columns first, then the rows below)
+  std::vector<long> value_start;  // its dense column-major panel at values[value_start[s]]
+  std::vector<int> owner;         // supernode of each column
+  std::vector<long> slot;         // place in the values of each stored entry of `lower`
+  size_t values = 0;              // the factor's values
+};
 
 class QuasiDefiniteLdlt {
  public:
@@ -23,7 +38,11 @@ class QuasiDefiniteLdlt {
 
   // Analyses the pattern of `lower`, the lower triangle of K (column major, sorted), already
   // in a fill-reducing order (CHOLMOD only postorders it).
-  explicit QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower);
+  static std::shared_ptr<const SupernodalAnalysis> analyse(
+      const Eigen::SparseMatrix<double>& lower);
+  explicit QuasiDefiniteLdlt(std::shared_ptr<const SupernodalAnalysis> analysis);
+  explicit QuasiDefiniteLdlt(const Eigen::SparseMatrix<double>& lower)
+      : QuasiDefiniteLdlt(analyse(lower)) {}
 
   // Factorises K with the values of `lower` (the pattern given at construction); false when a
   // pivot vanishes (K is not quasi-definite).
@@ -40,19 +59,11 @@ class QuasiDefiniteLdlt {
     const double* X;
   };
   Panel panel(int s) const;
-  void place_entries(const Eigen::SparseMatrix<double>& lower);
   bool factorize_supernode(int s, std::vector<double>& work, std::vector<int>& map);
   void update_ancestors(int s, const double* W, std::vector<double>& work, std::vector<int>& map);
 
-  int n_ = 0;
-  std::vector<int> perm_;          // row k of the factor is row perm_[k] of K
-  std::vector<int> super_;         // supernode s holds columns super_[s] .. super_[s+1]
-  std::vector<int> row_start_;     // its row indices rows_[row_start_[s] .. row_start_[s+1])
-  std::vector<int> rows_;          //   (its own columns first, then the rows below)
-  std::vector<long> value_start_;  // its dense column-major panel at values_[value_start_[s]]
-  std::vector<int> owner_;         // supernode of each column
-  std::vector<long> slot_;         // place in values_ of each stored entry of `lower`
-  std::vector<double> values_;     // unit-lower L (diagonal entries hold D)
+  std::shared_ptr<const SupernodalAnalysis> a_;
+  std::vector<double> values_;  // unit-lower L (diagonal entries hold D)
 };
 
 }  // namespace qd::common
