@@ -6,16 +6,19 @@ found (scripts/bench_family.py's garments(): $QD_SHARED_MESHES and the shipped d
 drape noise of random amplitude and jitter, one in five re-cut into 2 to 8 panels by
 `quasidev segment --target N`, one in ten subdivided 4-to-1 (a finer resolution), and one in fifty
 broken (truncated, not a mesh, empty). Each row runs `approximate` (the defaults) on every file:
-  serial      a shell-style loop of `quasidev IN OUT` command calls, one after the other;
+  serial      a shell-style loop of `quasidev IN OUT` command calls, one after the other (the
+              engine's default threads: all cores, one patch per thread);
+  serial, 1 thread   the same loop with --threads 1;
   local       quasidev.batch on local processes (--workers, default the cores);
   dask 1, 2   quasidev.batch on a distributed.LocalCluster of 1 and 2 single-threaded worker
-              processes.
-Also the scheduler's cost per task (no-op tasks on the 2-worker cluster), the peak memory per
+              processes (without the nanny's OMP_NUM_THREADS=1 environment, as the local batch).
+--runs R repeats the rows R times, in turn, and gives each row's median. Also the scheduler's cost per task (no-op tasks on the 2-worker cluster), the peak memory per
 worker, and from them a projection of throughput for 10, 100 and 1000 workers. Writes
 OUT/benchmark-batch.md and .json and prints the markdown.
 
 Run it with the Python that has the quasidev package and Dask (tests/python/run.sh makes one):
-  build/python-venv/bin/python scripts/bench_batch.py [--size N] [--build DIR] [--cache DIR] [--out DIR]
+  build/python-venv/bin/python scripts/bench_batch.py [--size N] [--runs R] [--build DIR] [--cache DIR]
+                                                      [--out DIR]
 """
 from __future__ import annotations
 
@@ -67,14 +70,15 @@ def make_dataset(quasidev_command: str, size: int, folder: str) -> list[str]:
     return paths
 
 
-def serial(quasidev_command: str, paths: list[str], out: str) -> dict:
-    """One `quasidev IN OUT --quiet` call per file, one after the other."""
+def serial(quasidev_command: str, paths: list[str], out: str, extra: list[str]) -> dict:
+    """One `quasidev IN OUT --quiet EXTRA` call per file, one after the other."""
     start = time.perf_counter()
     failed = 0
     for p in paths:
         target = os.path.join(out, os.path.relpath(p, os.path.dirname(os.path.dirname(p))))
         os.makedirs(os.path.dirname(target), exist_ok=True)
-        failed += subprocess.run([quasidev_command, p, target, "--quiet"], capture_output=True).returncode != 0
+        failed += subprocess.run([quasidev_command, p, target, "--quiet", *extra],
+                                 capture_output=True).returncode != 0
     seconds = time.perf_counter() - start
     peak = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
     return dict(seconds=seconds, failed=failed, peak_worker_mb=peak)
@@ -88,6 +92,12 @@ def batch_row(folder: str, out: str, **where) -> dict:
             peaks[r["worker_pid"]] = max(peaks.get(r["worker_pid"], 0.0), r["peak_memory_mb"])
     return dict(seconds=s.seconds, failed=s.counts["failed"], peak_worker_mb=max(peaks.values()),
                 workers_used=len(peaks))
+
+
+def median_row(rows: list[dict]) -> dict:
+    """The row of the median time, with every run's seconds."""
+    ordered = sorted(rows, key=lambda r: r["seconds"])
+    return dict(ordered[(len(ordered) - 1) // 2], runs=[r["seconds"] for r in rows])
 
 
 def _nothing(n: int) -> int:
@@ -117,14 +127,16 @@ def projection(per_mesh_s: float, task_s: float, mesh_bytes: float) -> list[dict
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--size", type=int, default=200)
+    ap.add_argument("--runs", type=int, default=1)
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--workers", type=int, default=len(os.sched_getaffinity(0)))
     ap.add_argument("--cache")
     ap.add_argument("--out", default=os.path.join(ROOT, "docs"))
     a = ap.parse_args()
+    import dask
     from distributed import Client, LocalCluster
 
-    command = f"scripts/bench_batch.py --size {a.size}"
+    command = f"scripts/bench_batch.py --size {a.size} --runs {a.runs}"
     quasidev_command = os.path.join(a.build, "bin", "quasidev")
     load = [os.getloadavg()[0]]
     with tempfile.TemporaryDirectory() as tmp:
@@ -133,23 +145,31 @@ def main() -> int:
         paths = make_dataset(quasidev_command, a.size, data)
         faces = [quasidev.read(p).F.shape[0] for p in paths if _readable(p)]
         mesh_bytes = 2 * np.mean([os.path.getsize(p) for p in paths])  # read one, write one
-        rows = {}
-        print("serial loop of command calls", file=sys.stderr)
-        rows["serial"] = serial(quasidev_command, paths, os.path.join(tmp, "serial"))
-        print("local batch", file=sys.stderr)
-        rows["local"] = batch_row(data, os.path.join(tmp, "local"), workers=a.workers)
-        task_s = None
-        for w in (1, 2):
-            print(f"dask, {w} worker(s)", file=sys.stderr)
-            with LocalCluster(n_workers=w, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
-                    Client(cluster) as client:
-                rows[f"dask {w}"] = batch_row(data, os.path.join(tmp, f"dask{w}"), client=client)
-                if w == 2:
-                    task_s = scheduler_cost(client, a.size * 5)
+        runs: dict = {}
+        task_s = []
+        for n in range(a.runs):
+            def out(name):
+                return os.path.join(tmp, f"{name}{n}")
+            print(f"run {n + 1} of {a.runs}: serial loops, local batch, dask 1 and 2", file=sys.stderr)
+            runs.setdefault("serial", []).append(serial(quasidev_command, paths, out("serial"), []))
+            runs.setdefault("serial, 1 thread", []).append(
+                serial(quasidev_command, paths, out("serial1"), ["--threads", "1"]))
+            runs.setdefault("local", []).append(batch_row(data, out("local"), workers=a.workers))
+            for w in (1, 2):
+                # Dask's nanny starts workers with OMP_NUM_THREADS=1 and the like by default, which
+                # holds CHOLMOD's BLAS to one thread: the local batch's processes have no such
+                # limit, so the rows compare like with like without it (docs/batch.md).
+                with dask.config.set({"distributed.nanny.pre-spawn-environ": {}}), LocalCluster(n_workers=w, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, Client(cluster) as client:
+                    runs.setdefault(f"dask {w}", []).append(batch_row(data, out(f"dask{w}"), client=client))
+                    if w == 2:
+                        task_s.append(scheduler_cost(client, a.size * 5))
     load.append(os.getloadavg()[0])
+    rows = {name: median_row(rs) for name, rs in runs.items()}
+    task_s = float(np.median(task_s))
     for r in rows.values():
         r["meshes_per_minute"] = 60 * len(paths) / r["seconds"]
-    per_mesh_s = rows["dask 1"]["seconds"] / len(paths)
+    per_mesh_s = rows["dask 1"]["seconds"] / len(paths)  # one worker, one thread
     result = dict(command=command, files=len(paths), broken=len(paths) - len(faces),
                   faces=dict(min=min(faces), median=float(np.median(faces)), max=max(faces)),
                   load=load, rows=rows, scheduler_s_per_task=task_s,
@@ -179,14 +199,17 @@ def report(r: dict) -> str:
         f"Made by `build/python-venv/bin/python {r['command']}` (load average {r['load'][0]:.2f} at "
         f"the start, {r['load'][1]:.2f} at the end) on {os.cpu_count()} cores. {r['files']} garment "
         f"files of {r['faces']['min']}-{r['faces']['max']} triangles (median {r['faces']['median']:.0f}), "
-        f"{r['broken']} of them broken; each row runs `approximate` with the defaults on every file.", "",
-        "| row | seconds | meshes per minute | vs serial | failed (broken) files | peak memory per worker (MB) |",
-        "|---|---|---|---|---|---|",
+        f"{r['broken']} of them broken; each row runs `approximate` with the defaults on every file "
+        f"(seconds: the median of {len(rows['serial']['runs'])} run(s), taken in turn).", "",
+        "| row | seconds | meshes per minute | vs serial | vs serial, 1 thread | failed (broken) files | "
+        "peak memory per worker (MB) |",
+        "|---|---|---|---|---|---|---|",
     ]
-    base = rows["serial"]["seconds"]
+    base, single = rows["serial"]["seconds"], rows["serial, 1 thread"]["seconds"]
     for name, row in rows.items():
         lines.append(f"| {name} | {row['seconds']:.1f} | {row['meshes_per_minute']:.0f} | "
-                     f"{base / row['seconds']:.2f}x | {row['failed']} | {row['peak_worker_mb']:.0f} |")
+                     f"{base / row['seconds']:.2f}x | {single / row['seconds']:.2f}x | {row['failed']} | "
+                     f"{row['peak_worker_mb']:.0f} |")
     lines += [
         "", f"Dask at 2 workers over the local batch: {rows['dask 2']['seconds'] / rows['local']['seconds']:.2f}x "
         "the time.",

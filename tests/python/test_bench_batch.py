@@ -17,7 +17,7 @@ def test_the_batch_benchmark_runs_every_row(tmp_path):
     assert run.returncode == 0, run.stderr
     result = json.loads((tmp_path / "benchmark-batch.json").read_text())
     assert result["files"] == 8 and result["broken"] == 1
-    assert set(result["rows"]) == {"serial", "local", "dask 1", "dask 2"}
+    assert set(result["rows"]) == {"serial", "serial, 1 thread", "local", "dask 1", "dask 2"}
     for row in result["rows"].values():
         assert row["failed"] == 1 and row["meshes_per_minute"] > 0 and row["peak_worker_mb"] > 0
     assert result["rows"]["dask 2"]["workers_used"] <= 2
