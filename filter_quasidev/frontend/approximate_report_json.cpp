@@ -26,7 +26,8 @@ Json iteration(const approximate::IterationReport& it) {
           {"note", it.note}};
 }
 
-// Milliseconds per stage, summed over patches and threads (time_ms is the wall clock).
+// Milliseconds per stage, summed over patches and threads (time_ms is the wall clock); a
+// patch's are those of its solve groups, which group_patches patches may share.
 Json stage_times(const approximate::StageTimes& t) {
   return {{"setup", t.setup},
           {"step1", t.step1},
@@ -73,6 +74,8 @@ Json patch(const approximate::PatchReport& p, double average_edge) {
           {"abd_reduction", p.abd_reduction},
           {"obd_reduction", p.obd_reduction},
           {"time_ms", p.time_ms},
+          {"stage_ms", stage_times(p.times)},
+          {"group_patches", p.group_patches},
           {"history", history}};
 }
 

@@ -88,9 +88,16 @@ def test_success_keeps_order_adds_quality_and_colour(mesh, tmp_path):
     for p in rep["patches"]:
         for key in ("id", "faces", "vertices", "free_vertices", "tolerance_model", "tolerance_ae", "target_kind",
                     "fit_residual_deg", "iterations", "stop_reason", "before", "after",
-                    "abd_reduction", "obd_reduction", "time_ms", "history"):
+                    "abd_reduction", "obd_reduction", "time_ms", "stage_ms", "group_patches",
+                    "history"):
             assert key in p, key
     assert sum(p["faces"] for p in rep["patches"]) == len(in_faces)
+    # Where the time went per patch: each solve group's work counted once per patch it holds.
+    for count in ("factorizations", "solves", "cg_iterations"):
+        shares = sum(p["stage_ms"][count] / p["group_patches"] for p in rep["patches"])
+        assert shares <= rep["stage_ms"][count] + 1e-9, count
+        if all(p["group_patches"] == 1 for p in rep["patches"]):
+            assert sum(p["stage_ms"][count] for p in rep["patches"]) == rep["stage_ms"][count]
     assert rep["total_after"]["g_abd"] <= rep["total_before"]["g_abd"] * (1 + 1e-9)
     assert not list(tmp_path.glob("*quasidev-tmp*"))
 

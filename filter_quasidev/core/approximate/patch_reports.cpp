@@ -1,5 +1,6 @@
 #include "approximate/patch_reports.h"
 
+#include <algorithm>
 #include <cassert>
 
 #include "approximate/group_mesh.h"
@@ -87,6 +88,8 @@ SolveReports patch_reports(const SolveSchedule& s, const Params& params, size_t 
       }
       rep.history.insert(rep.history.end(), run.outcome.history.begin(), run.outcome.history.end());
       rep.time_ms += run.time_ms / static_cast<double>(run.fits.size());
+      rep.times += run.outcome.times;
+      rep.group_patches = std::max(rep.group_patches, static_cast<int>(run.fits.size()));
     }
   }
   return out;

@@ -68,6 +68,27 @@ struct CandidateReport {
   bool dropped = false;      // stopped after the trial, not by its own stop rule
 };
 
+// Where the time went, in milliseconds summed over groups (and threads), and solver counts.
+struct StageTimes {
+  double setup = 0;          // validation, topology, solve groups, MLS weights, ordering, pattern
+  double step1 = 0;          // DEGI, skeleton curve, target normals and their re-projection
+  double assembly = 0;       // the matrix M and the right-hand sides
+  double factorization = 0;  // symbolic analysis and numeric factorisations
+  double solve = 0;          // forward and back substitutions
+  double metrics = 0;        // figures for the stop criteria, the never-worse rule, the reports
+  int factorizations = 0;
+  int solves = 0;         // linear solves, one per iteration
+  int cg_iterations = 0;  // conjugate-gradient iterations of the iterative solves
+  int substituted = 0;    // systems factorised by another back end than the one asked for
+  StageTimes& operator+=(const StageTimes& o) {
+    setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
+    solve += o.solve, metrics += o.metrics;
+    factorizations += o.factorizations, solves += o.solves, cg_iterations += o.cg_iterations;
+    substituted += o.substituted;
+    return *this;
+  }
+};
+
 struct PatchReport {
   int id = 0;
   int faces = 0;
@@ -88,28 +109,9 @@ struct PatchReport {
   double abd_reduction = 0;  // (G_before − G_after)/G_before, percent
   double obd_reduction = 0;  // same for D(P), measured with the initial targets
   double time_ms = 0;
+  StageTimes times;       // of the solve groups it was in (shared with their other patches)
+  int group_patches = 1;  // the most patches one of those groups held
   std::vector<IterationReport> history;
-};
-
-// Where the time went, in milliseconds summed over groups (and threads), and solver counts.
-struct StageTimes {
-  double setup = 0;          // validation, topology, solve groups, MLS weights, ordering, pattern
-  double step1 = 0;          // DEGI, skeleton curve, target normals and their re-projection
-  double assembly = 0;       // the matrix M and the right-hand sides
-  double factorization = 0;  // symbolic analysis and numeric factorisations
-  double solve = 0;          // forward and back substitutions
-  double metrics = 0;        // figures for the stop criteria, the never-worse rule, the reports
-  int factorizations = 0;
-  int solves = 0;         // linear solves, one per iteration
-  int cg_iterations = 0;  // conjugate-gradient iterations of the iterative solves
-  int substituted = 0;    // systems factorised by another back end than the one asked for
-  StageTimes& operator+=(const StageTimes& o) {
-    setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
-    solve += o.solve, metrics += o.metrics;
-    factorizations += o.factorizations, solves += o.solves, cg_iterations += o.cg_iterations;
-    substituted += o.substituted;
-    return *this;
-  }
 };
 
 struct Result {
