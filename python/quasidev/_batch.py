@@ -184,7 +184,10 @@ def batch(
     step_params = per_step(chosen, params or {})
     key = run_key(chosen, step_params)
     sources = [inputs] if isinstance(inputs, (str, os.PathLike)) else list(inputs)
-    files = expand(sources)
+    out = Path(out_dir).resolve()
+    files = [f for f in expand(sources) if out not in f.parents]  # not an earlier run's outputs
+    if not files:
+        raise ValueError(f"no mesh file among the inputs outside the output folder {out}")
     outputs = mirrored(files, out_dir)
     tasks = [Task(str(i), str(o), chosen, step_params, key) for i, o in zip(files, outputs)]
     records: dict[int, dict] = {}
@@ -215,6 +218,5 @@ def batch(
     counts = {s: sum(r["status"] == s for r in ordered) for s in ("ok", "failed", "skipped")}
     seconds = time.perf_counter() - start
     meta = {"steps": list(chosen), "params": step_params, "key": key}
-    out = Path(out_dir).resolve()
     csv_path, json_path = _write_summary(out, ordered, counts, seconds, meta)
     return BatchSummary(ordered, counts, seconds, csv_path, json_path)

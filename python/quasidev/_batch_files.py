@@ -51,7 +51,8 @@ def expand(sources: Iterable[str | os.PathLike]) -> list[Path]:
 
 def mirrored(inputs: list[Path], out_dir: str | os.PathLike) -> list[Path]:
     """Each input's output: its path relative to the inputs' common folder, under out_dir, as
-    .ply. Raises ValueError when two inputs would share an output or an output is an input."""
+    .ply. Raises ValueError when two inputs would share an output (batch() leaves out the
+    files inside out_dir, so no output is an input)."""
     root = Path(os.path.commonpath([p.parent for p in inputs]))
     out = Path(out_dir).resolve()
     outputs = [(out / p.relative_to(root)).with_suffix(".ply") for p in inputs]
@@ -60,9 +61,6 @@ def mirrored(inputs: list[Path], out_dir: str | os.PathLike) -> list[Path]:
         if target in seen:
             raise ValueError(f"{seen[target]} and {source} would both be written to {target}")
         seen[target] = source
-    clash = set(outputs) & set(inputs)
-    if clash:
-        raise ValueError(f"the output {sorted(clash)[0]} is an input: choose another output folder")
     return outputs
 
 

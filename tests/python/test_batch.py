@@ -125,11 +125,15 @@ def test_inputs_by_glob_and_list_file_and_their_errors(dataset, tmp_path):
     (root / "mesh0.obj").write_text("")  # beside mesh0.ply: both would be out/mesh0.ply
     with pytest.raises(ValueError, match="both be written"):
         quasidev.batch(root, tmp_path / "out2", progress=False)
-    with pytest.raises(ValueError, match="is an input"):
+    with pytest.raises(ValueError, match="outside the output folder"):
         quasidev.batch(root / names[0], root, progress=False)
     with pytest.raises(ValueError, match="no such file"):
         quasidev.batch(tmp_path / "missing", tmp_path / "out3", progress=False)
     assert not (tmp_path / "out2").exists() and not (tmp_path / "out3").exists()
+    (root / "mesh0.obj").unlink()
+    inside = [quasidev.batch(root, root / "out", workers=2, progress=False) for _ in range(2)]
+    assert inside[1].counts["skipped"] == len(names)  # the first run's outputs are no inputs
+    assert len(inside[1].records) == len(names) + len(BROKEN)
 
 
 def test_parameters_are_checked_before_any_file_runs(dataset, tmp_path):
