@@ -143,7 +143,7 @@ def main() -> int:
         data = a.cache or os.path.join(tmp, "data")
         print(f"making {a.size} garment files in {data}", file=sys.stderr)
         paths = make_dataset(quasidev_command, a.size, data)
-        faces = [quasidev.read(p).F.shape[0] for p in paths if _readable(p)]
+        faces = [f for f in map(_faces, paths) if f is not None]
         mesh_bytes = 2 * np.mean([os.path.getsize(p) for p in paths])  # read one, write one
         runs: dict = {}
         task_s = []
@@ -184,12 +184,12 @@ def main() -> int:
     return 0
 
 
-def _readable(path: str) -> bool:
+def _faces(path: str) -> int | None:
+    """The file's triangle count, or None for a file the reader refuses (a broken one)."""
     try:
-        quasidev.read(path)
-        return True
+        return quasidev.read(path).F.shape[0]
     except ValueError:
-        return False
+        return None
 
 
 def report(r: dict) -> str:

@@ -8,7 +8,7 @@ import sys
 
 from ._batch import batch
 from ._batch_job import STEPS
-from ._batch_params import parse_setting
+from ._batch_params import flat, parse_setting
 
 EPILOG = """examples:
   python -m quasidev batch garments/ -o out/
@@ -47,8 +47,7 @@ def _batch_command(argv: list) -> int:
         if args.params:
             with open(args.params, encoding="utf-8") as f:
                 params = json.load(f)
-        if args.set and params and all(isinstance(v, dict) for v in params.values()):
-            params = {f"{s}.{k}": v for s, d in params.items() for k, v in d.items()}
+        params = flat(params)
         params.update(parse_setting(text, steps) for text in args.set)
         client = None
         if args.scheduler:

@@ -25,19 +25,28 @@ def _check(step: str, name: str, value) -> None:
             raise ValueError(f"{step}.{name} = {value} is out of its range")
 
 
+def flat(params: dict) -> dict:
+    """params as one flat dict: {"approximate": {...}, ...} becomes {"approximate.NAME": ...}."""
+    nested = params and all(k in DECLARATION and isinstance(v, dict) for k, v in params.items())
+    return {f"{s}.{k}": v for s, d in params.items() for k, v in d.items()} if nested else dict(params)
+
+
+def _split(full: str) -> tuple[str, str]:
+    """"[step.]name" as (step or "", name with - read as _)."""
+    step, _, name = full.strip().rpartition(".")
+    return step, name.replace("-", "_")
+
+
 def per_step(steps: tuple, params: dict) -> dict:
     """{step: {name: value}} for the chosen steps from either that shape or one flat dict (a
     name goes to every chosen step that declares it; "step.name" to that step only). Each step
     runs on one engine thread (one file per core) unless threads is given. Raises ValueError
     for a name no chosen step declares and for a value out of its choices or range."""
-    nested = params and all(k in DECLARATION and isinstance(v, dict) for k, v in params.items())
-    flat = {f"{s}.{k}": v for s, d in params.items() for k, v in d.items()} if nested else params
     out: dict = {s: {"threads": 1} for s in steps if "threads" in _declared(s)}
     for s in steps:
         out.setdefault(s, {})
-    for full, value in flat.items():
-        step, _, name = full.rpartition(".")
-        name = name.replace("-", "_")
+    for full, value in flat(params).items():
+        step, name = _split(full)
         targets = [step] if step else [s for s in steps if name in _declared(s)]
         if step and step not in steps:
             raise ValueError(f"{full}: {step} is not one of the batch's steps {list(steps)}")
@@ -55,8 +64,7 @@ def parse_setting(text: str, steps: tuple) -> tuple[str, object]:
     full, sep, raw = text.partition("=")
     if not sep:
         raise ValueError(f"--set {text}: expected NAME=VALUE")
-    step, _, name = full.strip().rpartition(".")
-    name = name.replace("-", "_")
+    step, name = _split(full)
     kinds = [_declared(s)[name]["type"] for s in ([step] if step else steps)
              if s in DECLARATION and name in _declared(s)]
     kind = kinds[0] if kinds else "str"
