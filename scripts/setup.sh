@@ -11,7 +11,7 @@
 #     3. the Python venv .venv with scripts/requirements-render.txt (the demo's picture).
 #   scripts/setup.sh          all of the above, plus what only the tests and the docs need:
 #     4. Debian packages: GoogleTest, clang and its libFuzzer (tests/cli/run_sanitizers.sh),
-#        clang-tidy (scripts/clang_tidy.sh),
+#        clang-tidy (scripts/clang_tidy.sh), clang-format (scripts/check_format.sh),
 #        xdotool and ImageMagick (GUI tests), debootstrap and pkgconf (the MeshLab 2025.07 GUI
 #        test), rsvg-convert (scripts/flatten_compare.py's pattern picture), python3-dev (the
 #        headers `pip install .` builds the Python package against, tests/python/run.sh);
@@ -61,7 +61,7 @@ DEMO_PACKAGES=(cmake g++ make qtbase5-dev libqt5opengl5-dev libglew-dev
                ca-certificates debian-archive-keyring xz-utils)
 # What only the tests need (see the header).
 TEST_PACKAGES=(ninja-build libgtest-dev xdotool imagemagick clang libclang-rt-14-dev clang-tidy
-               debootstrap pkgconf librsvg2-bin python3-dev)
+               clang-format debootstrap pkgconf librsvg2-bin python3-dev)
 install_packages() {
   local missing=() p
   for p in "$@"; do

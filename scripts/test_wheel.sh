@@ -10,11 +10,11 @@
 #      package is installed;
 #   4. in that chroot, makes a venv, pip installs the repaired wheel (numpy from PyPI) and runs
 #      tests/python/wheel_smoke.py on sample_meshes/bumpy_cylinder.ply.
-# The chroot is cached like scripts/setup_sid_chroot.sh's: skipped when <chroot>/.qd-complete
-# holds SPEC, built in <chroot>.tmp and renamed when complete. It is never changed by a test:
+# The chroot is made and used by the recipe of scripts/chroot_lib.sh, like the sid chroot of
+# scripts/setup_sid_chroot.sh: skipped when <chroot>/.qd-complete holds SPEC, built in
+# <chroot>.tmp and renamed when complete. It is never changed by a test:
 # the wheel, the smoke test and the mesh are bound read-only on /qd, the venv lives in a tmpfs on
-# /tmp, pip's cache is bound from build/wheel/pip-cache. Every mount happens in a private mount
-# namespace (unshare -m) that dies with its command, so nothing stays mounted, whatever happens.
+# /tmp, pip's cache is bound from build/wheel/pip-cache.
 # Steps 3 and 4 need root (asks sudo otherwise). Exits non-zero on any failure.
 # Env: QD_WHEEL_VENV (default build/python-venv), QD_WHEEL_CHROOT (default
 #      third_party/bookworm-chroot), QD_DEBIAN_MIRROR.
@@ -28,69 +28,25 @@ PACKAGES=(python3 python3-venv)
 SPEC="bookworm minbase; ${PACKAGES[*]}; no docs; /qd /qd-cache"
 # Installed, any of these would let an unrepaired wheel load: the chroot must have none.
 FORBIDDEN='libsuitesparse|libcholmod|libopenblas|libblas|liblapack|libatlas|libgfortran'
+# shellcheck source=scripts/chroot_lib.sh
+source "$ROOT/scripts/chroot_lib.sh"
 
 say() { echo "[test_wheel] $*"; }
 die() { echo "[test_wheel] FAILED: $*" >&2; exit 1; }
 
-# Runs a command chrooted in $1 with /proc, a tmpfs /tmp, the host's DNS setup and the bind
-# mounts of the remaining "SOURCE:TARGET[:ro]" arguments before "--", in a private namespace.
-in_chroot() {
-  local dir="$1"; shift
-  local binds=()
-  while [ "$1" != "--" ]; do binds+=("$1"); shift; done
-  shift
-  unshare --mount --propagation private bash -c '
-    set -e; dir="$1"; shift
-    mount -t proc proc "$dir/proc"
-    mount -t tmpfs tmpfs "$dir/tmp"
-    mount --bind -o ro /etc/resolv.conf "$dir/etc/resolv.conf"
-    while [ "$1" != "--" ]; do
-      IFS=: read -r src dst mode <<<"$1"; shift
-      mount --bind "$src" "$dir$dst"
-      [ "$mode" != ro ] || mount -o remount,bind,ro "$dir$dst"
-    done
-    shift; exec chroot "$dir" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
-      LC_ALL=C.UTF-8 DEBIAN_FRONTEND=noninteractive "$@"' \
-    sh "$dir" "${binds[@]}" -- "$@"
-}
-
-# Deletes a tree unless something is mounted in it (rm -rf would descend into /proc).
-remove_unmounted() {
-  [ -e "$1" ] || return 0
-  local real; real="$(realpath "$1")"
-  if findmnt -rno TARGET | grep -qxE "$real(/.*)?"; then
-    die "something is mounted under $real (findmnt -R $real): unmount it, then rerun"
-  fi
-  rm -rf "$1"
-}
-
 make_chroot() {
-  if [ -f "$CHROOT/.qd-complete" ] && [ "$(cat "$CHROOT/.qd-complete")" = "$SPEC" ]; then
+  if chroot_complete "$CHROOT" "$SPEC"; then
     say "chroot present: ${CHROOT#"$ROOT"/}"
     return
   fi
-  command -v debootstrap >/dev/null || die "debootstrap missing (apt-get install debootstrap)"
-  local tmp="$CHROOT.tmp" start; start=$(date +%s)
-  remove_unmounted "$tmp"
-  remove_unmounted "$CHROOT"
-  mkdir -p "$(dirname "$CHROOT")"
+  local start; start=$(date +%s)
   say "debootstrap --variant=minbase bookworm from $MIRROR"
-  unshare --mount --propagation private \
-    debootstrap --variant=minbase bookworm "$tmp" "$MIRROR" > "$tmp.log" 2>&1 \
-    || die "debootstrap (log: $tmp.log): $(tail -3 "$tmp.log")"
-  printf 'path-exclude=/usr/share/%s/*\n' doc man info locale lintian \
-    > "$tmp/etc/dpkg/dpkg.cfg.d/01-qd-nodoc"
-  mkdir -p "$tmp/qd" "$tmp/qd-cache"
-  [ -e "$tmp/etc/resolv.conf" ] || touch "$tmp/etc/resolv.conf"   # a mount point for the host's
+  chroot_bootstrap bookworm "$CHROOT" "$MIRROR"
+  mkdir -p "$CHROOT.tmp/qd" "$CHROOT.tmp/qd-cache"
   say "apt-get install --no-install-recommends ${PACKAGES[*]}"
-  in_chroot "$tmp" -- apt-get update -q >> "$tmp.log" 2>&1 \
-    && in_chroot "$tmp" -- apt-get install -y -q --no-install-recommends "${PACKAGES[@]}" \
-      >> "$tmp.log" 2>&1 \
-    || die "apt-get in the chroot (log: $tmp.log): $(tail -5 "$tmp.log")"
-  in_chroot "$tmp" -- apt-get clean
-  rm -rf "$tmp"/var/lib/apt/lists/* "$tmp"/var/cache/apt/*.bin "$tmp.log"
-  echo "$SPEC" > "$tmp/.qd-complete"
-  mv "$tmp" "$CHROOT"
+  chroot_run "$CHROOT.tmp" -- apt-get update -q > /dev/null || die "apt-get update in the chroot"
+  chroot_install "$CHROOT.tmp" "${PACKAGES[@]}"
+  chroot_seal "$CHROOT" "$SPEC"
   say "made ${CHROOT#"$ROOT"/} in $(( $(date +%s) - start )) s, $(du -sh "$CHROOT" | cut -f1)"
 }
 
@@ -99,7 +55,7 @@ chroot_stage() {
   local wheel="$1"
   make_chroot
   local installed bad
-  installed=$(in_chroot "$CHROOT" -- dpkg-query -W -f '${Package}\n') || die "dpkg-query in the chroot"
+  installed=$(chroot_run "$CHROOT" -- dpkg-query -W -f '${Package}\n') || die "dpkg-query in the chroot"
   grep -qx python3 <<<"$installed" || die "dpkg in the chroot lists no python3"
   bad=$(grep -E "^($FORBIDDEN)" <<<"$installed" || true)
   [ -z "$bad" ] || die "the chroot has packages it must not have: $bad"
@@ -113,7 +69,7 @@ chroot_stage() {
   if [ -f "$ca" ]; then cp "$ca" "$stage/ca.crt" && pip_env+=(PIP_CERT=/qd/ca.crt); fi
   [ -z "${PIP_INDEX_URL:-}" ] || pip_env+=("PIP_INDEX_URL=$PIP_INDEX_URL")
   say "in the chroot: python3 -m venv, pip install $(basename "$wheel"), wheel_smoke.py"
-  in_chroot "$CHROOT" "$stage:/qd:ro" "$OUT/pip-cache:/qd-cache" -- env "${pip_env[@]}" bash -c '
+  chroot_run "$CHROOT" "$stage:/qd:ro" "$OUT/pip-cache:/qd-cache" -- env "${pip_env[@]}" bash -c '
     set -e
     python3 -m venv /tmp/venv
     /tmp/venv/bin/pip install -q /qd/*.whl
