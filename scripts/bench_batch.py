@@ -210,9 +210,15 @@ def report(r: dict) -> str:
         lines.append(f"| {name} | {row['seconds']:.1f} | {row['meshes_per_minute']:.0f} | "
                      f"{base / row['seconds']:.2f}x | {single / row['seconds']:.2f}x | {row['failed']} | "
                      f"{row['peak_worker_mb']:.0f} |")
+    cores = os.cpu_count()
+    floor = min(single, rows["dask 1"]["seconds"]) / cores  # the one-core work, spread perfectly
     lines += [
         "", f"Dask at 2 workers over the local batch: {rows['dask 2']['seconds'] / rows['local']['seconds']:.2f}x "
         "the time.",
+        f"The bound on {cores} cores: the work on one core (the faster of the one-thread loop and one "
+        f"Dask worker) spread perfectly over the cores takes {floor:.1f} s, so no schedule of it is "
+        f"more than {base / floor:.2f}x the serial loop; the local batch is at {100 * floor / rows['local']['seconds']:.0f} % "
+        "of that bound.",
         f"The scheduler's cost: {1e3 * r['scheduler_s_per_task']:.2f} ms per task (no-op tasks, one per "
         "file, on the 2-worker cluster).", "",
         "Projection (meshes per minute = workers / seconds per mesh on one worker, capped at one "
