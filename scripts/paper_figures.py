@@ -11,6 +11,7 @@ import argparse
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -59,19 +60,38 @@ def flipped_faces(before, after):
     return sum(1 for a, b in zip(n0, n1) if sum(x * y for x, y in zip(a, b)) <= 0)
 
 
-def seam_vertices(ply):
-    patch_of = {}
+def solve_groups(report):
+    """Patch id -> its solve group, from the log's notes of patches solved together."""
+    group = {}
+
+    def find(p):
+        while group.get(p, p) != p:
+            p = group[p]
+        return p
+    for line in report.get("log", []):
+        m = re.match(r"note: patch (\d+) \(.*solved together with patch (\d+)", line)
+        if m:
+            group[find(int(m.group(1)))] = find(int(m.group(2)))
+    return find
+
+
+def seam_vertices(ply, group=lambda p: p):
+    """The vertices whose faces lie in more than one solve group (by default, one per patch)."""
+    group_of = {}
     seams = set()
     for face, q in zip(faces(ply), column(ply, "face", "quality")):
         for v in face:
-            if patch_of.setdefault(v, round(q)) != round(q):
+            if group_of.setdefault(v, group(round(q))) != group(round(q)):
                 seams.add(v)
     return sorted(seams)
 
 
-def max_seam_move(before, after):
+def max_seam_move(before, after, report=None):
+    """The largest move of a seam vertex; with a report, of the seams it held (not those between
+    patches its log says were solved together)."""
     vb, va = positions(before), positions(after)
-    return max((math.dist(vb[v], va[v]) for v in seam_vertices(before)), default=0.0)
+    seams = seam_vertices(before, solve_groups(report) if report else (lambda p: p))
+    return max((math.dist(vb[v], va[v]) for v in seams), default=0.0)
 
 
 def lampshade(build):
@@ -90,7 +110,7 @@ def bumps(build, name):
 def garment(build, path):
     """A real garment (its PLY path), patches from face quality, fixed seams, defaults."""
     report, before, after = quasidev(build, path)
-    return report, flipped_faces(before, after), max_seam_move(before, after)
+    return report, flipped_faces(before, after), max_seam_move(before, after, report)
 
 
 def tolerance_trend(build, mesh):

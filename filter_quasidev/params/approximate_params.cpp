@@ -103,8 +103,9 @@ std::vector<Param<S>> declare() {
              "strongest).")
           .alias("--targets"),
       choice("seam_mode", field(&S::engine, &P::seams), kSeamModes, "Seams",
-             "fixed: vertices shared by two patches do not move (the paper); free: all patches are "
-             "solved together and seam vertices move too, staying shared so no crack opens.")
+             "fixed: vertices shared by two patches do not move (the paper), except where a patch "
+             "mostly on seams is solved with its neighbour (the log names it); free: all patches "
+             "are solved together and seam vertices move too, staying shared so no crack opens.")
           .alias("--seams"),
       choice("segment_first", field(&S::engine, &P::segment_first), kSegmentFirst, "Segment first",
              "A mesh without patch ids: auto splits it into nearly developable patches first "

@@ -56,29 +56,37 @@ TEST(Approximate, NonManifoldEdgeStaysAndTheRestIsDone) {
   }
 }
 
-// A scrap of two faces has all its vertices on its seam: it is solved together with the patch
-// around it (solve_groups.h), the log says so, and nothing is left unchanged with a warning.
+// A patch with most of its vertices on its seam, a scrap of two faces or a strip one quad wide,
+// is solved together with the patch around it (solve_groups.h), with fixed seams as with free
+// ones: the log says so, the seam between them moves, and nothing is left unchanged with a
+// warning.
 TEST(Approximate, PatchesMostlyOnSeamsAreSolvedWithTheirNeighbour) {
-  for (const SeamMode seams : {SeamMode::Fixed, SeamMode::Free}) {
-    Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 2);
-    p.params.tolerance = 0.2;
-    p.params.seams = seams;
-    p.patch[600] = p.patch[601] = 9;  // a scrap of two faces inside sector 0
-    const Result r = approximate::approximate(p);
-    EXPECT_TRUE(r.warnings.empty());
-    int notes = 0;
-    for (const std::string& line : r.log)
-      notes += line.rfind("note: patch 9 (2 faces) has most of its vertices on seams", 0) == 0 &&
-               line.find("solved together with patch 0") != std::string::npos;
-    EXPECT_EQ(notes, 1);
-    ASSERT_EQ(r.patches.size(), 3u);
-    bool scrap_moved = false;
-    for (int f : {600, 601})
-      for (int c = 0; c < 3; ++c)
-        scrap_moved = scrap_moved || r.V.row(p.F(f, c)) != p.V.row(p.F(f, c));
-    EXPECT_TRUE(scrap_moved);
-    EXPECT_GT(r.abd_reduction, 10.0);
-  }
+  const std::vector<int> scrap{600, 601};  // inside sector 0
+  std::vector<int> strip;                  // quads 4..11 of row 12, inside sector 0
+  for (int i = 4; i < 12; ++i)
+    for (int t = 0; t < 2; ++t) strip.push_back(2 * (12 * 48 + i) + t);
+  for (const std::vector<int>& small : {scrap, strip})
+    for (const SeamMode seams : {SeamMode::Fixed, SeamMode::Free}) {
+      Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 2);
+      p.params.tolerance = 0.2;
+      p.params.seams = seams;
+      for (int f : small) p.patch[static_cast<size_t>(f)] = 9;
+      const Result r = approximate::approximate(p);
+      EXPECT_TRUE(r.warnings.empty());
+      const std::string note = "note: patch 9 (" + std::to_string(small.size()) +
+                               " faces) has most of its vertices or of its curvature on seams";
+      int notes = 0;
+      for (const std::string& line : r.log)
+        notes += line.rfind(note, 0) == 0 &&
+                 line.find("solved together with patch 0") != std::string::npos;
+      EXPECT_EQ(notes, 1) << small.size() << " faces";
+      ASSERT_EQ(r.patches.size(), 3u);
+      bool moved = false;
+      for (int f : small)
+        for (int c = 0; c < 3; ++c) moved = moved || r.V.row(p.F(f, c)) != p.V.row(p.F(f, c));
+      EXPECT_TRUE(moved) << small.size() << " faces";
+      EXPECT_GT(r.abd_reduction, 10.0);
+    }
 }
 
 // A patch of two faces oriented against its neighbour cannot join it: it stays as it is, with
@@ -207,8 +215,26 @@ TEST(Approximate, TotalToleranceIsNeverExceeded) {
   EXPECT_GT(d, 0.025);
 }
 
+// A cylinder of 3 panels (seams at columns 0, 16 and 32), each with a bump in its middle: the
+// curvature lies inside the panels, not on their seams, so no panel joins another.
+Problem three_bumped_panels() {
+  const test::GridMesh grid = test::grid_mesh(48, 24, true, [](int i, int j) {
+    const double t = 2 * M_PI * i / 48, z = 2.0 * j / 24;
+    double r = 1.0;
+    for (const double middle : {M_PI / 3, M_PI, 5 * M_PI / 3})
+      r += 0.08 * std::exp(-(std::pow(t - middle, 2) + std::pow(z - 1, 2)) / 0.1);
+    return Vec3(r * std::cos(t), r * std::sin(t), z);
+  });
+  Problem p;
+  p.V = grid.V;
+  p.F = grid.F;
+  for (Eigen::Index f = 0; f < p.F.rows(); ++f)
+    p.patch.push_back(static_cast<int>(f / 2 % 48 / 16));
+  return p;
+}
+
 TEST(Approximate, FixedSeamsStayAndFreeSeamsGoFurther) {
-  Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 3);
+  Problem p = three_bumped_panels();
   p.params.tolerance = 0.2;
   p.params.seams = SeamMode::Fixed;
   const Result fixed = approximate::approximate(p);
@@ -219,6 +245,32 @@ TEST(Approximate, FixedSeamsStayAndFreeSeamsGoFurther) {
   p.params.seams = SeamMode::Free;
   const Result free = approximate::approximate(p);
   EXPECT_GT(free.abd_reduction, fixed.abd_reduction);
+}
+
+// bumpy_cylinder's bumps lie across seams: in 3 or 6 sectors, some panels hold most of their
+// curvature on their seams. The mesh is solved with those panels joined to a neighbour and with
+// their seams held, the log gives both figures, and the one that removes more is kept: with 6
+// sectors joined (some seam vertices move), with 3 held (none moves).
+TEST(Approximate, PanelsWithTheirCurvatureOnTheirSeamsAreJoinedWhereThatRemovesMore) {
+  for (const int sectors : {3, 6}) {
+    Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, sectors);
+    p.params.tolerance = 0.2;
+    const Result r = approximate::approximate(p);
+    std::string note;
+    for (const std::string& line : r.log)
+      if (line.find("hold most of their curvature on their seams: solved with them joined") !=
+          std::string::npos)
+        note = line;
+    const bool joined = note.find("kept joined") != std::string::npos;
+    EXPECT_EQ(joined, sectors == 6) << note;
+    EXPECT_NE(note.find(joined ? "kept joined" : "kept held"), std::string::npos) << note;
+    double seam_move = 0;
+    for (Eigen::Index j = 0; j <= 24; ++j)
+      for (Eigen::Index i = 0; i < 48; i += 48 / sectors)
+        seam_move = std::max(seam_move, (r.V.row(j * 48 + i) - p.V.row(j * 48 + i)).norm());
+    EXPECT_EQ(seam_move > 0, joined) << sectors << " sectors";
+    EXPECT_GT(r.abd_reduction, 10.0);
+  }
 }
 
 // With free seams a total tolerance is a budget from the input for all three passes together:
@@ -269,14 +321,15 @@ TEST(Approximate, ResultDoesNotDependOnThreadsOrSolver) {
   }
 }
 
-// Two patches of a sharp bump, split along its ridge, seams held: solved at once with the
-// angle-defect rows, each side flattens its half and together they overshoot the ridge's
-// curvature. The round is solved
-// again in turn, says so, and the mesh's G_ABD does not rise; 1 and 2 threads agree.
+// Two patches of a sharp bump, split one column beside its top (so that most of each one's
+// curvature lies inside it and neither joins the other), seams held: solved at once with the
+// angle-defect rows, each side flattens its part and together they overshoot the seam's
+// curvature. The round is solved again in turn, says so, and the mesh's G_ABD does not rise;
+// 1 and 2 threads agree.
 TEST(Approximate, PatchesThatRaiseTheirSeamsTogetherAreSolvedAgainInTurn) {
   const test::GridMesh grid = test::grid_mesh(10, 10, false, [](int i, int j) {
     const double x = -1 + 0.2 * i, y = -1 + 0.2 * j;
-    return Vec3(x, y, std::exp(-(x * x + y * y) / 0.04));
+    return Vec3(x, y, std::exp(-((x + 0.2) * (x + 0.2) + y * y) / 0.08));
   });
   Problem p;
   p.V = grid.V;

@@ -110,7 +110,7 @@ std::vector<std::string> approximate_log(const Result& r, const std::vector<Patc
   for (const PatchMerge& m : merged)
     log.push_back("note: patch " + std::to_string(m.patch) + " (" + std::to_string(m.faces) +
                   (m.faces == 1 ? " face" : " faces") +
-                  ") has most of its vertices on seams or the boundary: it is solved together "
+                  ") has most of its vertices or of its curvature on seams: it is solved together "
                   "with patch " +
                   std::to_string(m.group) + ", and the seam between them moves");
   for (const std::vector<int>& ids : reruns) {
@@ -128,6 +128,13 @@ std::vector<std::string> approximate_log(const Result& r, const std::vector<Patc
   log.push_back(total_log_line(r));
   for (const std::string& line : advice(r, params, held_share)) log.push_back("note: " + line);
   return log;
+}
+
+std::string joins_note(size_t joins, double joined, double held, bool kept_joined) {
+  return format_text(
+      "note: %zu more patch(es) hold most of their curvature on their seams: solved with them "
+      "joined to a neighbour, G_ABD −%.1f%%, and with their seams held, −%.1f%%: kept %s",
+      joins, joined, held, kept_joined ? "joined" : "held");
 }
 
 std::string segmented_note(const std::string& why, int count, const SettingText& setting) {

@@ -19,6 +19,11 @@ std::vector<std::string> approximate_log(const Result& r, const std::vector<Patc
                                          const std::vector<std::vector<int>>& reruns,
                                          const Params& params, double held_share);
 
+// The note of a mesh solved both with the patches that hold most of their curvature on their
+// seams joined to a neighbour (`joins` more joins, reduction `joined` percent) and with them
+// held (`held` percent), and which was kept.
+std::string joins_note(size_t joins, double joined, double held, bool kept_joined);
+
 // The note of a mesh without patch ids that the engine split into `count` patches.
 std::string segmented_note(const std::string& why, int count, const SettingText& setting);
 

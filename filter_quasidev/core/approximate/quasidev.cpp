@@ -31,18 +31,15 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// Algorithm 1 over the patches the problem gives (the whole mesh as one when it gives none).
-Result approximate_patches(const Problem& problem, const Topology& patch_topo,
-                           const Progress& progress) {
+// Algorithm 1 over the patches of `patch`, solved in the groups of `solve`.
+Result solve_in_groups(const Problem& problem, const Topology& patch_topo,
+                       const std::vector<int>& patch, const SolveGroups& solve,
+                       const VertexAngles& input_angles, const Progress& progress) {
   const auto t0 = Clock::now();
   const Params& params = problem.params;
   const Positions& V = problem.V;
   const Triangles& F = problem.F;
   const size_t nv = static_cast<size_t>(V.rows()), nf = static_cast<size_t>(F.rows());
-  const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
-  // The seams held and the patches too small to fit are those of the solve groups.
-  const SolveGroups solve =
-      solve_groups(F, patch, patch_topo.boundary, params.seams == SeamMode::Free);
   assert(solve.group.size() == nf);
   const Topology topo =
       solve.merged.empty() ? patch_topo : analyse_topology(F, static_cast<int>(nv), solve.group);
@@ -53,7 +50,7 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   Result r;
   r.warnings = warnings(topo);
   r.average_edge = average_edge_length(V, F);
-  r.k_before = gaussian_curvature(vertex_angles(V, F), roles.interior);
+  r.k_before = gaussian_curvature(input_angles, roles.interior);
   r.times.setup += ms_since(t0);  // validation, topology, the input's figures
 
   const SolveInput in{V, F, patch, roles.interior, incident, params, r.average_edge};
@@ -79,6 +76,52 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   r.time_ms = ms_since(t0);
   r.log = approximate_log(r, solve.merged, schedule.reruns, params,
                           held_curvature_share(r.k_before, roles.interior, roles.constrained));
+  return r;
+}
+
+// Joined seams are kept when they remove at least this much more of G_ABD (percentage points,
+// the log's precision): on a tie the seams stay where they are.
+constexpr double kJoinMargin = 0.1;
+
+// Progress of one of `runs` runs (the `run`-th, from 0) as a share of the whole.
+Progress share_of(const Progress& progress, int run, int runs) {
+  if (!progress) return progress;
+  return [progress, run, runs](int percent, const std::string& stage) {
+    progress((100 * run + percent) / runs, stage);
+  };
+}
+
+// Algorithm 1 over the patches the problem gives (the whole mesh as one when it gives none).
+// The seams held are those of the solve groups: a patch mostly on seams always joins its
+// neighbour; where patches hold most of their curvature on their seams (solve_groups.h), the
+// mesh is solved both with them joined and with them held, and the one that removes more
+// G_ABD is kept (beyond the paper; the log gives both figures).
+Result approximate_patches(const Problem& problem, const Topology& patch_topo,
+                           const Progress& progress) {
+  const auto t0 = Clock::now();
+  const Triangles& F = problem.F;
+  const size_t nv = static_cast<size_t>(problem.V.rows()), nf = static_cast<size_t>(F.rows());
+  const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
+  const VertexAngles input_angles = vertex_angles(problem.V, F);
+  std::vector<char> off_boundary(nv);
+  for (size_t v = 0; v < nv; ++v) off_boundary[v] = !patch_topo.boundary[v];
+  std::vector<double> curvature = gaussian_curvature(input_angles, off_boundary);  // Eq. 18
+  for (double& k : curvature) k = std::abs(k);
+  const SolveGroups held = solve_groups(F, patch, patch_topo.boundary, {});
+  const SolveGroups joined = solve_groups(F, patch, patch_topo.boundary, curvature);
+  const bool both = joined.group != held.group;
+  Result r = solve_in_groups(problem, patch_topo, patch, held, input_angles,
+                             share_of(progress, 0, both ? 2 : 1));
+  if (both) {
+    Result j =
+        solve_in_groups(problem, patch_topo, patch, joined, input_angles, share_of(progress, 1, 2));
+    const bool keep_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
+    const std::string note = joins_note(joined.merged.size() - held.merged.size(), j.abd_reduction,
+                                        r.abd_reduction, keep_joined);
+    if (keep_joined) r = std::move(j);
+    r.log.insert(r.log.begin(), note);
+  }
+  r.time_ms = ms_since(t0);
   if (progress) progress(100, "done");
   return r;
 }

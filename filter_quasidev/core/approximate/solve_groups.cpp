@@ -39,10 +39,12 @@ std::vector<EdgeFaces> edge_faces(const Triangles& F) {
   return out;
 }
 
-// One round: every group that is mostly seam joins its best neighbour, unless a group it
-// touches changed this round. False when none did.
+// One round: every group whose seams, held, would keep most of what it has (more of its
+// vertices, or, when curvature is given, more of its curvature on seams than inside) joins its
+// best neighbour, unless a group it touches changed this round. False when none did.
 bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
-                 const std::vector<char>& boundary, bool mostly_seam, std::vector<int>& group) {
+                 const std::vector<char>& boundary, const std::vector<double>& curvature,
+                 std::vector<int>& group) {
   const size_t nv = boundary.size();
   std::vector<std::vector<int>> at(nv);  // groups of each vertex's faces
   for (Eigen::Index f = 0; f < F.rows(); ++f)
@@ -52,13 +54,14 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
       if (std::find(a.begin(), a.end(), g) == a.end()) a.push_back(g);
     }
   std::map<int, size_t> total, interior;
-  std::map<int, int> faces;
-  for (int g : group) ++faces[g];
+  std::map<int, double> k_inside, k_seam;  // Σ|K| over its interior and its seam vertices
   std::map<int, std::map<int, int>> shared;
   for (size_t v = 0; v < nv; ++v) {
     for (int g : at[v]) {
       ++total[g];
-      if (at[v].size() == 1 && !boundary[v]) ++interior[g];
+      const double k = curvature.empty() ? 0.0 : curvature[v];
+      if (at[v].size() == 1 && !boundary[v]) ++interior[g], k_inside[g] += k;
+      if (at[v].size() > 1) k_seam[g] += k;
       for (int h : at[v])
         if (h != g) ++shared[g][h];
     }
@@ -75,8 +78,8 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
   std::map<int, int> into;  // group -> the group it joins this round
   std::map<int, char> touched;
   for (const auto& [g, n] : total) {
-    const bool joins = mostly_seam ? 2 * interior[g] < n : faces[g] < kMinPatchFaces;
-    if (!joins || touched[g]) continue;
+    const bool held_keeps_most = 2 * interior[g] < n || k_seam[g] > k_inside[g];
+    if (!held_keeps_most || touched[g]) continue;
     int best = -1, most = 0;
     for (const auto& [h, count] : shared[g]) {
       const auto it = alike.find(std::make_pair(std::min(g, h), std::max(g, h)));
@@ -96,14 +99,14 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
 }  // namespace
 
 SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
-                         const std::vector<char>& boundary, bool mostly_seam) {
+                         const std::vector<char>& boundary, const std::vector<double>& curvature) {
   assert(patch.size() == static_cast<size_t>(F.rows()));
   SolveGroups out;
   out.group = patch;
   if (std::adjacent_find(patch.begin(), patch.end(), std::not_equal_to<int>()) == patch.end())
     return out;  // one patch
   const std::vector<EdgeFaces> edges = edge_faces(F);
-  while (merge_round(F, edges, boundary, mostly_seam, out.group)) {
+  while (merge_round(F, edges, boundary, curvature, out.group)) {
   }
   std::map<int, PatchMerge> merged;
   for (size_t f = 0; f < patch.size(); ++f)
