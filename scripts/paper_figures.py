@@ -11,7 +11,6 @@ import argparse
 import json
 import math
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -61,18 +60,9 @@ def flipped_faces(before, after):
 
 
 def solve_groups(report):
-    """Patch id -> its solve group, from the log's notes of patches solved together."""
-    group = {}
-
-    def find(p):
-        while group.get(p, p) != p:
-            p = group[p]
-        return p
-    for line in report.get("log", []):
-        m = re.match(r"note: patch (\d+) \(.*solved together with patch (\d+)", line)
-        if m:
-            group[find(int(m.group(1)))] = find(int(m.group(2)))
-    return find
+    """Patch id -> its solve group, from the report's `joins` (patches solved in another's group)."""
+    group = {j["patch"]: j["group"] for j in report["joins"]}
+    return lambda p: group.get(p, p)
 
 
 def seam_vertices(ply, group=lambda p: p):
@@ -88,7 +78,7 @@ def seam_vertices(ply, group=lambda p: p):
 
 def max_seam_move(before, after, report=None):
     """The largest move of a seam vertex; with a report, of the seams it held (not those between
-    patches its log says were solved together)."""
+    patches its `joins` say were solved together)."""
     vb, va = positions(before), positions(after)
     seams = seam_vertices(before, solve_groups(report) if report else (lambda p: p))
     return max((math.dist(vb[v], va[v]) for v in seams), default=0.0)

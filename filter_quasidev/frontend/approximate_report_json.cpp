@@ -79,6 +79,25 @@ Json patch(const approximate::PatchReport& p, double average_edge) {
           {"history", history}};
 }
 
+// The patches solved in a neighbour's group, and the measured choice of joining them.
+Json joins(const approximate::Result& r) {
+  Json out = Json::array();
+  for (const approximate::PatchJoin& j : r.joins)
+    out.push_back({{"patch", j.patch},
+                   {"faces", j.faces},
+                   {"group", j.group},
+                   {"reason", approximate::join_reason_name(j.reason)}});
+  return out;
+}
+
+Json join_trial(const std::optional<approximate::JoinTrial>& t) {
+  if (!t) return nullptr;
+  return {{"patches", t->patches},
+          {"joined", t->joined},
+          {"held", t->held},
+          {"kept", t->kept_joined ? "joined" : "held"}};
+}
+
 }  // namespace
 
 std::string report_json(const approximate::Result& result, const ReportContext& c) {
@@ -102,6 +121,8 @@ std::string report_json(const approximate::Result& result, const ReportContext& 
                        {"time_ms", result.time_ms},
                        {"stage_ms", stage_times(result.times)},
                        {"patches", patches},
+                       {"joins", joins(result)},
+                       {"join_trial", join_trial(result.join_trial)},
                        {"warnings", result.warnings},
                        {"notes", c.notes},
                        {"log", result.log}};

@@ -130,6 +130,29 @@ def test_free_seams_remove_at_least_what_fixed_seams_remove_on_a_garment(tmp_pat
     assert all("seams held:" in s and "seams free:" in s and "all patches at once:" in s for s in stops)
 
 
+def test_the_report_lists_the_patches_solved_with_a_neighbour(tmp_path):
+    """The shirt's 58-face patch 4 has no interior vertex: with its seams held nothing of it could
+    move, so it is solved with patch 0. The report says so under `joins`, the log in a note, and
+    the seam between the two moves while every other seam stays."""
+    mesh = DATA / "garment_shirt_initial_diffavatar.ply"
+    out, report = tmp_path / "out.ply", tmp_path / "r.json"
+    r = run(mesh, out, "--report", report)
+    assert r.returncode == 0, r.stderr
+    rep = json.loads(report.read_text())
+    assert rep["joins"] == [{"patch": 4, "faces": 58, "group": 0, "reason": "mostly seams"}]
+    assert "note: patch 4 (58 faces) has most of its vertices on seams: it is solved together with patch 0" in r.stdout
+    assert rep["join_trial"] is None  # no panel holds more curvature on its seams than inside
+    before, after = PlyData.read(mesh), PlyData.read(out)
+    patch_of = {}
+    for face, q in zip(column(before, "face", "vertex_indices"), column(before, "face", "quality")):
+        for v in face:
+            patch_of.setdefault(v, set()).add(round(q))
+    v0 = list(zip(*(column(before, "vertex", c) for c in "xyz")))
+    v1 = list(zip(*(column(after, "vertex", c) for c in "xyz")))
+    moved = {frozenset(p) for v, p in patch_of.items() if len(p) > 1 and v0[v] != v1[v]}
+    assert moved == {frozenset({0, 4})}
+
+
 def test_patches_whose_round_raises_a_patch_run_again_in_turn(tmp_path):
     """The four patches of patches.ply (both terms) run at once, raise each other's seams, and
     run again one after the other: the log says so, and the mesh ends with less curvature."""

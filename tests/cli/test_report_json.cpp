@@ -92,6 +92,8 @@ TEST(ReportJson, KeepsTheKeyOrderAndWritesValidUtf8) {
                                              "time_ms",
                                              "stage_ms",
                                              "patches",
+                                             "joins",
+                                             "join_trial",
                                              "warnings",
                                              "notes",
                                              "log"};

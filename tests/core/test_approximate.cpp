@@ -74,12 +74,16 @@ TEST(Approximate, PatchesMostlyOnSeamsAreSolvedWithTheirNeighbour) {
       const Result r = approximate::approximate(p);
       EXPECT_TRUE(r.warnings.empty());
       const std::string note = "note: patch 9 (" + std::to_string(small.size()) +
-                               " faces) has most of its vertices or of its curvature on seams";
+                               " faces) has most of its vertices on seams";
       int notes = 0;
       for (const std::string& line : r.log)
         notes += line.rfind(note, 0) == 0 &&
                  line.find("solved together with patch 0") != std::string::npos;
       EXPECT_EQ(notes, 1) << small.size() << " faces";
+      ASSERT_EQ(r.joins.size(), 1u);
+      EXPECT_EQ(r.joins[0].patch, 9);
+      EXPECT_EQ(r.joins[0].group, 0);
+      EXPECT_EQ(r.joins[0].reason, JoinReason::MostlySeams);
       ASSERT_EQ(r.patches.size(), 3u);
       bool moved = false;
       for (int f : small)
@@ -256,14 +260,24 @@ TEST(Approximate, PanelsWithTheirCurvatureOnTheirSeamsAreJoinedWhereThatRemovesM
     Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, sectors);
     p.params.tolerance = 0.2;
     const Result r = approximate::approximate(p);
-    std::string note;
+    ASSERT_TRUE(r.join_trial.has_value()) << sectors << " sectors";
+    const JoinTrial& trial = *r.join_trial;
+    const bool joined = trial.kept_joined;
+    EXPECT_EQ(joined, sectors == 6) << trial.joined << " % joined, " << trial.held << " % held";
+    EXPECT_GE(trial.patches, 1);
+    EXPECT_EQ(joined, trial.joined >= trial.held + 0.1);
+    EXPECT_NEAR(r.abd_reduction, joined ? trial.joined : trial.held, 1e-9);
+    EXPECT_EQ(std::count_if(
+                  r.joins.begin(), r.joins.end(),
+                  [](const PatchJoin& j) { return j.reason == JoinReason::CurvatureOnSeams; }) > 0,
+              joined);
+    int notes = 0;
     for (const std::string& line : r.log)
-      if (line.find("hold most of their curvature on their seams: solved with them joined") !=
-          std::string::npos)
-        note = line;
-    const bool joined = note.find("kept joined") != std::string::npos;
-    EXPECT_EQ(joined, sectors == 6) << note;
-    EXPECT_NE(note.find(joined ? "kept joined" : "kept held"), std::string::npos) << note;
+      notes += line.find(
+                   "have more of their curvature on their seams than inside: solved with "
+                   "them joined") != std::string::npos &&
+               line.find(joined ? "kept joined" : "kept held") != std::string::npos;
+    EXPECT_EQ(notes, 1);
     double seam_move = 0;
     for (Eigen::Index j = 0; j <= 24; ++j)
       for (Eigen::Index i = 0; i < 48; i += 48 / sectors)

@@ -37,7 +37,7 @@ struct TwoHalves {
 TEST(SolveGroups, PatchesWithMostOfTheirCurvatureInsideKeepTheirSeams) {
   const TwoHalves m;
   const SolveGroups s = solve_groups(m.grid.F, m.patch, m.boundary, m.curvature(1.0, 1.0));
-  EXPECT_TRUE(s.merged.empty());
+  EXPECT_TRUE(s.joins.empty());
   EXPECT_EQ(s.group, m.patch);
 }
 
@@ -45,11 +45,27 @@ TEST(SolveGroups, APatchWithMostOfItsCurvatureOnItsSeamJoinsItsNeighbour) {
   const TwoHalves m;
   // The 5 seam vertices off the boundary carry more than the 25 interior ones of either half.
   const SolveGroups s = solve_groups(m.grid.F, m.patch, m.boundary, m.curvature(0.1, 1.0));
-  ASSERT_EQ(s.merged.size(), 1u);
-  const PatchMerge& join = s.merged[0];
+  ASSERT_EQ(s.joins.size(), 1u);
+  const PatchJoin& join = s.joins[0];
   EXPECT_EQ(join.faces, 72);
+  EXPECT_EQ(join.reason, JoinReason::CurvatureOnSeams);
   for (size_t f = 0; f < s.group.size(); ++f) EXPECT_EQ(s.group[f], join.group);
   EXPECT_NE(join.patch, join.group);
+}
+
+// A strip one cell wide along the open boundary has no interior vertex: it joins its neighbour
+// whatever the curvature, and the join says why.
+TEST(SolveGroups, AStripWithNoInteriorVertexJoinsForItsSeams) {
+  TwoHalves m;
+  for (int f = 0; f < m.grid.F.rows(); ++f) m.patch[static_cast<size_t>(f)] = (f / 2) % 12 == 11;
+  for (const std::vector<double>& k : {std::vector<double>{}, m.curvature(1.0, 0.0)}) {
+    const SolveGroups s = solve_groups(m.grid.F, m.patch, m.boundary, k);
+    ASSERT_EQ(s.joins.size(), 1u);
+    EXPECT_EQ(s.joins[0].patch, 1);
+    EXPECT_EQ(s.joins[0].group, 0);
+    EXPECT_EQ(s.joins[0].faces, 12);
+    EXPECT_EQ(s.joins[0].reason, JoinReason::MostlySeams);
+  }
 }
 
 }  // namespace

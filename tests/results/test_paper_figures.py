@@ -43,7 +43,7 @@ def test_garments_never_get_worse(name):
     r, flips, seam_move = pf.garment(BUILD, path)
     assert flips == 0
     assert r["total_after"]["g_abd"] <= r["total_before"]["g_abd"]
-    assert seam_move == 0.0  # the held seams: those the log names as solved together may move
+    assert seam_move == 0.0  # the held seams: those the report joins may move
     assert all(p["fit_residual_deg"] >= 0 for p in r["patches"])
 
 

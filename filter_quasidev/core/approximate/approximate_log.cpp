@@ -102,17 +102,19 @@ std::vector<std::string> advice(const Result& r, const Params& params, double he
 
 }  // namespace
 
-std::vector<std::string> approximate_log(const Result& r, const std::vector<PatchMerge>& merged,
+std::vector<std::string> approximate_log(const Result& r,
                                          const std::vector<std::vector<int>>& reruns,
                                          const Params& params, double held_share) {
   std::vector<std::string> log;
   for (const std::string& w : r.warnings) log.push_back("warning: " + w);
-  for (const PatchMerge& m : merged)
-    log.push_back("note: patch " + std::to_string(m.patch) + " (" + std::to_string(m.faces) +
-                  (m.faces == 1 ? " face" : " faces") +
-                  ") has most of its vertices or of its curvature on seams: it is solved together "
-                  "with patch " +
-                  std::to_string(m.group) + ", and the seam between them moves");
+  for (const PatchJoin& j : r.joins)
+    log.push_back("note: patch " + std::to_string(j.patch) + " (" + std::to_string(j.faces) +
+                  (j.faces == 1 ? " face" : " faces") + ") has " +
+                  (j.reason == JoinReason::MostlySeams
+                       ? "most of its vertices on seams"
+                       : "more of its curvature on its seams than inside") +
+                  ": it is solved together with patch " + std::to_string(j.group) +
+                  ", and the seam between them moves");
   for (const std::vector<int>& ids : reruns) {
     std::string list;
     for (int id : ids) list += (list.empty() ? "" : ", ") + std::to_string(id);
@@ -130,11 +132,11 @@ std::vector<std::string> approximate_log(const Result& r, const std::vector<Patc
   return log;
 }
 
-std::string joins_note(size_t joins, double joined, double held, bool kept_joined) {
+std::string join_trial_note(const JoinTrial& t) {
   return format_text(
-      "note: %zu more patch(es) hold most of their curvature on their seams: solved with them "
-      "joined to a neighbour, G_ABD −%.1f%%, and with their seams held, −%.1f%%: kept %s",
-      joins, joined, held, kept_joined ? "joined" : "held");
+      "note: %d patch(es) have more of their curvature on their seams than inside: solved with "
+      "them joined to a neighbour, G_ABD −%.1f%%, and with their seams held, −%.1f%%: kept %s",
+      t.patches, t.joined, t.held, t.kept_joined ? "joined" : "held");
 }
 
 std::string segmented_note(const std::string& why, int count, const SettingText& setting) {

@@ -8,21 +8,19 @@
 #include "approximate/params.h"
 #include "approximate/result.h"
 #include "approximate/setting_text.h"
-#include "approximate/solve_groups.h"
 
 namespace qd::approximate {
 
-// The log of a solve: its warnings, the patches solved in another's group, the rounds solved
-// again (solve_schedule.h), a line per patch, the total and, when little was removed, advice.
-// held_share: percent of the input's G_ABD on interior vertices that no group moved.
-std::vector<std::string> approximate_log(const Result& r, const std::vector<PatchMerge>& merged,
+// The log of a solve: its warnings, the patches solved in another's group (r.joins), the rounds
+// solved again (solve_schedule.h), a line per patch, the total and, when little was removed,
+// advice. held_share: percent of the input's G_ABD on interior vertices that no group moved.
+std::vector<std::string> approximate_log(const Result& r,
                                          const std::vector<std::vector<int>>& reruns,
                                          const Params& params, double held_share);
 
-// The note of a mesh solved both with the patches that hold most of their curvature on their
-// seams joined to a neighbour (`joins` more joins, reduction `joined` percent) and with them
-// held (`held` percent), and which was kept.
-std::string joins_note(size_t joins, double joined, double held, bool kept_joined);
+// The note of a mesh solved both with the patches that have more of their curvature on their
+// seams than inside joined to a neighbour and with their seams held, and which was kept.
+std::string join_trial_note(const JoinTrial& trial);
 
 // The note of a mesh without patch ids that the engine split into `count` patches.
 std::string segmented_note(const std::string& why, int count, const SettingText& setting);

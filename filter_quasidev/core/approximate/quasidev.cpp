@@ -31,10 +31,11 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// Algorithm 1 over the patches of `patch`, solved in the groups of `solve`.
+// Algorithm 1 over the patches of `patch`, solved in the groups of `solve`; k_input: K of the
+// input per vertex (Eq. 18).
 Result solve_in_groups(const Problem& problem, const Topology& patch_topo,
                        const std::vector<int>& patch, const SolveGroups& solve,
-                       const VertexAngles& input_angles, const Progress& progress) {
+                       const std::vector<double>& k_input, const Progress& progress) {
   const auto t0 = Clock::now();
   const Params& params = problem.params;
   const Positions& V = problem.V;
@@ -42,7 +43,7 @@ Result solve_in_groups(const Problem& problem, const Topology& patch_topo,
   const size_t nv = static_cast<size_t>(V.rows()), nf = static_cast<size_t>(F.rows());
   assert(solve.group.size() == nf);
   const Topology topo =
-      solve.merged.empty() ? patch_topo : analyse_topology(F, static_cast<int>(nv), solve.group);
+      solve.joins.empty() ? patch_topo : analyse_topology(F, static_cast<int>(nv), solve.group);
   const VertexRoles roles = vertex_roles(problem, topo, params.seams);
   const std::vector<char> held = vertex_roles(problem, topo, SeamMode::Fixed).constrained;
   const VertexFaces incident(F, V.rows());
@@ -50,8 +51,9 @@ Result solve_in_groups(const Problem& problem, const Topology& patch_topo,
   Result r;
   r.warnings = warnings(topo);
   r.average_edge = average_edge_length(V, F);
-  r.k_before = gaussian_curvature(input_angles, roles.interior);
-  r.times.setup += ms_since(t0);  // validation, topology, the input's figures
+  r.k_before = k_input;
+  r.joins = solve.joins;
+  r.times.setup += ms_since(t0);  // validation, topology
 
   const SolveInput in{V, F, patch, roles.interior, incident, params, r.average_edge};
   const SolveSchedule schedule = run_schedule(in, solve.group, roles.constrained, held, progress);
@@ -74,7 +76,7 @@ Result solve_in_groups(const Problem& problem, const Topology& patch_topo,
   }
   for (auto& [id, rep] : reports.patches) r.patches.push_back(std::move(rep));
   r.time_ms = ms_since(t0);
-  r.log = approximate_log(r, solve.merged, schedule.reruns, params,
+  r.log = approximate_log(r, schedule.reruns, params,
                           held_curvature_share(r.k_before, roles.interior, roles.constrained));
   return r;
 }
@@ -100,26 +102,32 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
                            const Progress& progress) {
   const auto t0 = Clock::now();
   const Triangles& F = problem.F;
-  const size_t nv = static_cast<size_t>(problem.V.rows()), nf = static_cast<size_t>(F.rows());
+  const size_t nf = static_cast<size_t>(F.rows());
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
-  const VertexAngles input_angles = vertex_angles(problem.V, F);
-  std::vector<char> off_boundary(nv);
-  for (size_t v = 0; v < nv; ++v) off_boundary[v] = !patch_topo.boundary[v];
-  std::vector<double> curvature = gaussian_curvature(input_angles, off_boundary);  // Eq. 18
-  for (double& k : curvature) k = std::abs(k);
+  // The interior vertices do not depend on the solve groups (vertex_roles).
+  const std::vector<double> k_input = gaussian_curvature(
+      vertex_angles(problem.V, F), vertex_roles(problem, patch_topo, SeamMode::Fixed).interior);
+  std::vector<double> curvature(k_input.size());  // |K|, Eq. 18
+  std::transform(k_input.begin(), k_input.end(), curvature.begin(),
+                 [](double k) { return std::abs(k); });
   const SolveGroups held = solve_groups(F, patch, patch_topo.boundary, {});
   const SolveGroups joined = solve_groups(F, patch, patch_topo.boundary, curvature);
   const bool both = joined.group != held.group;
-  Result r = solve_in_groups(problem, patch_topo, patch, held, input_angles,
+  Result r = solve_in_groups(problem, patch_topo, patch, held, k_input,
                              share_of(progress, 0, both ? 2 : 1));
   if (both) {
     Result j =
-        solve_in_groups(problem, patch_topo, patch, joined, input_angles, share_of(progress, 1, 2));
-    const bool keep_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
-    const std::string note = joins_note(joined.merged.size() - held.merged.size(), j.abd_reduction,
-                                        r.abd_reduction, keep_joined);
-    if (keep_joined) r = std::move(j);
-    r.log.insert(r.log.begin(), note);
+        solve_in_groups(problem, patch_topo, patch, joined, k_input, share_of(progress, 1, 2));
+    JoinTrial trial;
+    trial.patches = static_cast<int>(
+        std::count_if(joined.joins.begin(), joined.joins.end(),
+                      [](const PatchJoin& p) { return p.reason == JoinReason::CurvatureOnSeams; }));
+    trial.joined = j.abd_reduction;
+    trial.held = r.abd_reduction;
+    trial.kept_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
+    if (trial.kept_joined) r = std::move(j);
+    r.join_trial = trial;
+    r.log.insert(r.log.begin(), join_trial_note(trial));
   }
   r.time_ms = ms_since(t0);
   if (progress) progress(100, "done");

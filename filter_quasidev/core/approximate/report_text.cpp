@@ -22,6 +22,10 @@ const char* term_name(Term t) {
   return "";
 }
 
+const char* join_reason_name(JoinReason r) {
+  return r == JoinReason::MostlySeams ? "mostly seams" : "curvature on seams";
+}
+
 const char* target_kind_name(TargetKind k) {
   switch (k) {
     case TargetKind::Curve:

@@ -18,6 +18,9 @@ const char* target_kind_name(TargetKind k);
 // "all patches at once", "seams held", "seams free"; "" for the only pass.
 const char* pass_name(SolvePass pass);
 
+// "mostly seams", "curvature on seams".
+const char* join_reason_name(JoinReason r);
+
 // Why a patch takes its term; the race's figures when it was measured.
 std::string term_choice_text(const PatchReport& p);
 

@@ -1,6 +1,7 @@
 // Output of the engine: new positions, per-vertex figures, per-patch and total reports.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,29 @@ struct StageTimes {
   }
 };
 
+// Why a patch is solved in a neighbour's solve group (solve_groups.h).
+enum class JoinReason {
+  MostlySeams,      // fewer interior vertices than seam and boundary ones: always joined
+  CurvatureOnSeams  // more |K| on its seam vertices than inside: joined where that is measured
+                    // to remove more (JoinTrial)
+};
+
+struct PatchJoin {
+  int patch = 0;  // a patch id
+  int faces = 0;
+  int group = 0;  // the patch id of the group it is solved in
+  JoinReason reason = JoinReason::MostlySeams;
+};
+
+// The mesh solved both with the patches that hold most of their curvature on their seams
+// joined to a neighbour and with their seams held (quasidev.cpp), and which was kept.
+struct JoinTrial {
+  int patches = 0;    // patches joined for their curvature on seams
+  double joined = 0;  // G_ABD reduction with them joined, percent
+  double held = 0;    // with their seams held, percent
+  bool kept_joined = false;
+};
+
 struct PatchReport {
   int id = 0;
   int faces = 0;
@@ -127,8 +151,10 @@ struct Result {
   int factorizations = 0;    // sparse Cholesky numeric factorisations performed
   StageTimes times;          // per stage; time_ms is the wall-clock total
   double time_ms = 0;
-  std::vector<int> segmented_patch;   // patch id per face when the engine split the mesh first
-                                      // (segment_first.h), else empty
+  std::vector<int> segmented_patch;     // patch id per face when the engine split the mesh first
+                                        // (segment_first.h), else empty
+  std::vector<PatchJoin> joins;         // patches solved in a neighbour's group, by patch id
+  std::optional<JoinTrial> join_trial;  // when both groupings were solved
   std::vector<std::string> warnings;  // parts of the mesh left as they are (validate.h warnings())
   std::vector<std::string> log;       // human-readable lines: the warnings, one per patch, total
 };

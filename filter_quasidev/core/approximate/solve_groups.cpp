@@ -41,10 +41,11 @@ std::vector<EdgeFaces> edge_faces(const Triangles& F) {
 
 // One round: every group whose seams, held, would keep most of what it has (more of its
 // vertices, or, when curvature is given, more of its curvature on seams than inside) joins its
-// best neighbour, unless a group it touches changed this round. False when none did.
+// best neighbour, unless a group it touches changed this round; `reason` gets why, per group
+// id that joined. False when none did.
 bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
                  const std::vector<char>& boundary, const std::vector<double>& curvature,
-                 std::vector<int>& group) {
+                 std::vector<int>& group, std::map<int, JoinReason>& reason) {
   const size_t nv = boundary.size();
   std::vector<std::vector<int>> at(nv);  // groups of each vertex's faces
   for (Eigen::Index f = 0; f < F.rows(); ++f)
@@ -78,8 +79,8 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
   std::map<int, int> into;  // group -> the group it joins this round
   std::map<int, char> touched;
   for (const auto& [g, n] : total) {
-    const bool held_keeps_most = 2 * interior[g] < n || k_seam[g] > k_inside[g];
-    if (!held_keeps_most || touched[g]) continue;
+    const bool mostly_seams = 2 * interior[g] < n;
+    if (!(mostly_seams || k_seam[g] > k_inside[g]) || touched[g]) continue;
     int best = -1, most = 0;
     for (const auto& [h, count] : shared[g]) {
       const auto it = alike.find(std::make_pair(std::min(g, h), std::max(g, h)));
@@ -87,6 +88,7 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
     }
     if (best < 0) continue;
     into[g] = best;
+    reason[g] = mostly_seams ? JoinReason::MostlySeams : JoinReason::CurvatureOnSeams;
     touched[g] = touched[best] = 1;
   }
   for (int& g : group) {
@@ -106,17 +108,19 @@ SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
   if (std::adjacent_find(patch.begin(), patch.end(), std::not_equal_to<int>()) == patch.end())
     return out;  // one patch
   const std::vector<EdgeFaces> edges = edge_faces(F);
-  while (merge_round(F, edges, boundary, curvature, out.group)) {
+  std::map<int, JoinReason> reason;  // a group keeps its patch id until it joins another
+  while (merge_round(F, edges, boundary, curvature, out.group, reason)) {
   }
-  std::map<int, PatchMerge> merged;
+  std::map<int, PatchJoin> joins;
   for (size_t f = 0; f < patch.size(); ++f)
     if (out.group[f] != patch[f]) {
-      PatchMerge& m = merged[patch[f]];
-      m.patch = patch[f];
-      m.group = out.group[f];
-      ++m.faces;
+      PatchJoin& j = joins[patch[f]];
+      j.patch = patch[f];
+      j.group = out.group[f];
+      j.reason = reason.at(patch[f]);
+      ++j.faces;
     }
-  for (const auto& [id, m] : merged) out.merged.push_back(m);
+  for (const auto& [id, j] : joins) out.joins.push_back(j);
   return out;
 }
 

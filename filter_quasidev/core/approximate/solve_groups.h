@@ -18,19 +18,14 @@
 #include <vector>
 
 #include "approximate/common_names.h"
+#include "approximate/result.h"
 #include "common/mesh.h"
 
 namespace qd::approximate {
 
-struct PatchMerge {
-  int patch = 0;  // a patch id
-  int faces = 0;
-  int group = 0;  // the patch id of the group it is solved in
-};
-
 struct SolveGroups {
-  std::vector<int> group;          // per face: its solve group (a patch id of the group)
-  std::vector<PatchMerge> merged;  // the patches solved in another's group, by patch id
+  std::vector<int> group;        // per face: its solve group (a patch id of the group)
+  std::vector<PatchJoin> joins;  // the patches solved in another's group, by patch id
 };
 
 // patch: patch id per face (one per face); boundary: per vertex, on an open boundary edge;
