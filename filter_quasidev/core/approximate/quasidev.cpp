@@ -125,7 +125,9 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
     trial.joined = j.abd_reduction;
     trial.held = r.abd_reduction;
     trial.kept_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
-    if (trial.kept_joined) r = std::move(j);
+    if (trial.kept_joined) std::swap(r, j);
+    r.times += j.times;  // the whole mesh's stages count the solve not kept too
+    r.factorizations = r.times.factorizations;
     r.join_trial = trial;
     r.log.insert(r.log.begin(), join_trial_note(trial));
   }

@@ -149,7 +149,8 @@ struct Result {
   Figures total_after;
   double abd_reduction = 0;  // whole mesh, percent
   int factorizations = 0;    // sparse Cholesky numeric factorisations performed
-  StageTimes times;          // per stage; time_ms is the wall-clock total
+  StageTimes times;          // per stage (with a join trial, of both solves); time_ms is the
+                             // wall-clock total
   double time_ms = 0;
   std::vector<int> segmented_patch;     // patch id per face when the engine split the mesh first
                                         // (segment_first.h), else empty
