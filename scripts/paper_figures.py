@@ -59,14 +59,15 @@ def flipped_faces(before, after):
     return sum(1 for a, b in zip(n0, n1) if sum(x * y for x, y in zip(a, b)) <= 0)
 
 
-def solve_groups(report):
-    """Patch id -> its solve group, from the report's `joins` (patches solved in another's group)."""
-    group = {j["patch"]: j["group"] for j in report["joins"]}
+def solve_groups(report=None):
+    """Patch id -> its solve group, from the report's `joins` (patches solved in another's group);
+    without a report, each patch its own."""
+    group = {j["patch"]: j["group"] for j in report["joins"]} if report else {}
     return lambda p: group.get(p, p)
 
 
-def seam_vertices(ply, group=lambda p: p):
-    """The vertices whose faces lie in more than one solve group (by default, one per patch)."""
+def seam_vertices(ply, group):
+    """The vertices whose faces lie in more than one solve group."""
     group_of = {}
     seams = set()
     for face, q in zip(faces(ply), column(ply, "face", "quality")):
@@ -80,7 +81,7 @@ def max_seam_move(before, after, report=None):
     """The largest move of a seam vertex; with a report, of the seams it held (not those between
     patches its `joins` say were solved together)."""
     vb, va = positions(before), positions(after)
-    seams = seam_vertices(before, solve_groups(report) if report else (lambda p: p))
+    seams = seam_vertices(before, solve_groups(report))
     return max((math.dist(vb[v], va[v]) for v in seams), default=0.0)
 
 

@@ -110,8 +110,7 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   std::vector<double> curvature(k_input.size());  // |K|, Eq. 18
   std::transform(k_input.begin(), k_input.end(), curvature.begin(),
                  [](double k) { return std::abs(k); });
-  const SolveGroups held = solve_groups(F, patch, patch_topo.boundary, {});
-  const SolveGroups joined = solve_groups(F, patch, patch_topo.boundary, curvature);
+  const auto [held, joined] = solve_groups(F, patch, patch_topo.boundary, curvature);
   const bool both = joined.group != held.group;
   Result r = solve_in_groups(problem, patch_topo, patch, held, k_input,
                              share_of(progress, 0, both ? 2 : 1));

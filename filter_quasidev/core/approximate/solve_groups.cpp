@@ -98,16 +98,12 @@ bool merge_round(const Triangles& F, const std::vector<EdgeFaces>& edges,
   return !into.empty();
 }
 
-}  // namespace
-
-SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
-                         const std::vector<char>& boundary, const std::vector<double>& curvature) {
-  assert(patch.size() == static_cast<size_t>(F.rows()));
+// The groups of `patch` by the rules of merge_round, over the mesh's two-face edges.
+SolveGroups group_patches(const Triangles& F, const std::vector<int>& patch,
+                          const std::vector<EdgeFaces>& edges, const std::vector<char>& boundary,
+                          const std::vector<double>& curvature) {
   SolveGroups out;
   out.group = patch;
-  if (std::adjacent_find(patch.begin(), patch.end(), std::not_equal_to<int>()) == patch.end())
-    return out;  // one patch
-  const std::vector<EdgeFaces> edges = edge_faces(F);
   std::map<int, JoinReason> reason;  // a group keeps its patch id until it joins another
   while (merge_round(F, edges, boundary, curvature, out.group, reason)) {
   }
@@ -121,6 +117,23 @@ SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
       ++j.faces;
     }
   for (const auto& [id, j] : joins) out.joins.push_back(j);
+  return out;
+}
+
+}  // namespace
+
+SolveGroupings solve_groups(const Triangles& F, const std::vector<int>& patch,
+                            const std::vector<char>& boundary,
+                            const std::vector<double>& curvature) {
+  assert(patch.size() == static_cast<size_t>(F.rows()));
+  SolveGroupings out;
+  if (std::adjacent_find(patch.begin(), patch.end(), std::not_equal_to<int>()) == patch.end()) {
+    out.held.group = out.joined.group = patch;  // one patch
+    return out;
+  }
+  const std::vector<EdgeFaces> edges = edge_faces(F);  // a sort of all corners: 0.4 s at 1.5M faces
+  out.held = group_patches(F, patch, edges, boundary, {});
+  out.joined = curvature.empty() ? out.held : group_patches(F, patch, edges, boundary, curvature);
   return out;
 }
 

@@ -28,9 +28,18 @@ struct SolveGroups {
   std::vector<PatchJoin> joins;  // the patches solved in another's group, by patch id
 };
 
+// The groups by the first rule alone, every other seam held, and by both rules: the two ways
+// quasidev.cpp solves a mesh and compares.
+struct SolveGroupings {
+  SolveGroups held;
+  SolveGroups joined;
+};
+
 // patch: patch id per face (one per face); boundary: per vertex, on an open boundary edge;
-// curvature: per vertex, |K| of the input (Eq. 18), or empty for the first rule alone.
-SolveGroups solve_groups(const Triangles& F, const std::vector<int>& patch,
-                         const std::vector<char>& boundary, const std::vector<double>& curvature);
+// curvature: per vertex, |K| of the input (Eq. 18), or empty for the first rule alone (then
+// joined is held). The mesh's edges are looked up once for both.
+SolveGroupings solve_groups(const Triangles& F, const std::vector<int>& patch,
+                            const std::vector<char>& boundary,
+                            const std::vector<double>& curvature);
 
 }  // namespace qd::approximate
