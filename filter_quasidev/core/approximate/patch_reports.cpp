@@ -63,7 +63,7 @@ SolveReports patch_reports(const SolveSchedule& s, const Params& params, size_t 
   out.initial_target.resize(faces);
   for (const ScheduledRun& scheduled : s.runs) {
     const GroupRun& run = scheduled.run;
-    out.times += run.outcome.times;
+    if (!scheduled.reused) out.times += run.outcome.times;  // the work of this solve
     assert(run.targets.size() == static_cast<size_t>(run.group.solve_faces));
     for (size_t f = 0; f < run.targets.size(); ++f)
       out.initial_target[static_cast<size_t>(run.group.global_face[f])] = run.targets[f];

@@ -31,11 +31,19 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
+// A solve's result, and its groups' fresh runs for another grouping of the same mesh.
+struct GroupedSolve {
+  Result result;
+  std::vector<ScheduledRun> fresh;
+};
+
 // Algorithm 1 over the patches of `patch`, solved in the groups of `solve`; k_input: K of the
-// input per vertex (Eq. 18).
-Result solve_in_groups(const Problem& problem, const Topology& patch_topo,
-                       const std::vector<int>& patch, const SolveGroups& solve,
-                       const std::vector<double>& k_input, const Progress& progress) {
+// input per vertex (Eq. 18); earlier: fresh runs of another grouping's solve, taken where a
+// group would repeat one.
+GroupedSolve solve_in_groups(const Problem& problem, const Topology& patch_topo,
+                             const std::vector<int>& patch, const SolveGroups& solve,
+                             const std::vector<double>& k_input,
+                             const std::vector<ScheduledRun>& earlier, const Progress& progress) {
   const auto t0 = Clock::now();
   const Params& params = problem.params;
   const Positions& V = problem.V;
@@ -56,7 +64,8 @@ Result solve_in_groups(const Problem& problem, const Topology& patch_topo,
   r.times.setup += ms_since(t0);  // validation, topology
 
   const SolveInput in{V, F, patch, roles.interior, incident, params, r.average_edge};
-  const SolveSchedule schedule = run_schedule(in, solve.group, roles.constrained, held, progress);
+  SolveSchedule schedule =
+      run_schedule(in, solve.group, roles.constrained, held, earlier, progress);
   r.V = schedule.V;
   assert(r.V.rows() == V.rows());  // the output keeps the input's vertex order
   SolveReports reports = patch_reports(schedule, params, nf);
@@ -78,7 +87,7 @@ Result solve_in_groups(const Problem& problem, const Topology& patch_topo,
   r.time_ms = ms_since(t0);
   r.log = approximate_log(r, schedule.reruns, params,
                           held_curvature_share(r.k_before, roles.interior, roles.constrained));
-  return r;
+  return {std::move(r), fresh_runs(std::move(schedule))};
 }
 
 // Joined seams are kept when they remove at least this much more of G_ABD (percentage points,
@@ -112,11 +121,14 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
                  [](double k) { return std::abs(k); });
   const auto [held, joined] = solve_groups(F, patch, patch_topo.boundary, curvature);
   const bool both = joined.group != held.group;
-  Result r = solve_in_groups(problem, patch_topo, patch, held, k_input,
-                             share_of(progress, 0, both ? 2 : 1));
+  GroupedSolve first = solve_in_groups(problem, patch_topo, patch, held, k_input, {},
+                                       share_of(progress, 0, both ? 2 : 1));
+  Result r = std::move(first.result);
   if (both) {
-    Result j =
-        solve_in_groups(problem, patch_topo, patch, joined, k_input, share_of(progress, 1, 2));
+    // The groups no join changes are not solved again: their runs from the held solve are taken.
+    Result j = solve_in_groups(problem, patch_topo, patch, joined, k_input, first.fresh,
+                               share_of(progress, 1, 2))
+                   .result;
     JoinTrial trial;
     trial.patches = static_cast<int>(
         std::count_if(joined.joins.begin(), joined.joins.end(),
@@ -125,7 +137,7 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
     trial.held = r.abd_reduction;
     trial.kept_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
     if (trial.kept_joined) std::swap(r, j);
-    r.times += j.times;  // the whole mesh's stages count the solve not kept too
+    r.times += j.times;  // the whole mesh's stages count the work of both solves, once
     r.factorizations = r.times.factorizations;
     r.join_trial = trial;
     r.log.insert(r.log.begin(), join_trial_note(trial));

@@ -9,6 +9,7 @@
 
 #include "approximate/common_names.h"
 #include "approximate/solve_rounds.h"
+#include "common/idle_threads.h"
 #include "common/metrics.h"
 #include "common/parallel_for.h"
 #include "common/serial_libraries.h"
@@ -66,11 +67,44 @@ bool round_made_worse(const RoundFigures& before, const RoundFigures& after,
   return false;
 }
 
+// No earlier pass has decided a term for the group's patches: its run depends on its faces,
+// their positions and constraints only, none of which another grouping of the other faces
+// changes.
+bool undecided(const GroupRun& run, const DecidedTerms& decided) {
+  return std::none_of(run.fits.begin(), run.fits.end(),
+                      [&](const PatchFit& fit) { return decided.count(fit.id) > 0; });
+}
+
+// A fresh run of another solve that running `faces` in pass `pass` now would repeat: the same
+// faces and vertices held, the same positions to start from and the same input (bitwise: the
+// same start, not a close one), nothing decided here either.
+const ScheduledRun* repeated_run(const std::vector<ScheduledRun>& earlier, SolvePass pass,
+                                 const std::vector<int>& faces,
+                                 const std::vector<char>& constrained, const Positions& V,
+                                 const Positions& input, const DecidedTerms& decided) {
+  for (const ScheduledRun& e : earlier) {
+    const GroupMesh& g = e.run.group;
+    if (!e.fresh || e.pass != pass || static_cast<size_t>(g.solve_faces) != faces.size() ||
+        !std::equal(faces.begin(), faces.end(), g.global_face.begin()))
+      continue;
+    for (size_t l = 0; l < g.global_vertex.size(); ++l) {
+      const auto v = static_cast<Eigen::Index>(g.global_vertex[l]);
+      const auto lv = static_cast<Eigen::Index>(l);
+      const bool solved = lv < g.solve_vertices;
+      if ((solved && g.fixed[l] != constrained[static_cast<size_t>(v)]) ||
+          V.row(v) != g.V0.row(lv) || input.row(v) != g.V_input.row(lv))
+        return nullptr;
+    }
+    return undecided(e.run, decided) ? &e : nullptr;
+  }
+  return nullptr;
+}
+
 }  // namespace
 
 SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
                            const std::vector<char>& constrained, const std::vector<char>& held,
-                           const Progress& progress) {
+                           const std::vector<ScheduledRun>& earlier, const Progress& progress) {
   const Params& params = in.params;
   const Triangles& F = in.F;
   std::map<int, std::vector<int>> faces_of_group;
@@ -112,9 +146,21 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
   const SerialLibraries serial_libraries;
   const size_t threads = thread_count(params.threads);
   const auto run_round = [&](const std::vector<size_t>& round, const Pass& p) {
-    Params group_params = params;  // a patch alone in its round has every thread
-    group_params.threads = static_cast<int>(round.size() == 1 ? threads : 1);
+    for (size_t gi : round)  // a fresh run about to be replaced is kept for another grouping
+      if (out.runs[gi].fresh) {
+        out.replaced.push_back(std::move(out.runs[gi]));
+        out.runs[gi] = ScheduledRun();
+      }
+    std::vector<const ScheduledRun*> repeated(round.size());
+    for (size_t k = 0; k < round.size(); ++k)
+      repeated[k] =
+          repeated_run(earlier, p.name, groups[round[k]], *p.constrained, out.V, in.input, decided);
+    Params group_params = params;  // a group alone to run in its round has every thread
+    group_params.threads =
+        static_cast<int>(std::count(repeated.begin(), repeated.end(), nullptr) == 1 ? threads : 1);
+    IdleThreads idle(threads);
     parallel_for(round.size(), std::min(round.size(), threads), [&](size_t k) {
+      idle.hold();
       // Only the caller's thread reports; below 100 % even when groups run again (rare).
       const auto group_progress = [&](double fraction) {
         if (progress && std::this_thread::get_id() == caller)
@@ -122,10 +168,19 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
                                                  static_cast<double>(groups.size()))),
                    "deforming");
       };
-      out.runs[round[k]] = {run_group(in, out.V, groups[round[k]], *p.constrained, group_params,
-                                      decided, p.per_group, group_progress),
-                            p.name};
+      ScheduledRun& here = out.runs[round[k]];
+      if (const ScheduledRun* same = repeated[k]) {
+        here = *same;
+        here.reused = true;
+      } else {
+        here.run = run_group(in, out.V, groups[round[k]], *p.constrained, group_params, decided,
+                             p.per_group, &idle, group_progress);
+        here.pass = p.name;
+        here.fresh = undecided(here.run, decided);
+        here.reused = false;
+      }
       ++done;
+      idle.release();
     });
     if (p.per_group)  // the per-patch races decide for the later passes
       for (size_t gi : round)
@@ -168,6 +223,13 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
       }
     }
   }
+  return out;
+}
+
+std::vector<ScheduledRun> fresh_runs(SolveSchedule&& s) {
+  std::vector<ScheduledRun> out = std::move(s.replaced);
+  for (ScheduledRun& run : s.runs)
+    if (run.fresh) out.push_back(std::move(run));
   return out;
 }
 

@@ -19,18 +19,28 @@ namespace qd::approximate {
 struct ScheduledRun {
   GroupRun run;
   SolvePass pass = SolvePass::Only;
+  // Ran with no term decided for its patches by an earlier pass: a run of the same faces in the
+  // same pass, from the same positions under the same constraints, repeats it exactly.
+  bool fresh = false;
+  bool reused = false;  // taken from another solve's fresh run (its time is counted there)
 };
 
 struct SolveSchedule {
   Positions V;                           // the positions after the last pass
   std::vector<ScheduledRun> runs;        // the groups' last runs, pass by pass
   std::vector<std::vector<int>> reruns;  // the patch ids of each round solved again in turn
+  std::vector<ScheduledRun> replaced;    // fresh runs of groups that then ran again
 };
 
 // group: solve group per face (solve_groups.h); constrained: per vertex, held with free seams;
-// held: held with fixed seams.
+// held: held with fixed seams; earlier: fresh runs of another solve of the same input (a join
+// trial's other grouping), taken instead of running a group they repeat.
 SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
                            const std::vector<char>& constrained, const std::vector<char>& held,
-                           const Progress& progress);
+                           const std::vector<ScheduledRun>& earlier, const Progress& progress);
+
+// The fresh runs of a schedule, those of groups that ran again included: what another
+// grouping's run_schedule takes as `earlier`.
+std::vector<ScheduledRun> fresh_runs(SolveSchedule&& s);
 
 }  // namespace qd::approximate

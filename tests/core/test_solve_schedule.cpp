@@ -1,0 +1,86 @@
+// A solve in a second grouping of the same mesh (a join trial's, solve_schedule.h) takes the
+// runs of the groups the first grouping left unchanged instead of solving them again, and only
+// those.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "approximate/solve_schedule.h"
+#include "approximate/validate.h"
+#include "common/mesh.h"
+#include "common/topology.h"
+#include "test_meshes.h"
+
+namespace qd {
+namespace {
+
+using namespace qd::approximate;
+using namespace qd::common;
+
+// The schedule of `problem` in the groups `group`, with fixed seams, as the engine runs it.
+SolveSchedule schedule(const Problem& problem, const std::vector<int>& group,
+                       const std::vector<ScheduledRun>& earlier) {
+  const Topology topo = analyse_topology(problem.F, static_cast<int>(problem.V.rows()), group);
+  const VertexRoles roles = vertex_roles(problem, topo, SeamMode::Fixed);
+  const VertexFaces incident(problem.F, problem.V.rows());
+  const SolveInput in{problem.V,
+                      problem.F,
+                      problem.patch,
+                      roles.interior,
+                      incident,
+                      problem.params,
+                      average_edge_length(problem.V, problem.F)};
+  return run_schedule(in, group, roles.constrained, roles.constrained, earlier, nullptr);
+}
+
+// The groups whose first run was taken from `earlier` (some may have run again since).
+size_t reused(const SolveSchedule& s) {
+  size_t n = 0;
+  for (const auto* runs : {&s.runs, &s.replaced})
+    n += static_cast<size_t>(
+        std::count_if(runs->begin(), runs->end(), [](const ScheduledRun& r) { return r.reused; }));
+  return n;
+}
+
+TEST(SolveSchedule, ASecondGroupingSolvesOnlyTheGroupsItChanges) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 6);
+  p.params.max_iter = 4;
+  p.params.tolerance = 0.2;
+  validate(p);
+  std::vector<int> joined = p.patch;  // patches 0 and 1 in one group, the others as they were
+  for (int& g : joined) g = g == 1 ? 0 : g;
+
+  std::vector<ScheduledRun> held = fresh_runs(schedule(p, p.patch, {}));
+  ASSERT_EQ(held.size(), 6u);  // each group's first run started from the input
+  for (const ScheduledRun& r : held) EXPECT_TRUE(r.fresh && !r.reused);
+
+  const SolveSchedule again = schedule(p, joined, held);
+  const SolveSchedule alone = schedule(p, joined, {});
+  ASSERT_EQ(again.runs.size(), 5u);
+  EXPECT_FALSE(again.runs.front().reused);  // patches 0 and 1: a group of its own now
+  EXPECT_FALSE(again.reruns.empty());       // the never-worse rule ran some groups again
+  EXPECT_EQ(reused(again), 4u);             // patches 2 to 5
+  EXPECT_EQ(reused(alone), 0u);
+  // Taking a run is solving the group again: the same positions, bit for bit (the engine's
+  // solves are deterministic), also where the never-worse rule then runs groups again.
+  EXPECT_TRUE((again.V.array() == alone.V.array()).all());
+  EXPECT_TRUE((again.V.array() != p.V.array()).any());
+}
+
+TEST(SolveSchedule, RunsFromAnotherStartAreNotTaken) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 6);
+  p.params.max_iter = 2;
+  validate(p);
+  const std::vector<ScheduledRun> first = fresh_runs(schedule(p, p.patch, {}));
+  Problem moved = p;  // the same mesh one vertex inside patch 3 apart
+  moved.V(12 * 48 + 28, 0) += 1e-9;
+  const SolveSchedule second = schedule(moved, moved.patch, first);
+  EXPECT_EQ(reused(second), 5u);  // every group but patch 3's
+  for (const auto* runs : {&second.runs, &second.replaced})
+    for (const ScheduledRun& r : *runs)  // patch 3's start differs, by however little
+      EXPECT_FALSE(r.reused && r.run.fits.front().id == 3);
+}
+
+}  // namespace
+}  // namespace qd
