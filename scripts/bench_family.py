@@ -12,7 +12,11 @@ except --max-iter 5:
             sample_meshes/draped_panels.ply), the same with drape noise, and re-cut into 2 to 8
             panels by `quasidev segment --target N`; --runs runs each (medians).
 Per family: the worst member (most engine time), the median and the best, the targets on the
-worst, and a per-member table. Writes OUT/benchmark-family.md and .json and prints the markdown.
+worst, and a per-member table. Where a target is missed, the bound: the factorisations' flops
+(CHOLMOD's count, in the report) against the machine's dense rate (a one-thread matrix product,
+measured at the start), as the time they would take at that rate on every core. Writes
+OUT/benchmark-family.md and .json and prints the markdown; a family not run this time is kept
+from OUT/benchmark-family.json.
 
 Usage: scripts/bench_family.py [--build DIR] [--families 1M garments] [--quick] [--size N]
                                [--runs R] [--big-runs R] [--cache DIR] [--out DIR]
@@ -170,6 +174,22 @@ def garment_family(a, quasidev: str, cache: str) -> list[dict]:
     return members
 
 
+def dense_rate() -> float:
+    """GFlop/s of one core on a dense matrix product (OpenBLAS on one thread, best of 5)."""
+    code = ("import time, numpy as np\n"
+            "a, b = np.random.rand(512, 512), np.random.rand(512, 512)\n"
+            "best = min((lambda t: (a @ b, time.perf_counter() - t)[1])(time.perf_counter()) for _ in range(5))\n"
+            "print(2 * 512 ** 3 / best / 1e9)")
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
+    return float(subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True,
+                                env=env).stdout)
+
+
+def flop_floor_ms(row: dict, rate: float) -> float:
+    """The factorisations' flops at the dense rate on every core: what they cannot beat."""
+    return row["factorization_gflop"] / (rate * (os.cpu_count() or 1)) * 1000
+
+
 def run(build: str, members: list[dict], runs: int) -> list[dict]:
     rows = []
     for m in members:
@@ -220,18 +240,21 @@ def targets(family: str, rows: list[dict], s: dict) -> list[tuple[str, float, fl
              s["whole_process_ms"], 100)]
 
 
-def member_table(rows: list[dict]) -> str:
+def member_table(rows: list[dict], rate: float) -> str:
     head = ("| member | what | faces | patches | iterations | CG iterations | factorisations | "
-            "factorisation ms | solve ms | engine ms | end to end ms | peak MB | G_ABD removed % |")
+            "factorisation GFlop | factorisation ms | GFlop/s | flop floor ms | solve ms | engine ms | "
+            "end to end ms | peak MB | G_ABD removed % |")
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for r in rows:
         if "error" in r:
-            lines.append(f"| {r['member']} | {r['what']} | failed: {r['error']} |" + " |" * 10)
+            lines.append(f"| {r['member']} | {r['what']} | failed: {r['error']} |" + " |" * 13)
             continue
         ms = r["ms"]
         patches = f"{r['patches']}" + (f" (asked {r['asked']})" if "asked" in r else "")
+        gflop = r["factorization_gflop"]
         lines.append(f"| {r['member']} | {r['what']} | {r['faces']} | {patches} | {r['iterations']} | "
-                     f"{r['cg_iterations']} | {r['factorizations']} | {ms['factorization']:.1f} | "
+                     f"{r['cg_iterations']} | {r['factorizations']} | {gflop:.3f} | {ms['factorization']:.1f} | "
+                     f"{gflop / max(ms['factorization'], 1e-9) * 1000:.1f} | {flop_floor_ms(r, rate):.1f} | "
                      f"{ms['solve']:.1f} | {ms['engine']:.1f} | {ms['end_to_end']:.1f} | "
                      f"{r['peak_mb']:.0f} | {r['abd_reduction']:.1f} |")
     return "\n".join(lines)
@@ -239,14 +262,35 @@ def member_table(rows: list[dict]) -> str:
 
 def family_text(name: str, fam: dict) -> str:
     s = fam["summary"]
+    load = fam["load"]
     lines = [f"## Family {name} ({len(fam['members'])} members, {fam['runs']} run(s) each, medians)", "",
+             f"Made by `{fam['command']}` (load average {load[0][0]:.2f} at the start, {load[1][0]:.2f} at "
+             "the end).", "",
              "| | member | engine ms | end to end ms (in process) | peak MB |", "|---|---|---|---|---|"]
     lines += [f"| {k} | {s[k]['member']} | {s[k]['engine_ms']:.1f} | {s[k]['end_to_end_ms']:.1f} | "
               f"{s[k]['peak_mb']:.0f} |" for k in ("worst", "median", "best")]
     lines += ["", f"Targets ({TARGETS[name]}):", ""]
     lines += [f"- {what}: {got:.1f} against {limit:g}: **{'met' if got < limit else 'missed'}**"
               for what, got, limit in fam["targets"]]
-    return "\n".join(lines + ["", member_table(fam["members"])])
+    worst = next(r for r in fam["members"] if r["member"] == s["worst"]["member"])
+    rate = fam["dense_gflops"]
+    lines += ["", f"The bound on the worst member: its factorisations take {worst['factorization_gflop']:.3f} GFlop, "
+              f"{flop_floor_ms(worst, rate):.1f} ms on {os.cpu_count()} cores at the dense rate of "
+              f"{rate:.1f} GFlop/s per core (a one-thread 512 × 512 matrix product on this machine); they ran "
+              f"at {worst['factorization_gflop'] / max(worst['ms']['factorization'], 1e-9) * 1000:.1f} GFlop/s "
+              f"per thread, and the engine took {worst['ms']['engine'] / max(flop_floor_ms(worst, rate), 1e-9):.0f}× "
+              "that floor."]
+    return "\n".join(lines + ["", member_table(fam["members"], rate)])
+
+
+def with_earlier(families: dict, path: str) -> dict:
+    """The families just run, and those of the JSON at `path` not run this time, as their last
+    run left them (each says its own command and load)."""
+    earlier = {}
+    if os.path.exists(path):
+        with open(path) as f:
+            earlier = {name: fam for name, fam in json.load(f)["families"].items() if "command" in fam}
+    return {name: families.get(name) or earlier[name] for name in TARGETS if name in families or name in earlier}
 
 
 def main() -> int:
@@ -271,6 +315,8 @@ def main() -> int:
         args.append(arg)
     command = " ".join(["scripts/bench_family.py", shlex.join(args)]).strip()
     load = [os.getloadavg()]
+    rate = dense_rate()
+    print(f"dense rate {rate:.1f} GFlop/s per core", file=sys.stderr)
     with tempfile.TemporaryDirectory() as tmp:
         cache = a.cache or tmp
         os.makedirs(cache, exist_ok=True)
@@ -285,12 +331,15 @@ def main() -> int:
                 s["runs"] = a.runs
                 worst = next(m for m in members if m["member"] == s["worst"]["member"])
                 s["whole_process_ms"] = whole_process(quasidev, worst["args"][1], a.runs)
-            families[name] = dict(runs=runs, members=rows, summary=s, targets=targets(name, rows, s))
+            families[name] = dict(runs=runs, members=rows, summary=s, targets=targets(name, rows, s),
+                                  command=command, dense_gflops=rate)
     load.append(os.getloadavg())
+    for name, fam in families.items():
+        fam["load"] = load
+    families = with_earlier(families, os.path.join(a.out, "benchmark-family.json"))
     report = "\n\n".join([
         "# Benchmark families (issue 28)",
-        f"Made by `{command}` (load average {load[0][0]:.2f} at the start, {load[1][0]:.2f} at the "
-        "end). Every member runs `qd_bench --mesh FILE -- --max-iter 5` (or `--tube N`): the quasidev "
+        "Made by `scripts/bench_family.py` (each family's command below). Every member runs `qd_bench --mesh FILE -- --max-iter 5` (or `--tube N`): the quasidev "
         "defaults (developability auto) except 5 iterations, as scripts/bench.py does for the 1M tube "
         "and the garments. Milliseconds are medians over the runs; stage times are summed over patches "
         "and threads; end to end is qd_bench's read + engine + write in one process. The worst "
@@ -304,7 +353,7 @@ def main() -> int:
     with open(os.path.join(a.out, "benchmark-family.md"), "w") as f:
         f.write(report)
     with open(os.path.join(a.out, "benchmark-family.json"), "w") as f:
-        json.dump(dict(command=command, load=load, families=families), f, indent=1)
+        json.dump(dict(families=families), f, indent=1)
     return 0 if all("error" not in r for fam in families.values() for r in fam["members"]) else 1
 
 

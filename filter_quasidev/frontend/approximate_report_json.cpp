@@ -36,6 +36,7 @@ Json stage_times(const approximate::StageTimes& t) {
           {"solve", t.solve},
           {"metrics", t.metrics},
           {"factorizations", t.factorizations},
+          {"factorization_flops", t.factorization_flops},
           {"solves", t.solves},
           {"cg_iterations", t.cg_iterations},
           {"substituted", t.substituted}};

@@ -90,3 +90,28 @@ def test_subdivision_keeps_area_and_patch_ids():
     # every edge gets one midpoint: V + E vertices, all used
     edges = np.unique(np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1), axis=0)
     assert len(V2) == len(V) + len(edges) == len(np.unique(F2))
+
+
+def test_the_factorisations_flops_bound_the_worst_member(family):
+    _, fam, text = family
+    rate = fam["dense_gflops"]
+    assert rate > 0.1
+    for r in fam["members"]:
+        assert (r["factorization_gflop"] > 0) == (r["factorizations"] > 0)
+        # a sparse factorisation runs no faster per thread than a dense product
+        assert r["factorization_gflop"] / (r["ms"]["factorization"] / 1000) < 2 * rate
+    worst = next(r for r in fam["members"] if r["member"] == fam["summary"]["worst"]["member"])
+    floor = bench_family.flop_floor_ms(worst, rate)
+    assert 0 < floor < worst["ms"]["engine"]
+    assert f"its factorisations take {worst['factorization_gflop']:.3f} GFlop, {floor:.1f} ms" in text
+
+
+def test_a_family_not_run_is_kept_from_the_last_run(family, tmp_path):
+    _, fam, _ = family
+    path = tmp_path / "benchmark-family.json"
+    old_1m = dict(fam, members=fam["members"][:1])
+    path.write_text(json.dumps({"families": {"1M": old_1m, "garments": dict(fam, members=[])}}))
+    merged = bench_family.with_earlier({"garments": fam}, str(path))
+    assert list(merged) == ["1M", "garments"]
+    assert merged["1M"] == old_1m and merged["garments"] is fam  # the new run replaces its own
+    assert list(bench_family.with_earlier({"garments": fam}, str(tmp_path / "none.json"))) == ["garments"]

@@ -55,6 +55,36 @@ TEST(PositiveDefiniteFactor, ReportsAnIndefiniteMatrix) {
   }
 }
 
+// The flop count of a tridiagonal matrix's factor: columns of 2 entries but the last, 4 (n − 1)
+// + 1 per factorisation, by every back end.
+TEST(PositiveDefiniteFactor, CountsTheFlopsOfItsFactorisations) {
+  const int n = 3000;  // above kCholmodFromUnknowns: Auto takes CHOLMOD
+  const Eigen::SparseMatrix<double> L = test::laplacian_lower(n, test::path_edges(n), 1.0);
+  for (const SolverKind kind : kEverySolver) {
+    PositiveDefiniteFactor factor(kind, true);
+    EXPECT_EQ(factor.flops(), 0.0);
+    factor.factorize(L);
+    factor.factorize(L);
+    EXPECT_EQ(factor.flops(), 2.0 * (4.0 * (n - 1) + 1)) << static_cast<int>(kind);
+  }
+}
+
+// On a grid, whose factor fills in, the back ends count the same flops, CHOLMOD's analysis and
+// Eigen's factor alike, for both classes of matrix.
+TEST(SparseFactor, EveryBackEndCountsTheSameFlops) {
+  const Eigen::SparseMatrix<double> L =
+      test::laplacian_lower(30 * 20, test::grid_edges(30, 20), 0.1);
+  const Eigen::SparseMatrix<double> K = test::random_quasi_definite(60, 20, 2, 3);
+  for (const SolverKind kind : kEverySolver) {
+    PositiveDefiniteFactor spd(kind), reference(SolverKind::EigenLLT);
+    QuasiDefiniteFactor quasi(kind), quasi_reference(SolverKind::EigenLDLT);
+    spd.factorize(L), reference.factorize(L), quasi.factorize(K), quasi_reference.factorize(K);
+    EXPECT_GT(reference.flops(), 4.0 * 30 * 20);  // more than without fill
+    EXPECT_EQ(spd.flops(), reference.flops()) << static_cast<int>(kind);
+    EXPECT_EQ(quasi.flops(), quasi_reference.flops()) << static_cast<int>(kind);
+  }
+}
+
 TEST(QuasiDefiniteFactor, EveryBackEndSolvesAQuasiDefiniteSystem) {
   const Eigen::SparseMatrix<double> K = test::random_quasi_definite(60, 20, 2, 3);
   const Eigen::MatrixXd b = Eigen::MatrixXd::Random(K.rows(), 3);

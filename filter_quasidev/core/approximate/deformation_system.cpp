@@ -209,6 +209,7 @@ Positions DeformationSystem::solve(const Positions& ref) {
                                              : solve_augmented(b, ref);
   ++times_.solves;
   times_.factorizations = strategy_->factorizations();
+  times_.factorization_flops = strategy_->factorization_flops();
   times_.substituted = strategy_->substituted() ? 1 : 0;
   Positions out = ref;
   for (size_t v = 0; v < m_.unknown.size(); ++v)

@@ -32,6 +32,7 @@ class FramePreconditioner {
   Eigen::VectorXd apply(const Eigen::VectorXd& r) const;
 
   int factorizations() const { return normal_.factorizations() + tangent_.factorizations(); }
+  double flops() const { return normal_.flops() + tangent_.flops(); }
 
  private:
   void set_frames(const std::vector<Vec3>& normals);

@@ -52,8 +52,10 @@ std::vector<Term> choose_terms(GroupRun& run, const Params& params, const Decide
 }
 
 // Step 2 as a race of the candidate terms; the run keeps the winner's fits and outcome.
+// threads: the group's share, for each candidate's own work; idle: the round's idle threads,
+// which step candidates at once.
 void race(GroupRun& run, const std::vector<Term>& candidates, const Params& params, double ae,
-          size_t threads, const std::function<void(double)>& progress) {
+          size_t threads, common::IdleThreads* idle, const std::function<void(double)>& progress) {
   const GroupMesh& g = run.group;
   // Each candidate's fits outlive its run: the re-projection keeps a reference to them.
   std::map<Term, std::vector<PatchFit>> fits_of;
@@ -65,7 +67,7 @@ void race(GroupRun& run, const std::vector<Term>& candidates, const Params& para
                        layouts, group_defect_rows(g, fits), params);
   };
   RaceOutcome raced =
-      race_terms(candidates, start, params.max_iter, params.stop_abd / 100, progress);
+      race_terms(candidates, start, params.max_iter, params.stop_abd / 100, idle, progress);
   run.fits = fits_of.at(raced.winner);
   run.targets = group_targets(g, run.fits);
   run.outcome = std::move(raced.outcome);
@@ -77,7 +79,7 @@ void race(GroupRun& run, const std::vector<Term>& candidates, const Params& para
 
 GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<int>& faces,
                    const std::vector<char>& constrained, const Params& params,
-                   const DecidedTerms& decided, bool one_unit,
+                   const DecidedTerms& decided, bool one_unit, common::IdleThreads* idle,
                    const std::function<void(double)>& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   GroupRun run;
@@ -109,7 +111,7 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
     run.outcome.stop_detail = run.fits.front().skipped;
     run.outcome.stop = run.outcome.stop_detail.empty() ? PatchStop::Planar : PatchStop::Unfitted;
   } else if (candidates.size() > 1) {
-    race(run, candidates, params, in.ae, threads, progress);
+    race(run, candidates, params, in.ae, threads, idle, progress);
   } else {
     run.outcome = deform(g, run.targets, make_retarget(g, run.fits, params.targets, threads),
                          group_defect_rows(g, run.fits), params, in.ae, progress);

@@ -13,6 +13,7 @@
 #include "approximate/params.h"
 #include "approximate/patch_fit.h"
 #include "approximate/term_race.h"
+#include "common/idle_threads.h"
 #include "common/topology.h"
 
 namespace qd::approximate {
@@ -43,10 +44,11 @@ using DecidedTerms = std::map<int, Term>;
 
 // Runs the group of `faces` from positions V; `constrained`: per vertex, held by the pass;
 // one_unit: the group's patches share one step scale (solved as one patch). `params.threads`
-// is the group's share of the threads.
+// is the group's share of the threads; idle: its round's idle threads, which a race borrows
+// (null: none).
 GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<int>& faces,
                    const std::vector<char>& constrained, const Params& params,
-                   const DecidedTerms& decided, bool one_unit,
+                   const DecidedTerms& decided, bool one_unit, common::IdleThreads* idle,
                    const std::function<void(double)>& progress);
 
 }  // namespace qd::approximate

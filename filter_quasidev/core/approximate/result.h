@@ -78,13 +78,15 @@ struct StageTimes {
   double solve = 0;          // forward and back substitutions
   double metrics = 0;        // figures for the stop criteria, the never-worse rule, the reports
   int factorizations = 0;
-  int solves = 0;         // linear solves, one per iteration
-  int cg_iterations = 0;  // conjugate-gradient iterations of the iterative solves
-  int substituted = 0;    // systems factorised by another back end than the one asked for
+  double factorization_flops = 0;  // of those factorisations (sparse_factor.h)
+  int solves = 0;                  // linear solves, one per iteration
+  int cg_iterations = 0;           // conjugate-gradient iterations of the iterative solves
+  int substituted = 0;             // systems factorised by another back end than the one asked for
   StageTimes& operator+=(const StageTimes& o) {
     setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
     solve += o.solve, metrics += o.metrics;
-    factorizations += o.factorizations, solves += o.solves, cg_iterations += o.cg_iterations;
+    factorizations += o.factorizations, factorization_flops += o.factorization_flops;
+    solves += o.solves, cg_iterations += o.cg_iterations;
     substituted += o.substituted;
     return *this;
   }

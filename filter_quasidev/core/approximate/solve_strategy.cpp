@@ -23,6 +23,10 @@ int SolveStrategy::factorizations() const {
   return positive_.factorizations() + quasi_.factorizations() + scalar_factorizations_;
 }
 
+double SolveStrategy::factorization_flops() const {
+  return positive_.flops() + quasi_.flops() + scalar_flops_;
+}
+
 Eigen::VectorXd SolveStrategy::solve(const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& b,
                                      const std::function<Eigen::VectorXd()>& start,
                                      const std::function<std::vector<Vec3>()>& normals) {
@@ -67,6 +71,7 @@ Eigen::VectorXd SolveStrategy::solve_iteratively(
       preconditioner_ = std::make_unique<FramePreconditioner>(pattern_, solver_, threads_);
     preconditioner_->build(M, frame_normals);
     scalar_factorizations_ = preconditioner_->factorizations();
+    scalar_flops_ = preconditioner_->flops();
   }
   preconditioner_stale_ = false;
   CgOutcome cg;

@@ -57,6 +57,7 @@ class SolveStrategy {
                                        const Eigen::VectorXd& c);
 
   int factorizations() const;
+  double factorization_flops() const;  // sparse_factor.h
   // K's factor runs on another back end than the one asked for (eigen-llt cannot factorise K).
   bool substituted() const { return quasi_.factorizations() > 0 && quasi_.substituted(); }
 
@@ -77,6 +78,7 @@ class SolveStrategy {
   std::unique_ptr<FramePreconditioner> preconditioner_;  // built at the first iterative solve
   bool preconditioner_stale_ = false;                    // the weights changed since
   int scalar_factorizations_ = 0;                        // the preconditioner's
+  double scalar_flops_ = 0;
   Eigen::VectorXd last_solution_;  // of the last iterative solve: the next one's warm start
 };
 

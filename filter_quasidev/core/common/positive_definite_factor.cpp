@@ -38,7 +38,9 @@ struct CholmodBackend : SparseFactor::EigenBackend<Supernodal> {
     c.postorder = 1;
   }
   bool analyse_and_factorize(const Matrix& lower, bool analyse) override {
-    bool ok = EigenBackend<Supernodal>::analyse_and_factorize(lower, analyse || converted);
+    const bool analysing = analyse || converted;
+    bool ok = EigenBackend<Supernodal>::analyse_and_factorize(lower, analysing);
+    if (analysing) flops = solver.cholmod().fl;  // the LLᵀ count of the analysis
     if (ok && simplicial_solves) ok = converted = solver.to_simplicial();
     return ok;
   }

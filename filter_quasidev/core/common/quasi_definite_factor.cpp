@@ -15,8 +15,10 @@ struct SupernodalBackend : SparseFactor::Backend {
   explicit SupernodalBackend(std::shared_ptr<SharedAnalysis> s) : shared(std::move(s)) {}
   bool analyse_and_factorize(const Eigen::SparseMatrix<double>& lower, bool analyse) override {
     if (analyse) {
+      const std::lock_guard<std::mutex> lock(shared->mutex);
       if (!shared->supernodal) shared->supernodal = QuasiDefiniteLdlt::analyse(lower);
       ldlt = std::make_unique<QuasiDefiniteLdlt>(shared->supernodal);
+      flops = shared->supernodal->flops;
     }
     return ldlt->factorize(lower);
   }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <mutex>
 
 #include "common/sparse_factor.h"
 
@@ -15,8 +16,9 @@ namespace qd::common {
 struct SupernodalAnalysis;  // quasi_definite_ldlt.h
 
 // The symbolic analysis kept for the factors of one pattern: the first supernodal factor to
-// factorise fills it, the others take it.
+// factorise fills it, the others take it (they may factorise at once, in a race's threads).
 struct SharedAnalysis {
+  std::mutex mutex;
   std::shared_ptr<const SupernodalAnalysis> supernodal;
 };
 

@@ -164,6 +164,7 @@ std::shared_ptr<const SupernodalAnalysis> QuasiDefiniteLdlt::analyse(
   const std::vector<int> px = copy(L->px, ns + 1);
   an->value_start.assign(px.begin(), px.end());
   an->values = L->xsize;
+  an->flops = c.fl;
   cholmod_free_factor(&L, &c);
   cholmod_finish(&c);
 

@@ -29,6 +29,7 @@ struct SupernodalAnalysis {
   std::vector<int> owner;         // supernode of each column
   std::vector<long> slot;         // place in the values of each stored entry of `lower`
   size_t values = 0;              // the factor's values
+  double flops = 0;               // CHOLMOD's count (of an LLᵀ of the same pattern)
 };
 
 class QuasiDefiniteLdlt {

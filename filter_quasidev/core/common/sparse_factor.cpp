@@ -17,9 +17,20 @@ void SparseFactor::factorize(const Eigen::SparseMatrix<double>& lower) {
   }
   const bool ok = backend_->analyse_and_factorize(lower, factorizations_ == 0);
   ++factorizations_;
+  flops_ += backend_->flops;
   if (!ok)
     throw Error(std::string("the deformation system ") + failure() +
                 " (degenerate faces?): remove zero-area and duplicate faces, then try again");
+}
+
+double SparseFactor::column_flops(const Eigen::SparseMatrix<double>& L) {
+  double flops = 0;
+  for (Eigen::Index j = 0; j < L.outerSize(); ++j) {
+    double c = 1;  // the diagonal, whether L stores it (LLᵀ) or not (LDLᵀ)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(L, j); it; ++it) c += it.row() > j;
+    flops += c * c;
+  }
+  return flops;
 }
 
 void SparseFactor::throw_no_cholmod() {

@@ -10,6 +10,7 @@
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <type_traits>
 
 #include "common/solver_kind.h"
 
@@ -29,6 +30,10 @@ class SparseFactor {
   // Solves A x = b with the current factor; b may have several columns (right-hand sides).
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
   int factorizations() const { return factorizations_; }
+  // Floating-point operations of the numeric factorisations so far, by the analysis's count
+  // (CHOLMOD's: an LLᵀ takes Σ_j c_j² for c_j the entries of column j of L): the floor the
+  // factorisations' time is judged against.
+  double flops() const { return flops_; }
   // The back end, chosen at the first factorisation; substituted: it is not the one asked for,
   // which cannot factorise this class of matrix.
   FactorBackend backend() const { return backend_kind_; }
@@ -38,7 +43,10 @@ class SparseFactor {
     virtual ~Backend() = default;
     virtual bool analyse_and_factorize(const Eigen::SparseMatrix<double>& lower, bool analyse) = 0;
     virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const = 0;
+    double flops = 0;  // of one numeric factorisation, set by the analysis
   };
+  // Σ_j c_j² over the columns of a factor L (its diagonal stored or not).
+  static double column_flops(const Eigen::SparseMatrix<double>& L);
   // Any of Eigen's sparse Cholesky classes (its own or its CHOLMOD wrappers).
   template <typename Solver>
   struct EigenBackend : Backend {
@@ -46,6 +54,9 @@ class SparseFactor {
     bool analyse_and_factorize(const Eigen::SparseMatrix<double>& lower, bool analyse) override {
       if (analyse) solver.analyzePattern(lower);
       solver.factorize(lower);
+      if constexpr (std::is_base_of_v<Eigen::SimplicialCholeskyBase<Solver>, Solver>)
+        if (analyse && solver.info() == Eigen::Success)
+          flops = column_flops(solver.matrixL().nestedExpression());
       return solver.info() == Eigen::Success;
     }
     Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override { return solver.solve(b); }
@@ -76,6 +87,7 @@ class SparseFactor {
   FactorBackend backend_kind_ = FactorBackend::EigenLdlt;
   bool substituted_ = false;
   int factorizations_ = 0;
+  double flops_ = 0;
 };
 
 }  // namespace qd::common
