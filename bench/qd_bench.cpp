@@ -184,7 +184,7 @@ void run(const Args& a) {
   std::printf(
       "{\"mesh\": \"%s\", \"faces\": %ld, \"vertices\": %ld, \"patches\": %zu, \"runs\": %d, "
       "\"iterations\": %d, \"solves\": %d, \"factorizations\": %d, "
-      "\"factorization_gflop\": %.4f, \"cg_iterations\": %d, "
+      "\"factorization_gflop\": %.4f, \"solve_gb\": %.4f, \"cg_iterations\": %d, "
       "\"largest_unknowns\": %ld, "
       "\"ms\": {\"read\": %.3f, \"setup\": %.3f, \"step1\": %.3f, \"assembly\": %.3f, "
       "\"factorization\": %.3f, "
@@ -205,10 +205,10 @@ void run(const Args& a) {
         return it;
       }(),
       result.times.solves, result.times.factorizations, result.times.factorization_flops / 1e9,
-      result.times.cg_iterations, unknowns, median(read_ms), median(setup), median(step1),
-      median(assembly), median(factor), median(solve), median(metrics), engine, median(write_ms),
-      engine + io, bare_factor, bare_refactor, mean_bare_solve, floor,
-      engine / std::max(1e-9, floor),
+      result.times.solve_bytes / 1e9, result.times.cg_iterations, unknowns, median(read_ms),
+      median(setup), median(step1), median(assembly), median(factor), median(solve),
+      median(metrics), engine, median(write_ms), engine + io, bare_factor, bare_refactor,
+      mean_bare_solve, floor, engine / std::max(1e-9, floor),
       mean_bare_solve > 0 ? per_iteration_solve / mean_bare_solve : 0.0, peak_mb,
       result.abd_reduction, progress_calls);
   std::remove(output.c_str());

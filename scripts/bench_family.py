@@ -12,9 +12,11 @@ except --max-iter 5:
             sample_meshes/draped_panels.ply), the same with drape noise, and re-cut into 2 to 8
             panels by `quasidev segment --target N`; --runs runs each (medians).
 Per family: the worst member (most engine time), the median and the best, the targets on the
-worst, and a per-member table. Where a target is missed, the bound: the factorisations' flops
-(CHOLMOD's count, in the report) against the machine's dense rate (a one-thread matrix product,
-measured at the start), as the time they would take at that rate on every core. Writes
+worst, and a per-member table, with the bound on each member: the factorisations' flops
+(CHOLMOD's count, in the report) at the machine's dense rate (a one-thread matrix product,
+measured at the start), and the bytes the solves must read (the factors once per triangular
+pass, M once per CG product; in the report) at its memory rate (a one-thread sum of 512 MB),
+each as the time it would take on every core. Writes
 OUT/benchmark-family.md and .json and prints the markdown; a family not run this time is kept
 from OUT/benchmark-family.json.
 
@@ -174,20 +176,28 @@ def garment_family(a, quasidev: str, cache: str) -> list[dict]:
     return members
 
 
-def dense_rate() -> float:
-    """GFlop/s of one core on a dense matrix product (OpenBLAS on one thread, best of 5)."""
+def machine_rates() -> dict:
+    """One core's dense rate (GFlop/s of a 512 × 512 matrix product, OpenBLAS on one thread) and
+    memory rate (GB/s of summing 512 MB), each the best of 5."""
     code = ("import time, numpy as np\n"
+            "def best(f):\n"
+            "    return min((lambda t: (f(), time.perf_counter() - t)[1])(time.perf_counter()) for _ in range(5))\n"
             "a, b = np.random.rand(512, 512), np.random.rand(512, 512)\n"
-            "best = min((lambda t: (a @ b, time.perf_counter() - t)[1])(time.perf_counter()) for _ in range(5))\n"
-            "print(2 * 512 ** 3 / best / 1e9)")
+            "big = np.ones(64 * 1024 * 1024)\n"
+            "print(2 * 512 ** 3 / best(lambda: a @ b) / 1e9, big.nbytes / best(big.sum) / 1e9)")
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
-    return float(subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True,
-                                env=env).stdout)
+    out = subprocess.run([sys.executable, "-c", code], check=True, capture_output=True, text=True, env=env).stdout
+    dense, memory = map(float, out.split())
+    return dict(dense_gflops=dense, memory_gbs=memory)
 
 
-def flop_floor_ms(row: dict, rate: float) -> float:
-    """The factorisations' flops at the dense rate on every core: what they cannot beat."""
-    return row["factorization_gflop"] / (rate * (os.cpu_count() or 1)) * 1000
+def floor_ms(row: dict, rates: dict) -> dict:
+    """What the member's factorisations and solves cannot beat on every core: their flops at the
+    dense rate, their bytes at the memory rate (ms)."""
+    cores = os.cpu_count() or 1
+    flops = row["factorization_gflop"] / (rates["dense_gflops"] * cores) * 1000
+    memory = row["solve_gb"] / (rates["memory_gbs"] * cores) * 1000
+    return dict(flops=flops, memory=memory, total=flops + memory)
 
 
 def run(build: str, members: list[dict], runs: int) -> list[dict]:
@@ -240,23 +250,24 @@ def targets(family: str, rows: list[dict], s: dict) -> list[tuple[str, float, fl
              s["whole_process_ms"], 100)]
 
 
-def member_table(rows: list[dict], rate: float) -> str:
+def member_table(rows: list[dict], rates: dict) -> str:
     head = ("| member | what | faces | patches | iterations | CG iterations | factorisations | "
-            "factorisation GFlop | factorisation ms | GFlop/s | flop floor ms | solve ms | engine ms | "
-            "end to end ms | peak MB | G_ABD removed % |")
+            "factorisation GFlop | factorisation ms | GFlop/s | flop floor ms | solve GB | solve ms | "
+            "GB/s | memory floor ms | engine ms | engine / floor | end to end ms | peak MB | G_ABD removed % |")
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for r in rows:
         if "error" in r:
-            lines.append(f"| {r['member']} | {r['what']} | failed: {r['error']} |" + " |" * 13)
+            lines.append(f"| {r['member']} | {r['what']} | failed: {r['error']} |" + " |" * 17)
             continue
         ms = r["ms"]
         patches = f"{r['patches']}" + (f" (asked {r['asked']})" if "asked" in r else "")
-        gflop = r["factorization_gflop"]
+        gflop, gb, floor = r["factorization_gflop"], r["solve_gb"], floor_ms(r, rates)
         lines.append(f"| {r['member']} | {r['what']} | {r['faces']} | {patches} | {r['iterations']} | "
                      f"{r['cg_iterations']} | {r['factorizations']} | {gflop:.3f} | {ms['factorization']:.1f} | "
-                     f"{gflop / max(ms['factorization'], 1e-9) * 1000:.1f} | {flop_floor_ms(r, rate):.1f} | "
-                     f"{ms['solve']:.1f} | {ms['engine']:.1f} | {ms['end_to_end']:.1f} | "
-                     f"{r['peak_mb']:.0f} | {r['abd_reduction']:.1f} |")
+                     f"{gflop / max(ms['factorization'], 1e-9) * 1000:.1f} | {floor['flops']:.1f} | "
+                     f"{gb:.3f} | {ms['solve']:.1f} | {gb / max(ms['solve'], 1e-9) * 1000:.1f} | "
+                     f"{floor['memory']:.1f} | {ms['engine']:.1f} | {ms['engine'] / max(floor['total'], 1e-9):.0f} | "
+                     f"{ms['end_to_end']:.1f} | {r['peak_mb']:.0f} | {r['abd_reduction']:.1f} |")
     return "\n".join(lines)
 
 
@@ -273,14 +284,15 @@ def family_text(name: str, fam: dict) -> str:
     lines += [f"- {what}: {got:.1f} against {limit:g}: **{'met' if got < limit else 'missed'}**"
               for what, got, limit in fam["targets"]]
     worst = next(r for r in fam["members"] if r["member"] == s["worst"]["member"])
-    rate = fam["dense_gflops"]
+    rates, floor = fam["rates"], floor_ms(worst, fam["rates"])
     lines += ["", f"The bound on the worst member: its factorisations take {worst['factorization_gflop']:.3f} GFlop, "
-              f"{flop_floor_ms(worst, rate):.1f} ms on {os.cpu_count()} cores at the dense rate of "
-              f"{rate:.1f} GFlop/s per core (a one-thread 512 × 512 matrix product on this machine); they ran "
-              f"at {worst['factorization_gflop'] / max(worst['ms']['factorization'], 1e-9) * 1000:.1f} GFlop/s "
-              f"per thread, and the engine took {worst['ms']['engine'] / max(flop_floor_ms(worst, rate), 1e-9):.0f}× "
-              "that floor."]
-    return "\n".join(lines + ["", member_table(fam["members"], rate)])
+              f"{floor['flops']:.1f} ms on {os.cpu_count()} cores at the dense rate of {rates['dense_gflops']:.1f} "
+              f"GFlop/s per core (a one-thread 512 × 512 matrix product on this machine), and its solves read "
+              f"at least {worst['solve_gb']:.3f} GB, {floor['memory']:.1f} ms at the memory rate of "
+              f"{rates['memory_gbs']:.1f} GB/s per core (a one-thread sum of 512 MB); the engine took "
+              f"{worst['ms']['engine'] / max(floor['total'], 1e-9):.0f}× those {floor['total']:.1f} ms. Per "
+              "member, GFlop/s and GB/s are the rates the factorisations and the solves ran at per thread."]
+    return "\n".join(lines + ["", member_table(fam["members"], rates)])
 
 
 def with_earlier(families: dict, path: str) -> dict:
@@ -315,8 +327,9 @@ def main() -> int:
         args.append(arg)
     command = " ".join(["scripts/bench_family.py", shlex.join(args)]).strip()
     load = [os.getloadavg()]
-    rate = dense_rate()
-    print(f"dense rate {rate:.1f} GFlop/s per core", file=sys.stderr)
+    rates = machine_rates()
+    print(f"per core: dense {rates['dense_gflops']:.1f} GFlop/s, memory {rates['memory_gbs']:.1f} GB/s",
+          file=sys.stderr)
     with tempfile.TemporaryDirectory() as tmp:
         cache = a.cache or tmp
         os.makedirs(cache, exist_ok=True)
@@ -332,7 +345,7 @@ def main() -> int:
                 worst = next(m for m in members if m["member"] == s["worst"]["member"])
                 s["whole_process_ms"] = whole_process(quasidev, worst["args"][1], a.runs)
             families[name] = dict(runs=runs, members=rows, summary=s, targets=targets(name, rows, s),
-                                  command=command, dense_gflops=rate)
+                                  command=command, rates=rates)
     load.append(os.getloadavg())
     for name, fam in families.items():
         fam["load"] = load

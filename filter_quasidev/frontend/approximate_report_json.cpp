@@ -37,6 +37,7 @@ Json stage_times(const approximate::StageTimes& t) {
           {"metrics", t.metrics},
           {"factorizations", t.factorizations},
           {"factorization_flops", t.factorization_flops},
+          {"solve_bytes", t.solve_bytes},
           {"solves", t.solves},
           {"cg_iterations", t.cg_iterations},
           {"substituted", t.substituted}};

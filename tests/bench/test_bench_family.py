@@ -92,18 +92,23 @@ def test_subdivision_keeps_area_and_patch_ids():
     assert len(V2) == len(V) + len(edges) == len(np.unique(F2))
 
 
-def test_the_factorisations_flops_bound_the_worst_member(family):
+def test_flops_and_bytes_bound_every_member(family):
     _, fam, text = family
-    rate = fam["dense_gflops"]
-    assert rate > 0.1
+    rates = fam["rates"]
+    assert rates["dense_gflops"] > 0.1 and rates["memory_gbs"] > 0.1
     for r in fam["members"]:
         assert (r["factorization_gflop"] > 0) == (r["factorizations"] > 0)
-        # a sparse factorisation runs no faster per thread than a dense product
-        assert r["factorization_gflop"] / (r["ms"]["factorization"] / 1000) < 2 * rate
+        assert r["solve_gb"] > 0
+        # per thread, a sparse factorisation runs no faster than a dense product, and a solve
+        # reads no faster than a sum streams
+        assert r["factorization_gflop"] / (r["ms"]["factorization"] / 1000) < 2 * rates["dense_gflops"]
+        assert r["solve_gb"] / (r["ms"]["solve"] / 1000) < 2 * rates["memory_gbs"]
+        floor = bench_family.floor_ms(r, rates)
+        assert 0 < floor["flops"] and 0 < floor["memory"] and floor["total"] < r["ms"]["engine"]
     worst = next(r for r in fam["members"] if r["member"] == fam["summary"]["worst"]["member"])
-    floor = bench_family.flop_floor_ms(worst, rate)
-    assert 0 < floor < worst["ms"]["engine"]
-    assert f"its factorisations take {worst['factorization_gflop']:.3f} GFlop, {floor:.1f} ms" in text
+    floor = bench_family.floor_ms(worst, rates)
+    assert f"its factorisations take {worst['factorization_gflop']:.3f} GFlop, {floor['flops']:.1f} ms" in text
+    assert f"its solves read at least {worst['solve_gb']:.3f} GB, {floor['memory']:.1f} ms" in text
 
 
 def test_a_family_not_run_is_kept_from_the_last_run(family, tmp_path):

@@ -396,6 +396,10 @@ TEST(Approximate, StageTimesCountTheSolverWork) {
   EXPECT_GT(r.times.setup, 0.0);
   EXPECT_GT(r.times.step1, 0.0);
   EXPECT_GT(r.times.metrics, 0.0);
+  // every factor has at least one entry per unknown, and there are more unknowns than vertices
+  const double n = static_cast<double>(p.V.rows());
+  EXPECT_GE(r.times.factorization_flops, r.times.factorizations * n);
+  EXPECT_GE(r.times.solve_bytes, r.times.solves * 16 * n);  // two passes of 8-byte values
   EXPECT_LE(r.times.setup + r.times.step1 + r.times.assembly + r.times.factorization +
                 r.times.solve + r.times.metrics,
             r.time_ms * 1.01);  // one thread: the stages fit in the wall clock

@@ -55,9 +55,9 @@ TEST(PositiveDefiniteFactor, ReportsAnIndefiniteMatrix) {
   }
 }
 
-// The flop count of a tridiagonal matrix's factor: columns of 2 entries but the last, 4 (n − 1)
-// + 1 per factorisation, by every back end.
-TEST(PositiveDefiniteFactor, CountsTheFlopsOfItsFactorisations) {
+// The counts of a tridiagonal matrix's factor: columns of 2 entries but the last, so 2n − 1
+// entries and 4 (n − 1) + 1 flops per factorisation, by every back end.
+TEST(PositiveDefiniteFactor, CountsTheFlopsAndEntriesOfItsFactor) {
   const int n = 3000;  // above kCholmodFromUnknowns: Auto takes CHOLMOD
   const Eigen::SparseMatrix<double> L = test::laplacian_lower(n, test::path_edges(n), 1.0);
   for (const SolverKind kind : kEverySolver) {
@@ -66,12 +66,13 @@ TEST(PositiveDefiniteFactor, CountsTheFlopsOfItsFactorisations) {
     factor.factorize(L);
     factor.factorize(L);
     EXPECT_EQ(factor.flops(), 2.0 * (4.0 * (n - 1) + 1)) << static_cast<int>(kind);
+    EXPECT_EQ(factor.entries(), 2.0 * n - 1) << static_cast<int>(kind);
   }
 }
 
-// On a grid, whose factor fills in, the back ends count the same flops, CHOLMOD's analysis and
-// Eigen's factor alike, for both classes of matrix.
-TEST(SparseFactor, EveryBackEndCountsTheSameFlops) {
+// On a grid, whose factor fills in, the back ends count the same flops and entries, CHOLMOD's
+// analysis and Eigen's factor alike, for both classes of matrix.
+TEST(SparseFactor, EveryBackEndCountsTheSameFlopsAndEntries) {
   const Eigen::SparseMatrix<double> L =
       test::laplacian_lower(30 * 20, test::grid_edges(30, 20), 0.1);
   const Eigen::SparseMatrix<double> K = test::random_quasi_definite(60, 20, 2, 3);
@@ -82,6 +83,8 @@ TEST(SparseFactor, EveryBackEndCountsTheSameFlops) {
     EXPECT_GT(reference.flops(), 4.0 * 30 * 20);  // more than without fill
     EXPECT_EQ(spd.flops(), reference.flops()) << static_cast<int>(kind);
     EXPECT_EQ(quasi.flops(), quasi_reference.flops()) << static_cast<int>(kind);
+    EXPECT_EQ(spd.entries(), reference.entries()) << static_cast<int>(kind);
+    EXPECT_EQ(quasi.entries(), quasi_reference.entries()) << static_cast<int>(kind);
   }
 }
 

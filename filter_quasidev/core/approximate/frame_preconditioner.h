@@ -33,6 +33,7 @@ class FramePreconditioner {
 
   int factorizations() const { return normal_.factorizations() + tangent_.factorizations(); }
   double flops() const { return normal_.flops() + tangent_.flops(); }
+  double entries() const { return normal_.entries() + tangent_.entries(); }  // of both factors
 
  private:
   void set_frames(const std::vector<Vec3>& normals);

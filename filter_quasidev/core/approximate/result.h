@@ -79,6 +79,7 @@ struct StageTimes {
   double metrics = 0;        // figures for the stop criteria, the never-worse rule, the reports
   int factorizations = 0;
   double factorization_flops = 0;  // of those factorisations (sparse_factor.h)
+  double solve_bytes = 0;          // the least the solves read: L per pass, M per CG product
   int solves = 0;                  // linear solves, one per iteration
   int cg_iterations = 0;           // conjugate-gradient iterations of the iterative solves
   int substituted = 0;             // systems factorised by another back end than the one asked for
@@ -86,6 +87,7 @@ struct StageTimes {
     setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
     solve += o.solve, metrics += o.metrics;
     factorizations += o.factorizations, factorization_flops += o.factorization_flops;
+    solve_bytes += o.solve_bytes;
     solves += o.solves, cg_iterations += o.cg_iterations;
     substituted += o.substituted;
     return *this;

@@ -5,6 +5,14 @@
 #include "common/stage_timer.h"
 
 namespace qd::approximate {
+namespace {
+
+// What a solve reads at least, in bytes: each value of a factor L once per triangular pass, two
+// passes a solve; each stored value of M once per product (the memory bound of a solve).
+constexpr double kValueBytes = 8;
+double pass_bytes(double entries) { return 2 * kValueBytes * entries; }
+
+}  // namespace
 
 SolveStrategy::SolveStrategy(const Params& params, long unknowns, bool quasi_definite,
                              const BlockPattern& pattern, StageTimes& times,
@@ -41,6 +49,7 @@ Eigen::VectorXd SolveStrategy::solve_directly(const Eigen::SparseMatrix<double>&
     factor_current_ = true;
   }
   StageTimer timer(times_.solve);
+  times_.solve_bytes += pass_bytes(positive_.entries());
   return positive_.solve(b);
 }
 
@@ -52,6 +61,7 @@ Eigen::VectorXd SolveStrategy::solve_quasi_definite(const Eigen::SparseMatrix<do
     factor_current_ = true;
   }
   StageTimer timer(times_.solve);
+  times_.solve_bytes += pass_bytes(quasi_.entries());
   return quasi_.solve(c);
 }
 
@@ -60,10 +70,14 @@ Eigen::VectorXd SolveStrategy::solve_iteratively(
     const std::function<Eigen::VectorXd()>& start,
     const std::function<std::vector<Vec3>()>& normals) {
   Eigen::VectorXd x = start();  // the correction starts at zero
-  const auto multiply = [&M](const Eigen::VectorXd& p) -> Eigen::VectorXd {
+  const auto multiply = [&](const Eigen::VectorXd& p) -> Eigen::VectorXd {
+    times_.solve_bytes += kValueBytes * static_cast<double>(M.nonZeros());
     return M.selfadjointView<Eigen::Lower>() * p;
   };
-  const auto precondition = [this](const Eigen::VectorXd& r) { return preconditioner_->apply(r); };
+  const auto precondition = [this](const Eigen::VectorXd& r) {
+    times_.solve_bytes += pass_bytes(preconditioner_->entries());
+    return preconditioner_->apply(r);
+  };
   if (!preconditioner_ || preconditioner_stale_) {
     StageTimer timer(times_.factorization);
     const std::vector<Vec3> frame_normals = normals();

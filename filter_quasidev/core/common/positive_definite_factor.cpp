@@ -40,7 +40,7 @@ struct CholmodBackend : SparseFactor::EigenBackend<Supernodal> {
   bool analyse_and_factorize(const Matrix& lower, bool analyse) override {
     const bool analysing = analyse || converted;
     bool ok = EigenBackend<Supernodal>::analyse_and_factorize(lower, analysing);
-    if (analysing) flops = solver.cholmod().fl;  // the LLᵀ count of the analysis
+    if (analysing) flops = solver.cholmod().fl, entries = solver.cholmod().lnz;  // the analysis's
     if (ok && simplicial_solves) ok = converted = solver.to_simplicial();
     return ok;
   }

@@ -19,6 +19,7 @@ struct SupernodalBackend : SparseFactor::Backend {
       if (!shared->supernodal) shared->supernodal = QuasiDefiniteLdlt::analyse(lower);
       ldlt = std::make_unique<QuasiDefiniteLdlt>(shared->supernodal);
       flops = shared->supernodal->flops;
+      entries = shared->supernodal->entries;
     }
     return ldlt->factorize(lower);
   }

@@ -165,6 +165,7 @@ std::shared_ptr<const SupernodalAnalysis> QuasiDefiniteLdlt::analyse(
   an->value_start.assign(px.begin(), px.end());
   an->values = L->xsize;
   an->flops = c.fl;
+  an->entries = c.lnz;
   cholmod_free_factor(&L, &c);
   cholmod_finish(&c);
 

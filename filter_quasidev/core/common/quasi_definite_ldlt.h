@@ -30,6 +30,7 @@ struct SupernodalAnalysis {
   std::vector<long> slot;         // place in the values of each stored entry of `lower`
   size_t values = 0;              // the factor's values
   double flops = 0;               // CHOLMOD's count (of an LLᵀ of the same pattern)
+  double entries = 0;             // L's nonzeros (the values hold explicit zeros too)
 };
 
 class QuasiDefiniteLdlt {

@@ -23,14 +23,14 @@ void SparseFactor::factorize(const Eigen::SparseMatrix<double>& lower) {
                 " (degenerate faces?): remove zero-area and duplicate faces, then try again");
 }
 
-double SparseFactor::column_flops(const Eigen::SparseMatrix<double>& L) {
-  double flops = 0;
+void SparseFactor::count_columns(const Eigen::SparseMatrix<double>& L, Backend& counts) {
+  counts.flops = counts.entries = 0;
   for (Eigen::Index j = 0; j < L.outerSize(); ++j) {
     double c = 1;  // the diagonal, whether L stores it (LLᵀ) or not (LDLᵀ)
     for (Eigen::SparseMatrix<double>::InnerIterator it(L, j); it; ++it) c += it.row() > j;
-    flops += c * c;
+    counts.flops += c * c;
+    counts.entries += c;
   }
-  return flops;
 }
 
 void SparseFactor::throw_no_cholmod() {

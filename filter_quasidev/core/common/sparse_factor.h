@@ -34,6 +34,9 @@ class SparseFactor {
   // (CHOLMOD's: an LLᵀ takes Σ_j c_j² for c_j the entries of column j of L): the floor the
   // factorisations' time is judged against.
   double flops() const { return flops_; }
+  // Entries of the factor L (its nonzeros, the diagonal included): what each triangular pass
+  // of a solve must read at least.
+  double entries() const { return backend_ ? backend_->entries : 0.0; }
   // The back end, chosen at the first factorisation; substituted: it is not the one asked for,
   // which cannot factorise this class of matrix.
   FactorBackend backend() const { return backend_kind_; }
@@ -43,10 +46,11 @@ class SparseFactor {
     virtual ~Backend() = default;
     virtual bool analyse_and_factorize(const Eigen::SparseMatrix<double>& lower, bool analyse) = 0;
     virtual Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const = 0;
-    double flops = 0;  // of one numeric factorisation, set by the analysis
+    double flops = 0;    // of one numeric factorisation, set by the analysis
+    double entries = 0;  // of L, set by the analysis
   };
-  // Σ_j c_j² over the columns of a factor L (its diagonal stored or not).
-  static double column_flops(const Eigen::SparseMatrix<double>& L);
+  // Σ_j c_j² and Σ_j c_j over the columns of a factor L (its diagonal stored or not).
+  static void count_columns(const Eigen::SparseMatrix<double>& L, Backend& counts);
   // Any of Eigen's sparse Cholesky classes (its own or its CHOLMOD wrappers).
   template <typename Solver>
   struct EigenBackend : Backend {
@@ -56,7 +60,7 @@ class SparseFactor {
       solver.factorize(lower);
       if constexpr (std::is_base_of_v<Eigen::SimplicialCholeskyBase<Solver>, Solver>)
         if (analyse && solver.info() == Eigen::Success)
-          flops = column_flops(solver.matrixL().nestedExpression());
+          count_columns(solver.matrixL().nestedExpression(), *this);
       return solver.info() == Eigen::Success;
     }
     Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override { return solver.solve(b); }
