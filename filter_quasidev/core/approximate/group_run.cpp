@@ -55,7 +55,7 @@ std::vector<Term> choose_terms(GroupRun& run, const Params& params, const Decide
 // threads: the group's share, for each candidate's own work; idle: the round's idle threads,
 // which step candidates at once.
 void race(GroupRun& run, const std::vector<Term>& candidates, const Params& params, double ae,
-          size_t threads, common::IdleThreads* idle, const std::function<void(double)>& progress) {
+          size_t threads, common::IdleThreads& idle, const std::function<void(double)>& progress) {
   const GroupMesh& g = run.group;
   // Each candidate's fits outlive its run: the re-projection keeps a reference to them.
   std::map<Term, std::vector<PatchFit>> fits_of;
@@ -79,7 +79,7 @@ void race(GroupRun& run, const std::vector<Term>& candidates, const Params& para
 
 GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<int>& faces,
                    const std::vector<char>& constrained, const Params& params,
-                   const DecidedTerms& decided, bool one_unit, common::IdleThreads* idle,
+                   const DecidedTerms& decided, bool one_unit, common::IdleThreads& idle,
                    const std::function<void(double)>& progress) {
   const auto t0 = std::chrono::steady_clock::now();
   GroupRun run;

@@ -44,11 +44,10 @@ using DecidedTerms = std::map<int, Term>;
 
 // Runs the group of `faces` from positions V; `constrained`: per vertex, held by the pass;
 // one_unit: the group's patches share one step scale (solved as one patch). `params.threads`
-// is the group's share of the threads; idle: its round's idle threads, which a race borrows
-// (null: none).
+// is the group's share of the threads; idle: its round's idle threads, which a race borrows.
 GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<int>& faces,
                    const std::vector<char>& constrained, const Params& params,
-                   const DecidedTerms& decided, bool one_unit, common::IdleThreads* idle,
+                   const DecidedTerms& decided, bool one_unit, common::IdleThreads& idle,
                    const std::function<void(double)>& progress);
 
 }  // namespace qd::approximate

@@ -174,7 +174,7 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
         here.reused = true;
       } else {
         here.run = run_group(in, out.V, groups[round[k]], *p.constrained, group_params, decided,
-                             p.per_group, &idle, group_progress);
+                             p.per_group, idle, group_progress);
         here.pass = p.name;
         here.fresh = undecided(here.run, decided);
         here.reused = false;

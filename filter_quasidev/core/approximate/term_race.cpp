@@ -42,7 +42,7 @@ int most_iterations(const std::vector<Deformation>& runs, const std::vector<char
 
 RaceOutcome race_terms(const std::vector<Term>& terms,
                        const std::function<Deformation(Term)>& start, int max_iter,
-                       double meaningful, common::IdleThreads* idle,
+                       double meaningful, common::IdleThreads& idle,
                        const std::function<void(double)>& progress) {
   assert(!terms.empty());
   std::vector<Deformation> runs;
@@ -63,11 +63,8 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     std::vector<size_t> stepping;  // each candidate's step reads only its own run's state
     for (size_t k = 0; k < runs.size(); ++k)
       if (active(k)) stepping.push_back(k);
-    const auto step = [&](size_t i) { runs[stepping[i]].step(); };
-    if (idle)
-      common::run_with_idle_threads(*idle, stepping.size(), step);
-    else
-      for (size_t i = 0; i < stepping.size(); ++i) step(i);
+    common::run_with_idle_threads(idle, stepping.size(),
+                                  [&](size_t i) { runs[stepping[i]].step(); });
     if (progress) progress(static_cast<double>(most_iterations(runs, dropped)) / max_iter);
     // The rules of term_race.h.
     const size_t lead = leader(runs, dropped);

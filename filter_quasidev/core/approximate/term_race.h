@@ -51,11 +51,11 @@ struct RaceOutcome {
 // terms: the candidates, in order of preference on a tie; start(term): a fresh run with that
 // term; meaningful: the share of the start's G_ABD (δ_ABD / 100) below which a lead is final;
 // idle: where the candidates of a round borrow idle threads to step at once (each step depends
-// on its own run only, so the outcome does not depend on them; null: one after another);
+// on its own run only, so the outcome does not depend on them);
 // progress receives the fraction of max_iter the leader has done.
 RaceOutcome race_terms(const std::vector<Term>& terms,
                        const std::function<Deformation(Term)>& start, int max_iter,
-                       double meaningful, common::IdleThreads* idle,
+                       double meaningful, common::IdleThreads& idle,
                        const std::function<void(double)>& progress);
 
 }  // namespace qd::approximate
