@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "approximate/solve_schedule.h"
@@ -18,20 +19,36 @@ namespace {
 using namespace qd::approximate;
 using namespace qd::common;
 
-// The schedule of `problem` in the groups `group`, with fixed seams, as the engine runs it.
+// A grouping of `problem` into the solve groups `group`, with fixed seams, as the engine
+// solves it.
+struct Grouped {
+  Grouped(const Problem& problem, std::vector<int> groups)
+      : group(std::move(groups)),
+        topo(analyse_topology(problem.F, static_cast<int>(problem.V.rows()), group)),
+        roles(vertex_roles(problem, topo, SeamMode::Fixed)),
+        incident(problem.F, problem.V.rows()),
+        in{problem.V,
+           problem.F,
+           problem.patch,
+           roles.interior,
+           incident,
+           problem.params,
+           average_edge_length(problem.V, problem.F)} {}
+  SolveSchedule schedule(const std::vector<ScheduledRun>& earlier) const {
+    return run_schedule(in, group, roles.constrained, roles.constrained, earlier, nullptr);
+  }
+  Grouping grouping() const { return {in, group, roles.constrained}; }
+
+  const std::vector<int> group;
+  const Topology topo;
+  const VertexRoles roles;
+  const VertexFaces incident;
+  const SolveInput in;
+};
+
 SolveSchedule schedule(const Problem& problem, const std::vector<int>& group,
                        const std::vector<ScheduledRun>& earlier) {
-  const Topology topo = analyse_topology(problem.F, static_cast<int>(problem.V.rows()), group);
-  const VertexRoles roles = vertex_roles(problem, topo, SeamMode::Fixed);
-  const VertexFaces incident(problem.F, problem.V.rows());
-  const SolveInput in{problem.V,
-                      problem.F,
-                      problem.patch,
-                      roles.interior,
-                      incident,
-                      problem.params,
-                      average_edge_length(problem.V, problem.F)};
-  return run_schedule(in, group, roles.constrained, roles.constrained, earlier, nullptr);
+  return Grouped(problem, group).schedule(earlier);
 }
 
 // The groups whose first run was taken from `earlier` (some may have run again since).
@@ -80,6 +97,36 @@ TEST(SolveSchedule, RunsFromAnotherStartAreNotTaken) {
   for (const auto* runs : {&second.runs, &second.replaced})
     for (const ScheduledRun& r : *runs)  // patch 3's start differs, by however little
       EXPECT_FALSE(r.reused && r.run.fits.front().id == 3);
+}
+
+// Both groupings of a join trial are solved from runs made at once, each group two groupings
+// share made once: each solve then takes every group of its one pass from them, and ends
+// where solving it alone ends, bit for bit, never-worse re-runs included. The work of the runs
+// those re-runs replace is counted.
+TEST(SolveSchedule, TwoGroupingsRunTheirGroupsOnceAndAtOnce) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 6);
+  p.params.max_iter = 4;
+  p.params.tolerance = 0.2;
+  validate(p);
+  std::vector<int> joined_groups = p.patch;  // patches 0 and 1 in one group
+  for (int& g : joined_groups) g = g == 1 ? 0 : g;
+  const Grouped held(p, p.patch), joined(p, joined_groups);
+
+  const std::vector<ScheduledRun> runs = first_runs({held.grouping(), joined.grouping()}, nullptr);
+  EXPECT_EQ(runs.size(), 7u);  // 6 held groups and the joined one; patches 2 to 5 once
+  for (const ScheduledRun& r : runs) EXPECT_TRUE(r.fresh && !r.reused);
+  size_t reruns = 0;
+  for (const Grouped* g : {&held, &joined}) {
+    const SolveSchedule taken = g->schedule(runs), alone = g->schedule({});
+    EXPECT_EQ(reused(taken), taken.runs.size());  // every group's first run
+    EXPECT_TRUE((taken.V.array() == alone.V.array()).all());
+    EXPECT_EQ(taken.reruns.size(), alone.reruns.size());
+    reruns += alone.reruns.size();
+    // The work of a replaced run counts with the solve that made it: here, or where it was taken.
+    EXPECT_EQ(alone.replaced_times.factorizations > 0, !alone.reruns.empty());
+    EXPECT_EQ(taken.replaced_times.factorizations, 0);
+  }
+  EXPECT_GT(reruns, 0u);  // the never-worse rule ran some groups again
 }
 
 }  // namespace

@@ -60,6 +60,7 @@ PassStop pass_stop(const PatchFit& p, const DeformOutcome& o, SolvePass pass,
 
 SolveReports patch_reports(const SolveSchedule& s, const Params& params, size_t faces) {
   SolveReports out;
+  out.times = s.replaced_times;
   out.initial_target.resize(faces);
   for (const ScheduledRun& scheduled : s.runs) {
     const GroupRun& run = scheduled.run;

@@ -14,7 +14,7 @@ namespace qd::approximate {
 struct SolveReports {
   std::map<int, PatchReport> patches;  // by patch id
   std::vector<Vec3> initial_target;    // per face: its first run's initial target
-  StageTimes times;                    // summed over the runs made here (not reused)
+  StageTimes times;                    // summed over the runs made here (not reused), replaced too
   size_t unfitted = 0;                 // patches Step 1 could not fit in their first run
   int first_unfitted = -1;             // the first of them, and why Step 1 could not fit it
   std::string first_unfitted_why;

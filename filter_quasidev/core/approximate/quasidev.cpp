@@ -37,35 +37,59 @@ struct GroupedSolve {
   std::vector<ScheduledRun> fresh;
 };
 
-// Algorithm 1 over the patches of `patch`, solved in the groups of `solve`; k_input: K of the
-// input per vertex (Eq. 18); earlier: fresh runs of another grouping's solve, taken where a
-// group would repeat one.
-GroupedSolve solve_in_groups(const Problem& problem, const Topology& patch_topo,
-                             const std::vector<int>& patch, const SolveGroups& solve,
+// What a solve of the patches in one grouping into solve groups runs from: the topology of the
+// groups, the roles of the vertices and the input every group shares.
+struct GroupedInput {
+  GroupedInput(const Problem& problem, const Topology& patch_topo, const std::vector<int>& patch,
+               const SolveGroups& groups)
+      : solve(groups),
+        topo(groups.joins.empty()
+                 ? patch_topo
+                 : analyse_topology(problem.F, static_cast<int>(problem.V.rows()), groups.group)),
+        roles(vertex_roles(problem, topo, problem.params.seams)),
+        held_vertices(vertex_roles(problem, topo, SeamMode::Fixed).constrained),
+        incident(problem.F, problem.V.rows()),
+        in{problem.V,
+           problem.F,
+           patch,
+           roles.interior,
+           incident,
+           problem.params,
+           average_edge_length(problem.V, problem.F)} {}
+  GroupedInput(const GroupedInput&) = delete;
+  GroupedInput& operator=(const GroupedInput&) = delete;
+
+  const SolveGroups& solve;
+  const Topology topo;
+  const VertexRoles roles;
+  const std::vector<char> held_vertices;  // with fixed seams
+  const VertexFaces incident;
+  const SolveInput in;
+};
+
+// Algorithm 1 over the patches of `grouped` (its setup took setup_ms); k_input: K of the input
+// per vertex (Eq. 18); earlier: fresh runs of another grouping's solve, or made for this one
+// (first_runs), taken where a group would repeat one.
+GroupedSolve solve_in_groups(const Problem& problem, const GroupedInput& grouped, double setup_ms,
                              const std::vector<double>& k_input,
                              const std::vector<ScheduledRun>& earlier, const Progress& progress) {
   const auto t0 = Clock::now();
   const Params& params = problem.params;
   const Positions& V = problem.V;
   const Triangles& F = problem.F;
-  const size_t nv = static_cast<size_t>(V.rows()), nf = static_cast<size_t>(F.rows());
-  assert(solve.group.size() == nf);
-  const Topology topo =
-      solve.joins.empty() ? patch_topo : analyse_topology(F, static_cast<int>(nv), solve.group);
-  const VertexRoles roles = vertex_roles(problem, topo, params.seams);
-  const std::vector<char> held = vertex_roles(problem, topo, SeamMode::Fixed).constrained;
-  const VertexFaces incident(F, V.rows());
+  const SolveInput& in = grouped.in;
+  const size_t nf = static_cast<size_t>(F.rows());
+  assert(grouped.solve.group.size() == nf);
 
   Result r;
-  r.warnings = warnings(topo);
-  r.average_edge = average_edge_length(V, F);
+  r.warnings = warnings(grouped.topo);
+  r.average_edge = in.ae;
   r.k_before = k_input;
-  r.joins = solve.joins;
-  r.times.setup += ms_since(t0);  // validation, topology
+  r.joins = grouped.solve.joins;
+  r.times.setup += setup_ms;  // validation, topology
 
-  const SolveInput in{V, F, patch, roles.interior, incident, params, r.average_edge};
-  SolveSchedule schedule =
-      run_schedule(in, solve.group, roles.constrained, held, earlier, progress);
+  SolveSchedule schedule = run_schedule(in, grouped.solve.group, grouped.roles.constrained,
+                                        grouped.held_vertices, earlier, progress);
   r.V = schedule.V;
   assert(r.V.rows() == V.rows());  // the output keeps the input's vertex order
   SolveReports reports = patch_reports(schedule, params, nf);
@@ -80,13 +104,13 @@ GroupedSolve solve_in_groups(const Problem& problem, const Topology& patch_topo,
   }
   {
     StageTimer timer(r.times.metrics);
-    measure_result(r, reports.patches, V, F, patch, reports.initial_target, roles.interior,
-                   roles.constrained, thread_count(params.threads));
+    measure_result(r, reports.patches, V, F, in.patch, reports.initial_target, in.interior,
+                   grouped.roles.constrained, thread_count(params.threads));
   }
   for (auto& [id, rep] : reports.patches) r.patches.push_back(std::move(rep));
-  r.time_ms = ms_since(t0);
+  r.time_ms = setup_ms + ms_since(t0);
   r.log = approximate_log(r, schedule.reruns, params,
-                          held_curvature_share(r.k_before, roles.interior, roles.constrained));
+                          held_curvature_share(r.k_before, in.interior, grouped.roles.constrained));
   return {std::move(r), fresh_runs(std::move(schedule))};
 }
 
@@ -94,11 +118,11 @@ GroupedSolve solve_in_groups(const Problem& problem, const Topology& patch_topo,
 // the log's precision): on a tie the seams stay where they are.
 constexpr double kJoinMargin = 0.1;
 
-// Progress of one of `runs` runs (the `run`-th, from 0) as a share of the whole.
-Progress share_of(const Progress& progress, int run, int runs) {
+// Progress over [from, to) % of the whole.
+Progress part_of(const Progress& progress, int from, int to) {
   if (!progress) return progress;
-  return [progress, run, runs](int percent, const std::string& stage) {
-    progress((100 * run + percent) / runs, stage);
+  return [progress, from, to](int percent, const std::string& stage) {
+    progress(from + (to - from) * percent / 100, stage);
   };
 }
 
@@ -106,7 +130,8 @@ Progress share_of(const Progress& progress, int run, int runs) {
 // The seams held are those of the solve groups: a patch mostly on seams always joins its
 // neighbour; where patches hold most of their curvature on their seams (solve_groups.h), the
 // mesh is solved both with them joined and with them held, and the one that removes more
-// G_ABD is kept (beyond the paper; the log gives both figures).
+// G_ABD is kept (beyond the paper; the log gives both figures). Under fixed seams the groups of
+// both groupings run at once (first_runs), then each solve takes their runs.
 Result approximate_patches(const Problem& problem, const Topology& patch_topo,
                            const Progress& progress) {
   const auto t0 = Clock::now();
@@ -121,27 +146,47 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
                  [](double k) { return std::abs(k); });
   const auto [held, joined] = solve_groups(F, patch, patch_topo.boundary, curvature);
   const bool both = joined.group != held.group;
-  GroupedSolve first = solve_in_groups(problem, patch_topo, patch, held, k_input, {},
-                                       share_of(progress, 0, both ? 2 : 1));
-  Result r = std::move(first.result);
-  if (both) {
-    // The groups no join changes are not solved again: their runs from the held solve are taken.
-    Result j = solve_in_groups(problem, patch_topo, patch, joined, k_input, first.fresh,
-                               share_of(progress, 1, 2))
-                   .result;
-    JoinTrial trial;
-    trial.patches = static_cast<int>(
-        std::count_if(joined.joins.begin(), joined.joins.end(),
-                      [](const PatchJoin& p) { return p.reason == JoinReason::CurvatureOnSeams; }));
-    trial.joined = j.abd_reduction;
-    trial.held = r.abd_reduction;
-    trial.kept_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
-    if (trial.kept_joined) std::swap(r, j);
-    r.times += j.times;  // the whole mesh's stages count the work of both solves, once
-    r.factorizations = r.times.factorizations;
-    r.join_trial = trial;
-    r.log.insert(r.log.begin(), join_trial_note(trial));
+  const GroupedInput held_input(problem, patch_topo, patch, held);
+  if (!both) {
+    Result r = solve_in_groups(problem, held_input, ms_since(t0), k_input, {}, progress).result;
+    r.time_ms = ms_since(t0);
+    if (progress) progress(100, "done");
+    return r;
   }
+  const GroupedInput joined_input(problem, patch_topo, patch, joined);
+  const double setup_ms = ms_since(t0);  // of both groupings, counted in the first solve
+  // The runs made for both solves; their work is counted once, here.
+  std::vector<ScheduledRun> runs;
+  const bool at_once = problem.params.seams == SeamMode::Fixed;
+  StageTimes first_times;
+  if (at_once) {
+    runs = first_runs({{held_input.in, held.group, held_input.held_vertices},
+                       {joined_input.in, joined.group, joined_input.held_vertices}},
+                      part_of(progress, 0, 90));
+    for (const ScheduledRun& run : runs) first_times += run.run.outcome.times;
+  }
+  const Progress held_progress = at_once ? part_of(progress, 90, 95) : part_of(progress, 0, 50);
+  GroupedSolve first = solve_in_groups(problem, held_input, setup_ms, k_input, runs, held_progress);
+  Result r = std::move(first.result);
+  // The groups no join changes are not solved again: their runs from the held solve are taken.
+  runs.insert(runs.end(), std::make_move_iterator(first.fresh.begin()),
+              std::make_move_iterator(first.fresh.end()));
+  Result j = solve_in_groups(problem, joined_input, 0, k_input, runs,
+                             at_once ? part_of(progress, 95, 100) : part_of(progress, 50, 100))
+                 .result;
+  JoinTrial trial;
+  trial.patches = static_cast<int>(
+      std::count_if(joined.joins.begin(), joined.joins.end(),
+                    [](const PatchJoin& p) { return p.reason == JoinReason::CurvatureOnSeams; }));
+  trial.joined = j.abd_reduction;
+  trial.held = r.abd_reduction;
+  trial.kept_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
+  if (trial.kept_joined) std::swap(r, j);
+  r.times += j.times;  // the whole mesh's stages count the work of both solves, once
+  r.times += first_times;
+  r.factorizations = r.times.factorizations;
+  r.join_trial = trial;
+  r.log.insert(r.log.begin(), join_trial_note(trial));
   r.time_ms = ms_since(t0);
   if (progress) progress(100, "done");
   return r;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <thread>
@@ -100,6 +101,45 @@ const ScheduledRun* repeated_run(const std::vector<ScheduledRun>& earlier, Solve
   return nullptr;
 }
 
+// Runs work(k, idle) for every group k of `faces` (the faces of each) on up to `threads`
+// threads, the largest first, so that the last to finish is a small one; each run depends on
+// its own group only, so the order changes no result. idle: the threads no group holds, which
+// a race borrows (idle_threads.h).
+template <typename Work>
+void run_groups_at_once(const std::vector<size_t>& faces, size_t threads, const Work& work) {
+  std::vector<size_t> order(faces.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return faces[a] > faces[b]; });
+  IdleThreads idle(threads);
+  parallel_for(order.size(), std::min(order.size(), threads), [&](size_t i) {
+    idle.hold();
+    work(order[i], idle);
+    idle.release();
+  });
+}
+
+// What a group run reports as it goes: the share of `total` runs done, `done` of them ended;
+// only the caller's thread reports, below 100 % (groups may run again).
+std::function<void(double)> runs_progress(const Progress& progress, std::thread::id caller,
+                                          const std::atomic<size_t>& done, size_t total) {
+  return [&progress, caller, &done, total](double fraction) {
+    if (progress && std::this_thread::get_id() == caller)
+      progress(std::min(99, static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
+                                             static_cast<double>(total))),
+               "deforming");
+  };
+}
+
+// The groups of a solve group per face, each its faces in order, by group id.
+std::vector<std::vector<int>> faces_by_group(const std::vector<int>& group) {
+  std::map<int, std::vector<int>> faces_of_group;
+  for (size_t f = 0; f < group.size(); ++f) faces_of_group[group[f]].push_back(static_cast<int>(f));
+  std::vector<std::vector<int>> out;
+  for (auto& [id, faces] : faces_of_group) out.push_back(std::move(faces));
+  return out;
+}
+
 }  // namespace
 
 SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
@@ -107,14 +147,13 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
                            const std::vector<ScheduledRun>& earlier, const Progress& progress) {
   const Params& params = in.params;
   const Triangles& F = in.F;
-  std::map<int, std::vector<int>> faces_of_group;
-  for (size_t f = 0; f < group.size(); ++f) faces_of_group[group[f]].push_back(static_cast<int>(f));
+  const std::vector<std::vector<int>> faces_of_group = faces_by_group(group);
   std::vector<std::vector<int>> groups;
   std::vector<Pass> passes;
   const auto add_pass = [&](SolvePass name, const std::vector<char>& held_here, bool per_group) {
     passes.push_back({name, &held_here, per_group, groups.size(), 0});
     if (per_group) {
-      for (auto& [id, faces] : faces_of_group) groups.push_back(faces);
+      groups.insert(groups.end(), faces_of_group.begin(), faces_of_group.end());
     } else {
       groups.emplace_back(group.size());
       std::iota(groups.back().begin(), groups.back().end(), 0);
@@ -146,11 +185,14 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
   const SerialLibraries serial_libraries;
   const size_t threads = thread_count(params.threads);
   const auto run_round = [&](const std::vector<size_t>& round, const Pass& p) {
-    for (size_t gi : round)  // a fresh run about to be replaced is kept for another grouping
-      if (out.runs[gi].fresh) {
-        out.replaced.push_back(std::move(out.runs[gi]));
-        out.runs[gi] = ScheduledRun();
+    for (size_t gi : round) {  // a run about to be replaced: its work was done all the same,
+      ScheduledRun& replaced = out.runs[gi];  // and a fresh one is kept for another grouping
+      if (!replaced.reused) out.replaced_times += replaced.run.outcome.times;
+      if (replaced.fresh) {
+        out.replaced.push_back(std::move(replaced));
+        replaced = ScheduledRun();
       }
+    }
     std::vector<const ScheduledRun*> repeated(round.size());
     for (size_t k = 0; k < round.size(); ++k)
       repeated[k] =
@@ -158,29 +200,22 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
     Params group_params = params;  // a group alone to run in its round has every thread
     group_params.threads =
         static_cast<int>(std::count(repeated.begin(), repeated.end(), nullptr) == 1 ? threads : 1);
-    IdleThreads idle(threads);
-    parallel_for(round.size(), std::min(round.size(), threads), [&](size_t k) {
-      idle.hold();
-      // Only the caller's thread reports; below 100 % even when groups run again (rare).
-      const auto group_progress = [&](double fraction) {
-        if (progress && std::this_thread::get_id() == caller)
-          progress(std::min(99, static_cast<int>(100.0 * (static_cast<double>(done) + fraction) /
-                                                 static_cast<double>(groups.size()))),
-                   "deforming");
-      };
+    std::vector<size_t> work(round.size());  // a run taken from `earlier` is no work
+    for (size_t k = 0; k < round.size(); ++k) work[k] = repeated[k] ? 0 : groups[round[k]].size();
+    run_groups_at_once(work, threads, [&](size_t k, IdleThreads& idle) {
       ScheduledRun& here = out.runs[round[k]];
       if (const ScheduledRun* same = repeated[k]) {
         here = *same;
         here.reused = true;
       } else {
-        here.run = run_group(in, out.V, groups[round[k]], *p.constrained, group_params, decided,
-                             p.per_group, idle, group_progress);
+        here.run =
+            run_group(in, out.V, groups[round[k]], *p.constrained, group_params, decided,
+                      p.per_group, idle, runs_progress(progress, caller, done, groups.size()));
         here.pass = p.name;
         here.fresh = undecided(here.run, decided);
         here.reused = false;
       }
       ++done;
-      idle.release();
     });
     if (p.per_group)  // the per-patch races decide for the later passes
       for (size_t gi : round)
@@ -223,6 +258,48 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
       }
     }
   }
+  return out;
+}
+
+std::vector<ScheduledRun> first_runs(const std::vector<Grouping>& groupings,
+                                     const Progress& progress) {
+  struct Job {
+    const Grouping& grouping;
+    std::vector<int> faces;
+  };
+  // The same group in two groupings: the same faces, with the same vertices held.
+  const auto same = [](const Job& job, const Grouping& g, const std::vector<int>& faces) {
+    if (job.faces != faces) return false;
+    for (int f : faces)
+      for (int c = 0; c < 3; ++c) {
+        const auto v = static_cast<size_t>(g.in.F(f, c));
+        if (job.grouping.held[v] != g.held[v]) return false;
+      }
+    return true;
+  };
+  std::vector<Job> jobs;
+  for (const Grouping& g : groupings)
+    for (std::vector<int>& faces : faces_by_group(g.group))
+      if (std::none_of(jobs.begin(), jobs.end(), [&](const Job& j) { return same(j, g, faces); }))
+        jobs.push_back({g, std::move(faces)});
+  std::vector<ScheduledRun> out(jobs.size());
+  if (jobs.empty()) return out;
+  const SerialLibraries serial_libraries;  // as in run_schedule
+  const size_t threads = thread_count(groupings.front().in.params.threads);
+  Params group_params = groupings.front().in.params;  // a group alone has every thread
+  group_params.threads = static_cast<int>(jobs.size() == 1 ? threads : 1);
+  const std::thread::id caller = std::this_thread::get_id();
+  std::atomic<size_t> done{0};
+  std::vector<size_t> work;
+  for (const Job& job : jobs) work.push_back(job.faces.size());
+  run_groups_at_once(work, threads, [&](size_t k, IdleThreads& idle) {
+    const SolveInput& in = jobs[k].grouping.in;
+    out[k].run = run_group(in, in.input, jobs[k].faces, jobs[k].grouping.held, group_params, {},
+                           true, idle, runs_progress(progress, caller, done, jobs.size()));
+    out[k].pass = SolvePass::Only;
+    out[k].fresh = true;
+    ++done;
+  });
   return out;
 }
 

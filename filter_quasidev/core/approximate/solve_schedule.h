@@ -30,6 +30,7 @@ struct SolveSchedule {
   std::vector<ScheduledRun> runs;        // the groups' last runs, pass by pass
   std::vector<std::vector<int>> reruns;  // the patch ids of each round solved again in turn
   std::vector<ScheduledRun> replaced;    // fresh runs of groups that then ran again
+  StageTimes replaced_times;             // the work of every run made here that was replaced
 };
 
 // group: solve group per face (solve_groups.h); constrained: per vertex, held with free seams;
@@ -38,6 +39,21 @@ struct SolveSchedule {
 SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
                            const std::vector<char>& constrained, const std::vector<char>& held,
                            const std::vector<ScheduledRun>& earlier, const Progress& progress);
+
+// A grouping of the mesh into solve groups under fixed seams: the input its groups run from,
+// the solve group of each face and the vertices held.
+struct Grouping {
+  const SolveInput& in;
+  const std::vector<int>& group;
+  const std::vector<char>& held;
+};
+
+// Under fixed seams a solve runs each of its groups once, from the input, in its one pass
+// (unless the never-worse rule runs some again). Those runs of several groupings of one mesh (a
+// join trial's, quasidev.h) are made here at once, a group that two groupings share once, so
+// that no grouping's groups wait for another's to end; run_schedule takes them as `earlier`.
+std::vector<ScheduledRun> first_runs(const std::vector<Grouping>& groupings,
+                                     const Progress& progress);
 
 // The fresh runs of a schedule, those of groups that ran again included: what another
 // grouping's run_schedule takes as `earlier`.
