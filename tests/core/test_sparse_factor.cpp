@@ -24,7 +24,9 @@ double relative_residual(const Eigen::SparseMatrix<double>& lower, const Eigen::
 }
 
 TEST(PositiveDefiniteFactor, EveryBackEndSolvesAnSpdSystem) {
-  const Eigen::SparseMatrix<double> L = test::laplacian_lower(12 * 9, test::grid_edges(12, 9), 0.1);
+  // 1,600 unknowns: Auto takes a supernodal factor (kCholmodFromUnknowns)
+  const Eigen::SparseMatrix<double> L =
+      test::laplacian_lower(40 * 40, test::grid_edges(40, 40), 0.1);
   const Eigen::MatrixXd b = Eigen::MatrixXd::Random(L.rows(), 2);
   for (const SolverKind kind : kEverySolver)
     for (const bool many_solves : {false, true}) {
@@ -37,37 +39,64 @@ TEST(PositiveDefiniteFactor, EveryBackEndSolvesAnSpdSystem) {
     }
 }
 
-TEST(PositiveDefiniteFactor, AutoTakesCholmodFromItsThreshold) {
-  PositiveDefiniteFactor small(SolverKind::Auto), large(SolverKind::Auto);
+// A matrix given with both triangles is read by its lower one, by every back end (the flattening
+// passes its Laplacians so).
+TEST(PositiveDefiniteFactor, EveryBackEndReadsTheLowerTriangle) {
+  const Eigen::SparseMatrix<double> L =
+      test::laplacian_lower(40 * 40, test::grid_edges(40, 40), 0.1);
+  Eigen::SparseMatrix<double> both(L.rows(), L.cols());
+  both = L.selfadjointView<Eigen::Lower>();
+  ASSERT_EQ(both.nonZeros(), 2 * L.nonZeros() - L.rows());
+  const Eigen::MatrixXd b = Eigen::MatrixXd::Random(L.rows(), 2);
+  for (const SolverKind kind : kEverySolver)
+    for (const bool many_solves : {false, true}) {
+      PositiveDefiniteFactor factor(kind, many_solves);
+      factor.factorize(both);
+      EXPECT_LT(relative_residual(L, factor.solve(b), b), 1e-10) << static_cast<int>(kind);
+    }
+}
+
+// From its threshold Auto takes a supernodal factor: the LDLᵀ on CHOLMOD's analysis, or CHOLMOD's
+// LLᵀ for a factor that serves many solves.
+TEST(PositiveDefiniteFactor, AutoTakesASupernodalFactorFromItsThreshold) {
+  PositiveDefiniteFactor small(SolverKind::Auto), large(SolverKind::Auto),
+      many(SolverKind::Auto, true);
   small.factorize(test::laplacian_lower(100, test::path_edges(100), 1.0));
   const int n = static_cast<int>(kCholmodFromUnknowns);
   large.factorize(test::laplacian_lower(n, test::path_edges(n), 1.0));
+  many.factorize(test::laplacian_lower(n, test::path_edges(n), 1.0));
   EXPECT_EQ(small.backend(), FactorBackend::EigenLdlt);
-  EXPECT_EQ(large.backend(), FactorBackend::CholmodLlt);
+  EXPECT_EQ(large.backend(), FactorBackend::SupernodalLdlt);
+  EXPECT_EQ(many.backend(), FactorBackend::CholmodLlt);
 }
 
 TEST(PositiveDefiniteFactor, ReportsAnIndefiniteMatrix) {
-  // A Laplacian shifted by −0.5: its smallest eigenvalue is −0.5.
-  const Eigen::SparseMatrix<double> L = test::laplacian_lower(40, test::path_edges(40), -0.5);
-  for (const SolverKind kind : kEverySolver) {
-    PositiveDefiniteFactor factor(kind);
-    EXPECT_THROW(factor.factorize(L), Error);
+  // Laplacians shifted by −0.5: their smallest eigenvalue is −0.5 (and no pivot vanishes);
+  // the larger one goes to the supernodal back ends.
+  for (const int n : {40, static_cast<int>(kCholmodFromUnknowns)}) {
+    const Eigen::SparseMatrix<double> L = test::laplacian_lower(n, test::path_edges(n), -0.5);
+    for (const SolverKind kind : kEverySolver)
+      for (const bool many_solves : {false, true}) {
+        PositiveDefiniteFactor factor(kind, many_solves);
+        EXPECT_THROW(factor.factorize(L), Error) << n << " " << static_cast<int>(kind);
+      }
   }
 }
 
 // The counts of a tridiagonal matrix's factor: columns of 2 entries but the last, so 2n − 1
 // entries and 4 (n − 1) + 1 flops per factorisation, by every back end.
 TEST(PositiveDefiniteFactor, CountsTheFlopsAndEntriesOfItsFactor) {
-  const int n = 3000;  // above kCholmodFromUnknowns: Auto takes CHOLMOD
+  const int n = 3000;  // above kCholmodFromUnknowns: Auto takes a supernodal factor
   const Eigen::SparseMatrix<double> L = test::laplacian_lower(n, test::path_edges(n), 1.0);
-  for (const SolverKind kind : kEverySolver) {
-    PositiveDefiniteFactor factor(kind, true);
-    EXPECT_EQ(factor.flops(), 0.0);
-    factor.factorize(L);
-    factor.factorize(L);
-    EXPECT_EQ(factor.flops(), 2.0 * (4.0 * (n - 1) + 1)) << static_cast<int>(kind);
-    EXPECT_EQ(factor.entries(), 2.0 * n - 1) << static_cast<int>(kind);
-  }
+  for (const SolverKind kind : kEverySolver)
+    for (const bool many_solves : {false, true}) {
+      PositiveDefiniteFactor factor(kind, many_solves);
+      EXPECT_EQ(factor.flops(), 0.0);
+      factor.factorize(L);
+      factor.factorize(L);
+      EXPECT_EQ(factor.flops(), 2.0 * (4.0 * (n - 1) + 1)) << static_cast<int>(kind);
+      EXPECT_EQ(factor.entries(), 2.0 * n - 1) << static_cast<int>(kind);
+    }
 }
 
 // On a grid, whose factor fills in, the back ends count the same flops and entries, CHOLMOD's

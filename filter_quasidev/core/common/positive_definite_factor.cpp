@@ -3,6 +3,8 @@
 #include "common/with_cholmod.h"
 #ifdef QD_WITH_CHOLMOD
 #include <Eigen/CholmodSupport>
+
+#include "common/supernodal_backend.h"
 #endif
 
 namespace qd::common {
@@ -52,9 +54,9 @@ struct CholmodBackend : SparseFactor::EigenBackend<Supernodal> {
 SparseFactor::Choice PositiveDefiniteFactor::choose(long unknowns) const {
   switch (kind_) {
     case SolverKind::Auto:
-      return {unknowns < kCholmodFromUnknowns || !kHaveCholmod ? FactorBackend::EigenLdlt
-                                                               : FactorBackend::CholmodLlt,
-              false};
+      if (unknowns < kCholmodFromUnknowns || !kHaveCholmod)
+        return {FactorBackend::EigenLdlt, false};
+      return {many_solves_ ? FactorBackend::CholmodLlt : FactorBackend::SupernodalLdlt, false};
     case SolverKind::Cholmod:
       return {FactorBackend::CholmodLlt, false};
     case SolverKind::EigenLLT:
@@ -69,6 +71,8 @@ std::unique_ptr<SparseFactor::Backend> PositiveDefiniteFactor::make(FactorBacken
   if (kind == FactorBackend::EigenLlt) return std::make_unique<EigenLlt>();
   if (kind == FactorBackend::EigenLdlt) return std::make_unique<DefiniteLdlt>();
 #ifdef QD_WITH_CHOLMOD
+  if (kind == FactorBackend::SupernodalLdlt)
+    return supernodal_backend(std::make_shared<SharedAnalysis>(), true);
   return std::make_unique<CholmodBackend>(many_solves_);
 #else
   throw_no_cholmod();

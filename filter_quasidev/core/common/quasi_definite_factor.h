@@ -7,20 +7,11 @@
 #pragma once
 
 #include <memory>
-#include <mutex>
 
 #include "common/sparse_factor.h"
+#include "common/supernodal_backend.h"
 
 namespace qd::common {
-
-struct SupernodalAnalysis;  // quasi_definite_ldlt.h
-
-// The symbolic analysis kept for the factors of one pattern: the first supernodal factor to
-// factorise fills it, the others take it (they may factorise at once, in a race's threads).
-struct SharedAnalysis {
-  std::mutex mutex;
-  std::shared_ptr<const SupernodalAnalysis> supernodal;
-};
 
 class QuasiDefiniteFactor : public SparseFactor {
  public:

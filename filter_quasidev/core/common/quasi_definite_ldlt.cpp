@@ -93,7 +93,8 @@ cholmod_sparse pattern_view(int n, const int* outer, const int* inner) {
 }
 
 // slot: each entry (i, j) of `lower` goes to row max and column min of (inverse[i], inverse[j]);
-// entries are taken column by column of the factor, each supernode's rows mapped once.
+// entries are taken column by column of the factor, each supernode's rows mapped once. Entries
+// above the diagonal (i < j) have no slot (−1): as CHOLMOD, the factor reads the lower triangle.
 void place_entries(SupernodalAnalysis& an, const Eigen::SparseMatrix<double>& lower) {
   const int n = an.n;
   std::vector<int> inverse(static_cast<size_t>(n));
@@ -104,19 +105,21 @@ void place_entries(SupernodalAnalysis& an, const Eigen::SparseMatrix<double>& lo
     return std::min(inverse[static_cast<size_t>(j)],
                     inverse[static_cast<size_t>(lower.innerIndexPtr()[e])]);
   };
+  const auto upper = [&](int j, int e) { return lower.innerIndexPtr()[e] < j; };
   for (int j = 0; j < n; ++j)
     for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
-      ++start[static_cast<size_t>(column_of(j, e)) + 1];
+      if (!upper(j, e)) ++start[static_cast<size_t>(column_of(j, e)) + 1];
   for (size_t k = 0; k < static_cast<size_t>(n); ++k) start[k + 1] += start[k];
   std::vector<int> next(start.begin(), start.end() - 1);
   for (int j = 0; j < n; ++j)
     for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
-      entry[static_cast<size_t>(next[static_cast<size_t>(column_of(j, e))]++)] = e;
+      if (!upper(j, e))
+        entry[static_cast<size_t>(next[static_cast<size_t>(column_of(j, e))]++)] = e;
   std::vector<int> column_of_entry(entry.size());
   for (int j = 0; j < n; ++j)
     for (int e = lower.outerIndexPtr()[j]; e < lower.outerIndexPtr()[j + 1]; ++e)
       column_of_entry[static_cast<size_t>(e)] = j;
-  an.slot.resize(entry.size());
+  an.slot.assign(entry.size(), -1);
   std::vector<int> map(static_cast<size_t>(n));
   for (size_t t = 0; t + 1 < an.super.size(); ++t) {
     const int height = an.row_start[t + 1] - an.row_start[t];
@@ -184,7 +187,7 @@ bool QuasiDefiniteLdlt::factorize(const Eigen::SparseMatrix<double>& lower) {
   std::fill(values_.begin(), values_.end(), 0.0);
   const double* value = lower.valuePtr();
   for (size_t e = 0; e < a_->slot.size(); ++e)
-    values_[static_cast<size_t>(a_->slot[e])] += value[e];
+    if (a_->slot[e] >= 0) values_[static_cast<size_t>(a_->slot[e])] += value[e];
   std::vector<double> work;
   std::vector<int> map(static_cast<size_t>(a_->n), -1);
   for (int s = 0; s + 1 < static_cast<int>(a_->super.size()); ++s)
@@ -288,6 +291,15 @@ Eigen::VectorXd QuasiDefiniteLdlt::solve(const Eigen::VectorXd& b) const {
   Eigen::VectorXd out(a_->n);
   for (int k = 0; k < a_->n; ++k) out[a_->perm[static_cast<size_t>(k)]] = x[k];
   return out;
+}
+
+bool QuasiDefiniteLdlt::pivots_positive() const {
+  for (int s = 0; s + 1 < static_cast<int>(a_->super.size()); ++s) {
+    const Panel p = panel(s);
+    for (int j = 0; j < p.columns; ++j)
+      if (!(p.X[j + static_cast<long>(j) * p.height] > 0)) return false;
+  }
+  return true;
 }
 
 int QuasiDefiniteLdlt::widest_supernode() const {

@@ -27,7 +27,7 @@ struct SupernodalAnalysis {
   std::vector<int> rows;          //   (its own columns first, then the rows below)
   std::vector<long> value_start;  // its dense column-major panel at values[value_start[s]]
   std::vector<int> owner;         // supernode of each column
-  std::vector<long> slot;         // place in the values of each stored entry of `lower`
+  std::vector<long> slot;         // place in the values of each stored entry of `lower` (or −1)
   size_t values = 0;              // the factor's values
   double flops = 0;               // CHOLMOD's count (of an LLᵀ of the same pattern)
   double entries = 0;             // L's nonzeros (the values hold explicit zeros too)
@@ -38,8 +38,9 @@ class QuasiDefiniteLdlt {
   static constexpr int kUnblocked = 32;       // dense diagonal blocks up to this size: plain loops
   static constexpr int kUpdateColumns = 256;  // widest block of an update computed at once
 
-  // Analyses the pattern of `lower`, the lower triangle of K (column major, sorted), already
-  // in a fill-reducing order (CHOLMOD only postorders it).
+  // Analyses the pattern of `lower`, the lower triangle of K (column major, sorted; entries
+  // above the diagonal are ignored), already in a fill-reducing order (CHOLMOD only
+  // postorders it).
   static std::shared_ptr<const SupernodalAnalysis> analyse(
       const Eigen::SparseMatrix<double>& lower);
   explicit QuasiDefiniteLdlt(std::shared_ptr<const SupernodalAnalysis> analysis);
@@ -49,6 +50,8 @@ class QuasiDefiniteLdlt {
   // Factorises K with the values of `lower` (the pattern given at construction); false when a
   // pivot vanishes (K is not quasi-definite).
   bool factorize(const Eigen::SparseMatrix<double>& lower);
+  // Every pivot of the current factor is positive: K is positive definite.
+  bool pivots_positive() const;
   // Solves K x = b with the current factor.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   // Columns of the widest supernode (the widest dense diagonal block).
