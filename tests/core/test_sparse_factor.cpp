@@ -17,6 +17,7 @@ using namespace qd::common;
 
 constexpr SolverKind kEverySolver[] = {SolverKind::Auto, SolverKind::Cholmod, SolverKind::EigenLLT,
                                        SolverKind::EigenLDLT};
+constexpr Solves kEverySolves[] = {Solves::Few, Solves::AtOnce, Solves::Many};
 
 double relative_residual(const Eigen::SparseMatrix<double>& lower, const Eigen::MatrixXd& x,
                          const Eigen::MatrixXd& b) {
@@ -29,8 +30,8 @@ TEST(PositiveDefiniteFactor, EveryBackEndSolvesAnSpdSystem) {
       test::laplacian_lower(40 * 40, test::grid_edges(40, 40), 0.1);
   const Eigen::MatrixXd b = Eigen::MatrixXd::Random(L.rows(), 2);
   for (const SolverKind kind : kEverySolver)
-    for (const bool many_solves : {false, true}) {
-      PositiveDefiniteFactor factor(kind, many_solves);
+    for (const Solves solves : kEverySolves) {
+      PositiveDefiniteFactor factor(kind, solves);
       factor.factorize(L);
       factor.factorize(L);  // again, on the analysis of the first
       EXPECT_EQ(factor.factorizations(), 2);
@@ -49,24 +50,25 @@ TEST(PositiveDefiniteFactor, EveryBackEndReadsTheLowerTriangle) {
   ASSERT_EQ(both.nonZeros(), 2 * L.nonZeros() - L.rows());
   const Eigen::MatrixXd b = Eigen::MatrixXd::Random(L.rows(), 2);
   for (const SolverKind kind : kEverySolver)
-    for (const bool many_solves : {false, true}) {
-      PositiveDefiniteFactor factor(kind, many_solves);
+    for (const Solves solves : kEverySolves) {
+      PositiveDefiniteFactor factor(kind, solves);
       factor.factorize(both);
       EXPECT_LT(relative_residual(L, factor.solve(b), b), 1e-10) << static_cast<int>(kind);
     }
 }
 
 // From its threshold Auto takes a supernodal factor: the LDLᵀ on CHOLMOD's analysis, or CHOLMOD's
-// LLᵀ for a factor that serves many solves.
+// LLᵀ for a factor that serves many solves one after another.
 TEST(PositiveDefiniteFactor, AutoTakesASupernodalFactorFromItsThreshold) {
   PositiveDefiniteFactor small(SolverKind::Auto), large(SolverKind::Auto),
-      many(SolverKind::Auto, true);
+      at_once(SolverKind::Auto, Solves::AtOnce), many(SolverKind::Auto, Solves::Many);
   small.factorize(test::laplacian_lower(100, test::path_edges(100), 1.0));
   const int n = static_cast<int>(kCholmodFromUnknowns);
-  large.factorize(test::laplacian_lower(n, test::path_edges(n), 1.0));
-  many.factorize(test::laplacian_lower(n, test::path_edges(n), 1.0));
+  for (PositiveDefiniteFactor* f : {&large, &at_once, &many})
+    f->factorize(test::laplacian_lower(n, test::path_edges(n), 1.0));
   EXPECT_EQ(small.backend(), FactorBackend::EigenLdlt);
   EXPECT_EQ(large.backend(), FactorBackend::SupernodalLdlt);
+  EXPECT_EQ(at_once.backend(), FactorBackend::SupernodalLdlt);
   EXPECT_EQ(many.backend(), FactorBackend::CholmodLlt);
 }
 
@@ -76,8 +78,8 @@ TEST(PositiveDefiniteFactor, ReportsAnIndefiniteMatrix) {
   for (const int n : {40, static_cast<int>(kCholmodFromUnknowns)}) {
     const Eigen::SparseMatrix<double> L = test::laplacian_lower(n, test::path_edges(n), -0.5);
     for (const SolverKind kind : kEverySolver)
-      for (const bool many_solves : {false, true}) {
-        PositiveDefiniteFactor factor(kind, many_solves);
+      for (const Solves solves : kEverySolves) {
+        PositiveDefiniteFactor factor(kind, solves);
         EXPECT_THROW(factor.factorize(L), Error) << n << " " << static_cast<int>(kind);
       }
   }
@@ -89,8 +91,8 @@ TEST(PositiveDefiniteFactor, CountsTheFlopsAndEntriesOfItsFactor) {
   const int n = 3000;  // above kCholmodFromUnknowns: Auto takes a supernodal factor
   const Eigen::SparseMatrix<double> L = test::laplacian_lower(n, test::path_edges(n), 1.0);
   for (const SolverKind kind : kEverySolver)
-    for (const bool many_solves : {false, true}) {
-      PositiveDefiniteFactor factor(kind, many_solves);
+    for (const Solves solves : kEverySolves) {
+      PositiveDefiniteFactor factor(kind, solves);
       EXPECT_EQ(factor.flops(), 0.0);
       factor.factorize(L);
       factor.factorize(L);

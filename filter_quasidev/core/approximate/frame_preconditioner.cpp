@@ -13,8 +13,8 @@ FramePreconditioner::FramePreconditioner(const BlockPattern& pattern, SolverKind
       threads_(static_cast<size_t>(threads)),
       K_n_(scalar_lower(pattern)),
       K_t_(K_n_),
-      normal_(solver, true),
-      tangent_(solver, true) {}
+      normal_(solver, Solves::AtOnce),
+      tangent_(solver, Solves::AtOnce) {}
 
 void FramePreconditioner::set_frames(const std::vector<Vec3>& normals) {
   frame_.resize(normals.size());

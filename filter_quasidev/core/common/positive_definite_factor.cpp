@@ -56,7 +56,8 @@ SparseFactor::Choice PositiveDefiniteFactor::choose(long unknowns) const {
     case SolverKind::Auto:
       if (unknowns < kCholmodFromUnknowns || !kHaveCholmod)
         return {FactorBackend::EigenLdlt, false};
-      return {many_solves_ ? FactorBackend::CholmodLlt : FactorBackend::SupernodalLdlt, false};
+      return {solves_ == Solves::Many ? FactorBackend::CholmodLlt : FactorBackend::SupernodalLdlt,
+              false};
     case SolverKind::Cholmod:
       return {FactorBackend::CholmodLlt, false};
     case SolverKind::EigenLLT:
@@ -73,7 +74,7 @@ std::unique_ptr<SparseFactor::Backend> PositiveDefiniteFactor::make(FactorBacken
 #ifdef QD_WITH_CHOLMOD
   if (kind == FactorBackend::SupernodalLdlt)
     return supernodal_backend(std::make_shared<SharedAnalysis>(), true);
-  return std::make_unique<CholmodBackend>(many_solves_);
+  return std::make_unique<CholmodBackend>(solves_ != Solves::Few);
 #else
   throw_no_cholmod();
 #endif

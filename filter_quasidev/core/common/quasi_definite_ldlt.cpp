@@ -256,40 +256,41 @@ void QuasiDefiniteLdlt::update_ancestors(int s, const double* W, std::vector<dou
   }
 }
 
-// Each supernode's part of x is gathered into a dense vector t (its rows), worked on there, and
-// scattered back: the loops then run over contiguous memory.
-Eigen::VectorXd QuasiDefiniteLdlt::solve(const Eigen::VectorXd& b) const {
-  Eigen::VectorXd x(a_->n);
-  for (int k = 0; k < a_->n; ++k) x[k] = b[a_->perm[static_cast<size_t>(k)]];
+// Each supernode's rows of x are gathered into a dense block t (its rows × the right-hand
+// sides), worked on there, and scattered back: the loops then run over contiguous memory, and
+// the factor is read once for all right-hand sides.
+Eigen::MatrixXd QuasiDefiniteLdlt::solve(const Eigen::MatrixXd& b) const {
+  const Eigen::Index rhs = b.cols();
+  Eigen::MatrixXd x(a_->n, rhs);
+  for (int k = 0; k < a_->n; ++k) x.row(k) = b.row(a_->perm[static_cast<size_t>(k)]);
   const int ns = static_cast<int>(a_->super.size()) - 1;
-  std::vector<double> t;
+  int tallest = 0;
+  for (int s = 0; s < ns; ++s) tallest = std::max(tallest, panel(s).height);
+  Eigen::MatrixXd block(tallest, rhs);
+  const auto column = [](const Panel& p, int j) {  // L's column j below the diagonal
+    return Eigen::Map<const Eigen::VectorXd>(p.X + static_cast<long>(j) * p.height + j + 1,
+                                             p.height - j - 1);
+  };
   for (int s = 0; s < ns; ++s) {  // L y = b, then D z = y
     const Panel p = panel(s);
-    t.resize(static_cast<size_t>(p.height));
-    for (int i = 0; i < p.height; ++i) t[static_cast<size_t>(i)] = x[p.row[i]];
-    for (int j = 0; j < p.columns; ++j) {
-      const double tj = t[static_cast<size_t>(j)];
-      const double* l = p.X + static_cast<long>(j) * p.height;
-      for (int i = j + 1; i < p.height; ++i) t[static_cast<size_t>(i)] -= l[i] * tj;
-    }
+    auto t = block.topRows(p.height);
+    for (int i = 0; i < p.height; ++i) t.row(i) = x.row(p.row[i]);
     for (int j = 0; j < p.columns; ++j)
-      x[p.row[j]] = t[static_cast<size_t>(j)] / p.X[j + static_cast<long>(j) * p.height];
-    for (int i = p.columns; i < p.height; ++i) x[p.row[i]] = t[static_cast<size_t>(i)];
+      t.bottomRows(p.height - j - 1).noalias() -= column(p, j) * t.row(j);
+    for (int j = 0; j < p.columns; ++j)
+      x.row(p.row[j]) = t.row(j) / p.X[j + static_cast<long>(j) * p.height];
+    for (int i = p.columns; i < p.height; ++i) x.row(p.row[i]) = t.row(i);
   }
   for (int s = ns - 1; s >= 0; --s) {  // Lᵀ x = z
     const Panel p = panel(s);
-    t.resize(static_cast<size_t>(p.height));
-    for (int i = 0; i < p.height; ++i) t[static_cast<size_t>(i)] = x[p.row[i]];
-    for (int j = p.columns - 1; j >= 0; --j) {  // Eigen's dot keeps several sums going at once
-      const Eigen::Index rest = p.height - j - 1;
-      const double* l = p.X + static_cast<long>(j) * p.height + j + 1;
-      t[static_cast<size_t>(j)] -= Eigen::Map<const Eigen::VectorXd>(l, rest).dot(
-          Eigen::Map<const Eigen::VectorXd>(t.data() + j + 1, rest));
-    }
-    for (int j = 0; j < p.columns; ++j) x[p.row[j]] = t[static_cast<size_t>(j)];
+    auto t = block.topRows(p.height);
+    for (int i = 0; i < p.height; ++i) t.row(i) = x.row(p.row[i]);
+    for (int j = p.columns - 1; j >= 0; --j)
+      t.row(j).noalias() -= column(p, j).transpose() * t.bottomRows(p.height - j - 1);
+    for (int j = 0; j < p.columns; ++j) x.row(p.row[j]) = t.row(j);
   }
-  Eigen::VectorXd out(a_->n);
-  for (int k = 0; k < a_->n; ++k) out[a_->perm[static_cast<size_t>(k)]] = x[k];
+  Eigen::MatrixXd out(a_->n, rhs);
+  for (int k = 0; k < a_->n; ++k) out.row(a_->perm[static_cast<size_t>(k)]) = x.row(k);
   return out;
 }
 

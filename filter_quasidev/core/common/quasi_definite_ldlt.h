@@ -52,8 +52,8 @@ class QuasiDefiniteLdlt {
   bool factorize(const Eigen::SparseMatrix<double>& lower);
   // Every pivot of the current factor is positive: K is positive definite.
   bool pivots_positive() const;
-  // Solves K x = b with the current factor.
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  // Solves K x = b with the current factor, for every column of b at once.
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;  // every column of b at once
   // Columns of the widest supernode (the widest dense diagonal block).
   int widest_supernode() const;
 

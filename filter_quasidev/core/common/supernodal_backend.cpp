@@ -21,11 +21,7 @@ struct SupernodalBackend : SparseFactor::Backend {
     }
     return ldlt->factorize(lower) && (!positive || ldlt->pivots_positive());
   }
-  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override {
-    Eigen::MatrixXd x(b.rows(), b.cols());
-    for (Eigen::Index c = 0; c < b.cols(); ++c) x.col(c) = ldlt->solve(b.col(c));
-    return x;
-  }
+  Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const override { return ldlt->solve(b); }
 };
 
 }  // namespace

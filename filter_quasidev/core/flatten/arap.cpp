@@ -48,7 +48,7 @@ ArapOutcome arap(const Triangles& F, const FlatTriangles& g, const Eigen::Sparse
   std::vector<int> free_index(static_cast<size_t>(n));
   for (int v = 0; v < n; ++v) free_index[v] = v == pinned ? -1 : v - (v > pinned);
   const OrderedCholesky solver(sparse_block(L, free_index, n - 1, free_index, n - 1),
-                               settings.solver, true);
+                               settings.solver, Solves::Many);
   const Eigen::VectorXd pin_column = L.col(pinned);
   const std::vector<Eigen::Matrix<double, 2, 3>> Y = weighted_frame_edges(g);
   const double total_area = g.area.sum();

@@ -33,7 +33,7 @@ Eigen::MatrixX2d initial_layout(const Positions& V, const Triangles& F, const Fl
   const Eigen::SparseMatrix<double> L_IB = sparse_block(L, interior, ni, boundary, m);
   std::optional<OrderedCholesky> L_II;
   if (ni > 0) {
-    L_II.emplace(sparse_block(L, interior, ni, interior, ni), solver, false);
+    L_II.emplace(sparse_block(L, interior, ni, interior, ni), solver, Solves::Few);
     const Eigen::VectorXd u = L_II->solve(-defect);  // step 1
     turning += L_IB.transpose() * u;                 // step 2: κ̃_B = κ_B + L_BI u_I
   }

@@ -21,8 +21,8 @@ namespace {
 }  // namespace
 
 OrderedCholesky::OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKind kind,
-                                 bool many_solves)
-    : order_(M.rows()), cholesky_(kind, many_solves) {
+                                 Solves solves)
+    : order_(M.rows()), cholesky_(kind, solves) {
   std::vector<std::pair<int, int>> edges;
   for (int c = 0; c < M.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(M, c); it; ++it)

@@ -13,9 +13,9 @@ namespace qd::flatten {
 
 class OrderedCholesky {
  public:
-  // Factorises M (both triangles stored); many_solves as in PositiveDefiniteFactor. Throws
+  // Factorises M (both triangles stored); solves as in PositiveDefiniteFactor. Throws
   // qd::common::Error if M is not positive definite.
-  OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKind kind, bool many_solves);
+  OrderedCholesky(const Eigen::SparseMatrix<double>& M, SolverKind kind, Solves solves);
   // Solves M x = b for every column of b.
   Eigen::MatrixXd solve(const Eigen::MatrixXd& b) const;
 
