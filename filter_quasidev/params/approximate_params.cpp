@@ -14,12 +14,12 @@ namespace {
 using S = ApproximateSettings;
 
 std::string solver_help() {
-  return "The sparse Cholesky back end: cholmod (SuiteSparse's supernodal), eigen-llt or "
+  return "The sparse Cholesky back end: cholmod (SuiteSparse's supernodal LLT), eigen-llt or "
          "eigen-ldlt (Eigen's simplicial), or auto (eigen-ldlt below " +
          std::to_string(common::kCholmodFromUnknowns) +
-         " unknowns per patch, else cholmod); the result is the same. Patches with angle-defect "
-         "rows solve their quasi-definite system by LDLT: our supernodal one (auto, cholmod) or "
-         "Eigen's simplicial one (eigen-llt, eigen-ldlt).";
+         " unknowns per patch, else our supernodal LDLT on SuiteSparse's analysis); the result is "
+         "the same. Patches with angle-defect rows solve their quasi-definite system by LDLT: our "
+         "supernodal one (auto, cholmod) or Eigen's simplicial one (eigen-llt, eigen-ldlt).";
 }
 
 std::string method_help() {
