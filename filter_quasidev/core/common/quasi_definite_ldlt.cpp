@@ -285,8 +285,11 @@ Eigen::MatrixXd QuasiDefiniteLdlt::solve(const Eigen::MatrixXd& b) const {
     const Panel p = panel(s);
     auto t = block.topRows(p.height);
     for (int i = 0; i < p.height; ++i) t.row(i) = x.row(p.row[i]);
+    // One dot per right-hand side: on these short columns faster than a row times a block
+    // (Eigen's matrix-vector product), 5–9 % of a 1M-triangle run (docs/solvers.md).
     for (int j = p.columns - 1; j >= 0; --j)
-      t.row(j).noalias() -= column(p, j).transpose() * t.bottomRows(p.height - j - 1);
+      for (Eigen::Index c = 0; c < rhs; ++c)
+        t(j, c) -= column(p, j).dot(t.col(c).segment(j + 1, p.height - j - 1));
     for (int j = 0; j < p.columns; ++j) x.row(p.row[j]) = t.row(j);
   }
   Eigen::MatrixXd out(a_->n, rhs);
