@@ -38,24 +38,18 @@ struct GroupedSolve {
 };
 
 // What a solve of the patches in one grouping into solve groups runs from: the topology of the
-// groups, the roles of the vertices and the input every group shares.
+// groups, the roles of the vertices and the input every group shares (incident faces and the
+// average edge length, the same for every grouping of the mesh).
 struct GroupedInput {
   GroupedInput(const Problem& problem, const Topology& patch_topo, const std::vector<int>& patch,
-               const SolveGroups& groups)
+               const SolveGroups& groups, const VertexFaces& incident, double ae)
       : solve(groups),
         topo(groups.joins.empty()
                  ? patch_topo
                  : analyse_topology(problem.F, static_cast<int>(problem.V.rows()), groups.group)),
         roles(vertex_roles(problem, topo, problem.params.seams)),
         held_vertices(vertex_roles(problem, topo, SeamMode::Fixed).constrained),
-        incident(problem.F, problem.V.rows()),
-        in{problem.V,
-           problem.F,
-           patch,
-           roles.interior,
-           incident,
-           problem.params,
-           average_edge_length(problem.V, problem.F)} {}
+        in{problem.V, problem.F, patch, roles.interior, incident, problem.params, ae} {}
   GroupedInput(const GroupedInput&) = delete;
   GroupedInput& operator=(const GroupedInput&) = delete;
 
@@ -63,7 +57,6 @@ struct GroupedInput {
   const Topology topo;
   const VertexRoles roles;
   const std::vector<char> held_vertices;  // with fixed seams
-  const VertexFaces incident;
   const SolveInput in;
 };
 
@@ -126,12 +119,51 @@ Progress part_of(const Progress& progress, int from, int to) {
   };
 }
 
+// Solves the mesh with the seams of `held` held and with those of `joined` joined, and keeps the
+// one that removes more G_ABD (the log gives both figures). Under fixed seams the groups of both
+// groupings run at once (first_runs), then each solve takes their runs. setup_ms: of both
+// groupings, counted in the first solve.
+Result join_trial(const Problem& problem, const GroupedInput& held, const GroupedInput& joined,
+                  const std::vector<double>& k_input, double setup_ms, const Progress& progress) {
+  // The runs made for both solves; their work is counted once, here.
+  std::vector<ScheduledRun> runs;
+  const bool at_once = problem.params.seams == SeamMode::Fixed;
+  StageTimes first_times;
+  if (at_once) {
+    runs = first_runs({{held.in, held.solve.group, held.held_vertices},
+                       {joined.in, joined.solve.group, joined.held_vertices}},
+                      part_of(progress, 0, 90));
+    for (const ScheduledRun& run : runs) first_times += run.run.outcome.times;
+  }
+  const Progress held_progress = at_once ? part_of(progress, 90, 95) : part_of(progress, 0, 50);
+  GroupedSolve first = solve_in_groups(problem, held, setup_ms, k_input, runs, held_progress);
+  Result r = std::move(first.result);
+  // The groups no join changes are not solved again: their runs from the held solve are taken.
+  runs.insert(runs.end(), std::make_move_iterator(first.fresh.begin()),
+              std::make_move_iterator(first.fresh.end()));
+  Result j = solve_in_groups(problem, joined, 0, k_input, runs,
+                             at_once ? part_of(progress, 95, 100) : part_of(progress, 50, 100))
+                 .result;
+  JoinTrial trial;
+  trial.patches = static_cast<int>(
+      std::count_if(joined.solve.joins.begin(), joined.solve.joins.end(),
+                    [](const PatchJoin& p) { return p.reason == JoinReason::CurvatureOnSeams; }));
+  trial.joined = j.abd_reduction;
+  trial.held = r.abd_reduction;
+  trial.kept_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
+  if (trial.kept_joined) std::swap(r, j);
+  r.times += j.times;  // the whole mesh's stages count the work of both solves, once
+  r.times += first_times;
+  r.factorizations = r.times.factorizations;
+  r.join_trial = trial;
+  r.log.insert(r.log.begin(), join_trial_note(trial));
+  return r;
+}
+
 // Algorithm 1 over the patches the problem gives (the whole mesh as one when it gives none).
 // The seams held are those of the solve groups: a patch mostly on seams always joins its
 // neighbour; where patches hold most of their curvature on their seams (solve_groups.h), the
-// mesh is solved both with them joined and with them held, and the one that removes more
-// G_ABD is kept (beyond the paper; the log gives both figures). Under fixed seams the groups of
-// both groupings run at once (first_runs), then each solve takes their runs.
+// mesh is solved both with them joined and with them held (join_trial, beyond the paper).
 Result approximate_patches(const Problem& problem, const Topology& patch_topo,
                            const Progress& progress) {
   const auto t0 = Clock::now();
@@ -145,48 +177,16 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   std::transform(k_input.begin(), k_input.end(), curvature.begin(),
                  [](double k) { return std::abs(k); });
   const auto [held, joined] = solve_groups(F, patch, patch_topo.boundary, curvature);
-  const bool both = joined.group != held.group;
-  const GroupedInput held_input(problem, patch_topo, patch, held);
-  if (!both) {
-    Result r = solve_in_groups(problem, held_input, ms_since(t0), k_input, {}, progress).result;
-    r.time_ms = ms_since(t0);
-    if (progress) progress(100, "done");
-    return r;
+  const VertexFaces incident(F, problem.V.rows());
+  const double ae = average_edge_length(problem.V, F);
+  const GroupedInput held_input(problem, patch_topo, patch, held, incident, ae);
+  Result r;
+  if (joined.group == held.group) {
+    r = solve_in_groups(problem, held_input, ms_since(t0), k_input, {}, progress).result;
+  } else {
+    const GroupedInput joined_input(problem, patch_topo, patch, joined, incident, ae);
+    r = join_trial(problem, held_input, joined_input, k_input, ms_since(t0), progress);
   }
-  const GroupedInput joined_input(problem, patch_topo, patch, joined);
-  const double setup_ms = ms_since(t0);  // of both groupings, counted in the first solve
-  // The runs made for both solves; their work is counted once, here.
-  std::vector<ScheduledRun> runs;
-  const bool at_once = problem.params.seams == SeamMode::Fixed;
-  StageTimes first_times;
-  if (at_once) {
-    runs = first_runs({{held_input.in, held.group, held_input.held_vertices},
-                       {joined_input.in, joined.group, joined_input.held_vertices}},
-                      part_of(progress, 0, 90));
-    for (const ScheduledRun& run : runs) first_times += run.run.outcome.times;
-  }
-  const Progress held_progress = at_once ? part_of(progress, 90, 95) : part_of(progress, 0, 50);
-  GroupedSolve first = solve_in_groups(problem, held_input, setup_ms, k_input, runs, held_progress);
-  Result r = std::move(first.result);
-  // The groups no join changes are not solved again: their runs from the held solve are taken.
-  runs.insert(runs.end(), std::make_move_iterator(first.fresh.begin()),
-              std::make_move_iterator(first.fresh.end()));
-  Result j = solve_in_groups(problem, joined_input, 0, k_input, runs,
-                             at_once ? part_of(progress, 95, 100) : part_of(progress, 50, 100))
-                 .result;
-  JoinTrial trial;
-  trial.patches = static_cast<int>(
-      std::count_if(joined.joins.begin(), joined.joins.end(),
-                    [](const PatchJoin& p) { return p.reason == JoinReason::CurvatureOnSeams; }));
-  trial.joined = j.abd_reduction;
-  trial.held = r.abd_reduction;
-  trial.kept_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
-  if (trial.kept_joined) std::swap(r, j);
-  r.times += j.times;  // the whole mesh's stages count the work of both solves, once
-  r.times += first_times;
-  r.factorizations = r.times.factorizations;
-  r.join_trial = trial;
-  r.log.insert(r.log.begin(), join_trial_note(trial));
   r.time_ms = ms_since(t0);
   if (progress) progress(100, "done");
   return r;

@@ -101,20 +101,20 @@ const ScheduledRun* repeated_run(const std::vector<ScheduledRun>& earlier, Solve
   return nullptr;
 }
 
-// Runs work(k, idle) for every group k of `faces` (the faces of each) on up to `threads`
-// threads, the largest first, so that the last to finish is a small one; each run depends on
-// its own group only, so the order changes no result. idle: the threads no group holds, which
-// a race borrows (idle_threads.h).
-template <typename Work>
-void run_groups_at_once(const std::vector<size_t>& faces, size_t threads, const Work& work) {
-  std::vector<size_t> order(faces.size());
+// Runs run(k, idle) for every group k of `work` (the size of each: its faces, 0 for a group
+// that need not run) on up to `threads` threads, the largest first, so that the last to finish
+// is a small one; each run depends on its own group only, so the order changes no result.
+// idle: the threads no group holds, which a race borrows (idle_threads.h).
+template <typename Run>
+void run_groups_at_once(const std::vector<size_t>& work, size_t threads, const Run& run) {
+  std::vector<size_t> order(work.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
-                   [&](size_t a, size_t b) { return faces[a] > faces[b]; });
+                   [&](size_t a, size_t b) { return work[a] > work[b]; });
   IdleThreads idle(threads);
   parallel_for(order.size(), std::min(order.size(), threads), [&](size_t i) {
     idle.hold();
-    work(order[i], idle);
+    run(order[i], idle);
     idle.release();
   });
 }
