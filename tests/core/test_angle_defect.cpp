@@ -188,6 +188,26 @@ TEST(AngleDefect, AutoStopsTheRaceWhenTheLeaderLeavesLessThanDeltaAbd) {
   }
 }
 
+// A candidate that has removed nothing after kNothingRounds iterations, while the leader has
+// removed something, stops there (before the drop-the-worst round of kDropWorstShare maxIter).
+TEST(AngleDefect, AutoStopsACandidateThatRemovesNothing) {
+  Problem p = wrinkled_sheet(24, 0.08);  // the curve targets and both remove nothing there
+  p.params.tolerance = 1.0;
+  p.params.segment_first = SegmentFirst::Never;
+  const Result r = approximate::approximate(p);
+  const PatchReport& patch = r.patches[0];
+  ASSERT_EQ(patch.candidates.size(), 3u);
+  bool nothing = false;
+  for (const CandidateReport& c : patch.candidates) {
+    if (c.abd_reduction > 0) continue;
+    nothing = true;
+    EXPECT_TRUE(c.dropped) << term_name(c.term);
+    EXPECT_LE(c.iterations, kNothingRounds) << term_name(c.term);
+  }
+  EXPECT_TRUE(nothing);
+  EXPECT_LT(kNothingRounds, std::lround(kDropWorstShare * p.params.max_iter));
+}
+
 TEST(AngleDefect, DefectModeIsScaleAndRotationInvariant) {
   Problem p = wrinkled_sheet(16);
   p.params.developability = Developability::Defect;

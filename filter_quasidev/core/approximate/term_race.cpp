@@ -56,6 +56,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   };
   const int drop_worst_after =
       std::max(1, static_cast<int>(std::lround(kDropWorstShare * max_iter)));
+  const int drop_nothing_after = std::min(kNothingRounds, drop_worst_after);
   const int keep_leader_after =
       std::max(drop_worst_after + 1, static_cast<int>(std::lround(kKeepLeaderShare * max_iter)));
   bool worst_dropped = false;
@@ -70,9 +71,13 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     const size_t lead = leader(runs, dropped);
     const bool lead_runs = runs[lead].running();
     const auto removed = [&](size_t k) { return runs[k].initial_g_abd() - runs[k].best_g_abd(); };
-    if (lead_runs && round >= drop_worst_after && removed(lead) > 0)
+    const auto behind = [&](size_t k) {
+      return round >= drop_worst_after ? !(removed(k) >= kFarBehind * removed(lead))
+                                       : !(removed(k) > 0);
+    };
+    if (lead_runs && round >= drop_nothing_after && removed(lead) > 0)
       for (size_t k = 0; k < runs.size(); ++k)
-        if (!(removed(k) >= kFarBehind * removed(lead))) dropped[k] = 1;
+        if (behind(k)) dropped[k] = 1;
     if (lead_runs && round >= drop_worst_after && !worst_dropped) {
       worst_dropped = true;
       if (std::count(dropped.begin(), dropped.end(), 0) > 2) dropped[trailer(runs, dropped)] = 1;

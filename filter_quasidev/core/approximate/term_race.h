@@ -1,21 +1,22 @@
-// Developability::Auto decides by measuring (beyond the paper). Each candidate term (the
-// paper's curve targets, the angle-defect rows, both) runs from the same start under the same
-// tolerance, one iteration each in turn, by successive halving over a fixed share of the
-// iteration budget. While the leader (least G_ABD; ties: least mean displacement) still runs:
-// after kDropWorstShare of maxIter rounds the candidate with most G_ABD left stops, and from
-// then on so does any that has removed less than kFarBehind of what the leader removed
-// (nothing, e.g. the curve targets on draped garments); after kKeepLeaderShare all but the
-// leader stop, and the leader runs to its own stop. A leader that has stopped by its own rule
-// is final, and the others run on until one overtakes it or they stop: a term that starts
-// slowly is not dropped for being behind a lead that can grow no more. Once the leader has left
-// less than δ_ABD of the start's G_ABD (the share the plateau rule calls meaningful), no other
-// can remove a meaningful share more, and the others stop (on smooth bumps the curve targets
-// remove all but 1 % within a few iterations, while the angle-defect rows, whose factorisation
-// costs several times more, would run on). A candidate that stops by its own rule stays in the
-// comparison where it stopped. On the generated family of scripts/robustness_sweep.py this
-// keeps the term that running every candidate to its end would keep, on all but a few members,
-// at a fraction of the cost (docs/robustness.md has the figures); the round counts are not
-// fitted to any one mesh.
+// Developability::Auto decides by measuring (beyond the paper). Each candidate term (the paper's
+// curve targets, the angle-defect rows, both) runs from the same start under the same tolerance,
+// one iteration each in turn, by successive halving over a fixed share of the iteration budget.
+// While the leader (least G_ABD; ties: least mean displacement) still runs: after kNothingRounds
+// rounds any candidate that has removed nothing stops (the curve targets on draped garments: a
+// third round of theirs took the shared 4-panel tee from 99 to 109 ms, medians of 11 runs at the
+// default maxIter, same result); after kDropWorstShare of maxIter rounds the candidate with most
+// G_ABD left stops, and from then on so does any that has removed less than kFarBehind of what the
+// leader removed; after kKeepLeaderShare all but the leader stop, and the leader runs to its own
+// stop. A leader that has stopped by its own rule is final, and the others run on until one
+// overtakes it or they stop: a term that starts slowly is not dropped for being behind a lead that
+// can grow no more. Once the leader has left less than δ_ABD of the start's G_ABD (the share the
+// plateau rule calls meaningful), no other can remove a meaningful share more, and the others stop
+// (on smooth bumps the curve targets remove all but 1 % within a few iterations, while the
+// angle-defect rows, whose factorisation costs several times more, would run on). A candidate that
+// stops by its own rule stays in the comparison where it stopped. On the generated family of
+// scripts/robustness_sweep.py this keeps the term that running every candidate to its end would
+// keep, on all but a few members, at a fraction of the cost (docs/robustness.md has the figures);
+// the round counts are not fitted to any one mesh.
 #pragma once
 
 #include <functional>
@@ -27,6 +28,7 @@
 
 namespace qd::approximate {
 
+constexpr int kNothingRounds = 2;         // or after kDropWorstShare of maxIter, if sooner
 constexpr double kDropWorstShare = 0.1;   // at the default maxIter of 30: after 3 rounds
 constexpr double kKeepLeaderShare = 0.4;  // and after 12
 constexpr double kFarBehind = 0.25;
