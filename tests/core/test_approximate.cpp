@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "approximate/deformation_system.h"
+#include "approximate/deformer.h"
 #include "approximate/quasidev.h"
 #include "common/error.h"
 #include "test_meshes.h"
@@ -142,11 +143,14 @@ TEST(Approximate, IterationsReduceCurvatureAndOrientationEnergy) {
   const Result r = approximate::approximate(bumpy());
   const PatchReport& p = r.patches[0];
   ASSERT_GE(p.history.size(), 2u);
-  double g = p.before.g_abd;
+  // An iterate may rise a little above the best before it (deformer.h); the last kept is best.
+  double least = p.before.g_abd;
   for (const IterationReport& it : p.history) {
-    EXPECT_LE(it.figures.g_abd, g) << "iteration " << it.iteration;
-    g = it.figures.g_abd;
+    EXPECT_LE(it.figures.g_abd, (1 + kRiseAllowance) * least) << "iteration " << it.iteration;
+    least = std::min(least, it.figures.g_abd);
   }
+  EXPECT_EQ(p.history.back().figures.g_abd, least);
+  EXPECT_NEAR(p.after.g_abd, least, 1e-9 * least);
   EXPECT_GT(r.abd_reduction, 50.0);
   // D(P) of Def. 3 against the (fixed) targets the iterations aim at.
   Problem fixed = bumpy();
