@@ -100,7 +100,9 @@ std::vector<Param<S>> declare() {
       choice("target_mode", field(&S::engine, &P::targets), kTargetModes, "Target normals",
              "fixed: fit the Gauss-image curve once (the paper); reproject: project the current "
              "normals onto it every iteration; refit: refit the curve every iteration (slower, "
-             "strongest).")
+             "strongest); reproject-then-refit: reproject, and where that stalls (a plateau, or "
+             "no step), fit the curve again and refit from there on (a run never removes less "
+             "than with reproject; slower on garments).")
           .alias("--targets"),
       choice("seam_mode", field(&S::engine, &P::seams), kSeamModes, "Seams",
              "fixed: vertices shared by two patches do not move (the paper), except where a patch "

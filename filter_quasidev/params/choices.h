@@ -40,9 +40,11 @@ inline const Choices<StopRule> kStopRules = {{"plateau", StopRule::Plateau},
 inline const Choices<SegmentFirst> kSegmentFirst = {
     {"auto", SegmentFirst::Auto}, {"never", SegmentFirst::Never}, {"always", SegmentFirst::Always}};
 inline const Choices<SeamMode> kSeamModes = {{"fixed", SeamMode::Fixed}, {"free", SeamMode::Free}};
-inline const Choices<TargetMode> kTargetModes = {{"fixed", TargetMode::Fixed},
-                                                 {"reproject", TargetMode::Reproject},
-                                                 {"refit", TargetMode::Refit}};
+inline const Choices<TargetMode> kTargetModes = {
+    {"fixed", TargetMode::Fixed},
+    {"reproject", TargetMode::Reproject},
+    {"refit", TargetMode::Refit},
+    {"reproject-then-refit", TargetMode::ReprojectThenRefit}};
 inline const Choices<SolverKind> kSolverKinds = {{"auto", SolverKind::Auto},
                                                  {"cholmod", SolverKind::Cholmod},
                                                  {"eigen-llt", SolverKind::EigenLLT},

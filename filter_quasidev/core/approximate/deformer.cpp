@@ -87,7 +87,7 @@ int flipped_faces(const Triangles& F, const Positions& V0, const Positions& V) {
 }
 
 Deformation::Deformation(const GroupMesh& group, std::vector<Vec3> targets, Retarget retarget,
-                         SystemLayouts& layouts, const std::vector<char>& defect_rows,
+                         bool refits, SystemLayouts& layouts, const std::vector<char>& defect_rows,
                          const Params& params)
     : g_(group),
       params_(params),
@@ -95,7 +95,10 @@ Deformation::Deformation(const GroupMesh& group, std::vector<Vec3> targets, Reta
       retarget_(std::move(retarget)),
       faces_(all_indices(group.solve_faces)),
       vertices_(all_indices(group.solve_vertices)),
-      V_(group.V0) {
+      V_(group.V0),
+      refits_(refits),
+      mode_(params.targets == TargetMode::ReprojectThenRefit ? TargetMode::Reproject
+                                                             : params.targets) {
   {
     StageTimer timer(out_.times.setup);  // the layout's parts not yet computed
     system_ = std::make_unique<DeformationSystem>(g_, params_, layouts.get(defect_rows));
@@ -182,7 +185,7 @@ bool Deformation::step() {
   const bool retargets = it_ > 1 && params_.targets != TargetMode::Fixed;
   if (retargets) {
     StageTimer timer(out_.times.step1);
-    targets_ = retarget_(V_);
+    targets_ = retarget_(V_, mode_);
   }
   if (retargets || (it_ > 1 && system_->has_defect_rows())) set_rows();  // linearise again
   // The figures of the current positions: all but the OBD carry over from the last accepted
@@ -208,6 +211,7 @@ bool Deformation::step() {
                       : accept(step, scale_label(1), report, before))
       break;
     if (!can_back_off) {
+      if (refit_instead_of_stopping()) return true;  // the next iteration re-fits
       halt(PatchStop::NoStep);
       out_.stop_detail = report.note;
       return false;
@@ -243,13 +247,24 @@ void Deformation::check_stop(const IterationReport& report) {
     return;
   }
   const size_t n = best_track_.size();
-  if (n <= static_cast<size_t>(kPlateauIterations)) return;
+  // The window starts at the input, or where the targets were re-fitted.
+  if (n - 1 - plateau_from_ < static_cast<size_t>(kPlateauIterations)) return;
   const double removed =
       decrease_ratio(best_track_[n - 1 - kPlateauIterations], best_track_[n - 1]);
-  if (removed < params_.stop_abd) {
+  if (removed < params_.stop_abd && !refit_instead_of_stopping()) {
     halt(PatchStop::Plateau);
     out_.plateau_removed = removed;
   }
+}
+
+bool Deformation::refit_instead_of_stopping() {
+  if (!refits_ || params_.targets != TargetMode::ReprojectThenRefit ||
+      params_.stop_rule != StopRule::Plateau || mode_ != TargetMode::Reproject)
+    return false;
+  mode_ = TargetMode::Refit;
+  plateau_from_ = best_track_.size() - 1;
+  out_.refit_after = out_.iterations_run;
+  return true;
 }
 
 DeformOutcome Deformation::finish() {
@@ -260,10 +275,10 @@ DeformOutcome Deformation::finish() {
 }
 
 DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
-                     const Retarget& retarget, const std::vector<char>& defect_rows,
+                     const Retarget& retarget, bool refits, const std::vector<char>& defect_rows,
                      const Params& params, double ae, const std::function<void(double)>& progress) {
   SystemLayouts layouts(group, params, ae);
-  Deformation run(group, targets, retarget, layouts, defect_rows, params);
+  Deformation run(group, targets, retarget, refits, layouts, defect_rows, params);
   while (run.step())
     if (progress) progress(static_cast<double>(run.iterations()) / params.max_iter);
   return run.finish();

@@ -20,6 +20,16 @@
 // percent over the last kPlateauIterations iterations; Paper stops at the first iteration whose
 // ratio_ABD (Eq. 19) is below δ_ABD, or ratio_OBD (Eq. 20) below δ_OBD with fixed targets.
 // Both also stop at maxIter and when no step down to kMinStepScale is accepted.
+//
+// TargetMode::ReprojectThenRefit (beyond the paper; Plateau rule only): where a run with curve
+// targets would stop at a plateau or for want of a step, the Gauss-image curve is fitted again
+// to the current normals and the run goes on with re-fitted targets until a plateau of its own,
+// once. The curve fitted to the input's normals is one the surface may have moved off; its
+// targets stall where another curve's do not. On the generated family of
+// scripts/robustness_sweep.py this took the curve term on a plane with bumps of 2 AE from 36 %
+// to 100 % of G_ABD removed, and auto further on 16 members, less on none; it is not the
+// default because a term that stalls early is dropped from auto's race before its re-fit pays,
+// and it costs garments up to a fifth more (docs/robustness.md).
 #pragma once
 
 #include <functional>
@@ -43,7 +53,7 @@ constexpr double kWeightBackoff = 3.0;
 constexpr double kMinWeightScale = 1.0 / 9;
 
 // New target normal per group face for the current positions (re-projection or re-fit).
-using Retarget = std::function<std::vector<Vec3>(const Positions& current)>;
+using Retarget = std::function<std::vector<Vec3>(const Positions& current, TargetMode mode)>;
 
 // What a run gives: the best iterate, its history, and why it stopped.
 struct DeformOutcome {
@@ -53,6 +63,7 @@ struct DeformOutcome {
   PatchStop stop = PatchStop::MaxIter;
   std::string stop_detail;     // NoStep: the refused candidates; Unfitted: why
   double plateau_removed = 0;  // Plateau: percent of G_ABD the last iterations removed
+  int refit_after = -1;        // accepted iterations before the curve was re-fitted; -1: never
   StageTimes times;            // assembly, factorisation, solve, re-targeting, metrics
 };
 
@@ -62,9 +73,10 @@ class Deformation {
  public:
   // targets: initial target per group face (zero: no Eq. 13 developability rows for it);
   // retarget: used between iterations unless params.targets == TargetMode::Fixed;
+  // refits: whether the run may fit its curves again when it stalls (above; patch_fit.h);
   // layouts: the group's (for the same params), which the runs on it share; defect_rows: per
   // local vertex, 1 = an angle-defect row (angle_defect.h; empty = none).
-  Deformation(const GroupMesh& group, std::vector<Vec3> targets, Retarget retarget,
+  Deformation(const GroupMesh& group, std::vector<Vec3> targets, Retarget retarget, bool refits,
               SystemLayouts& layouts, const std::vector<char>& defect_rows, const Params& params);
   ~Deformation();
   Deformation(Deformation&&) noexcept;
@@ -85,6 +97,9 @@ class Deformation {
   bool accept_shortened(const Positions& step, IterationReport& report, const Figures& before);
   void set_rows();
   void check_stop(const IterationReport& report);
+  // Where the re-projected curve targets stall, goes on with re-fitted ones (above); false:
+  // the run stops.
+  bool refit_instead_of_stopping();
   // Ends the run (out_.stop says why; a run that never halts stopped at maxIter).
   void halt(PatchStop why) {
     out_.stop = why;
@@ -108,12 +123,15 @@ class Deformation {
   double weight_scale_ = 1;  // of the developability weights, after back-offs
   int it_ = 0;
   bool stopped_ = false;
+  bool refits_;              // may fit its curves again when it stalls (above)
+  TargetMode mode_;          // of the re-targeting now
+  size_t plateau_from_ = 0;  // best_track_ index where the plateau window may start
   DeformOutcome out_;
 };
 
 // The whole run at once.
 DeformOutcome deform(const GroupMesh& group, const std::vector<Vec3>& targets,
-                     const Retarget& retarget, const std::vector<char>& defect_rows,
+                     const Retarget& retarget, bool refits, const std::vector<char>& defect_rows,
                      const Params& params, double ae, const std::function<void(double)>& progress);
 
 // Limits the step from `current` to `proposed` by the group's δ_err (§5.2). Step mode:

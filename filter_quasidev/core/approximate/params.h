@@ -11,12 +11,11 @@ namespace qd::approximate {
 
 enum class SeamMode { Fixed, Free };       // seam vertices fixed (paper) or shared unknowns
 enum class ToleranceMode { Step, Total };  // δ_err caps each step (paper) or the total move
-enum class ClampMode {
-  Scale,
-  Vertex
-};                                                  // δ_err in Step mode: scale the whole step, or
-                                                    // clamp each vertex's step (paper §5.2)
-enum class TargetMode { Fixed, Reproject, Refit };  // targets once (paper), re-projected, re-fitted
+// δ_err in Step mode: scale the whole step, or clamp each vertex's step (paper §5.2).
+enum class ClampMode { Scale, Vertex };
+// Targets fitted once (the paper), re-projected, re-fitted, or re-projected until they stall and
+// re-fitted from there (deformer.h).
+enum class TargetMode { Fixed, Reproject, Refit, ReprojectThenRefit };
 // When Step 2 stops (deformer.h): when the best G_ABD fell by less than δ_ABD over the last
 // few iterations (beyond the paper), or at the first iteration below δ_ABD / δ_OBD (§5.4).
 enum class StopRule { Plateau, Paper };

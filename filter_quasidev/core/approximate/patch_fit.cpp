@@ -110,9 +110,8 @@ std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>&
   return t;
 }
 
-Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode,
-                       size_t threads) {
-  return [&g, &fits, mode, threads](const Positions& X) {
+Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, size_t threads) {
+  return [&g, &fits, threads](const Positions& X, TargetMode mode) {
     if (mode == TargetMode::Refit) {
       std::vector<PatchFit> refits = fit_patches(g, X, threads);
       for (size_t k = 0; k < refits.size(); ++k) refits[k].term = fits[k].term;
@@ -129,6 +128,12 @@ Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, Ta
     }
     return t;
   };
+}
+
+bool refits_when_stalled(const std::vector<PatchFit>& fits) {
+  return std::any_of(fits.begin(), fits.end(), [](const PatchFit& p) {
+    return (p.term == Term::Curve || p.term == Term::Both) && p.fitted() && !p.planar();
+  });
 }
 
 std::vector<char> group_defect_rows(const GroupMesh& g, const std::vector<PatchFit>& fits) {

@@ -57,8 +57,11 @@ std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>&
 
 // Re-projection (nearest point of the fixed c_3D) or re-fit (Step 1 again, each patch keeping
 // its term) between iterations, on up to `threads` threads. Keeps references to g and fits.
-Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, TargetMode mode,
-                       size_t threads);
+Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, size_t threads);
+
+// Whether a run on these fits that stalls may fit its curves again (deformer.h): some patch
+// takes the curve rows of a fitted Gauss-image model that is not already a plane it lies in.
+bool refits_when_stalled(const std::vector<PatchFit>& fits);
 
 // Per local vertex, 1 = an angle-defect row: the free interior vertices that touch a face of
 // a patch with defect rows (empty when there is none).

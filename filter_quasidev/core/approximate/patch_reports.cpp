@@ -52,6 +52,7 @@ PassStop pass_stop(const PatchFit& p, const DeformOutcome& o, SolvePass pass,
   s.stop_abd = params.stop_abd;
   s.iterations_run = o.iterations_run;
   s.kept = static_cast<int>(o.history.size());
+  s.refit_after = o.refit_after;
   s.detail = o.stop_detail;
   return s;
 }

@@ -116,6 +116,9 @@ std::string pass_stop_text(const PassStop& s) {
     case PatchStop::Unfitted:
       return "left unchanged: " + s.detail;
   }
+  if (s.refit_after >= 0)
+    t += "; the curve was fitted again after iteration " + std::to_string(s.refit_after) +
+         ", where its re-projected targets had stalled";
   if (s.kept < s.iterations_run)
     t += "; iteration " + std::to_string(s.kept) + " of " + std::to_string(s.iterations_run) +
          " had the least curvature and is kept";

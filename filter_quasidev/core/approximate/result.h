@@ -46,6 +46,7 @@ struct PassStop {
   double stop_abd = 0;         // Plateau: δ_ABD, percent
   int iterations_run = 0;      // accepted iterations, including those after the kept one
   int kept = 0;                // the kept (best) iteration
+  int refit_after = -1;        // iterations before the curve was re-fitted (deformer.h); -1: never
   std::string detail;          // NoStep: the refused candidates; Unfitted: why Step 1 failed
 };
 
