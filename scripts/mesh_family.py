@@ -51,6 +51,12 @@ class Member:
         return (f"{self.base}_a{self.amplitude:g}_w{self.wavelength:g}_j{self.jitter:g}"
                 f"_r{self.resolution}_s{self.seed}")
 
+    @classmethod
+    def from_name(cls, name: str) -> "Member":
+        """The member whose name is `name` (the inverse of .name)."""
+        base, a, w, j, r, s = name.split("_")
+        return cls(base, float(a[1:]), float(w[1:]), float(j[1:]), int(r[1:]), int(s[1:]))
+
     @property
     def smooth(self) -> bool:
         """Smooth bumps and no jitter: what a developable approximation must remove almost all of."""

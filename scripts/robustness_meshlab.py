@@ -28,12 +28,6 @@ import tradeoff  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def member_of(row: dict) -> mesh_family.Member:
-    """The generator's parameters, from the member's name (mesh_family.Member.name)."""
-    base, a, w, j, r, s = row["member"].split("_")
-    return mesh_family.Member(base, float(a[1:]), float(w[1:]), float(j[1:]), int(r[1:]), int(s[1:]))
-
-
 def figures(fig: dict) -> str:
     if "error" in fig:
         return "error: " + fig["error"]
@@ -55,7 +49,7 @@ def main() -> int:
     results = []
     with tempfile.TemporaryDirectory() as tmp:
         for row in missed:
-            member = member_of(row)
+            member = mesh_family.Member.from_name(row["member"])
             path = os.path.join(tmp, member.name + ".ply")
             mesh_family.write_ply(path, *mesh_family.make(member))
             before = tradeoff.input_figures(path)
