@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import concurrent.futures
+import dataclasses
 import itertools
 import json
 import os
@@ -71,8 +72,8 @@ def run_member(quasidev: str, terms: list[str], extra: list[str], member: mesh_f
         mesh = os.path.join(tmp, "in.ply")
         V, F = mesh_family.make(member)
         mesh_family.write_ply(mesh, V, F, member.name)
-        row = {"member": member.name, "base": member.base, "amplitude": member.amplitude,
-               "smooth": member.smooth, "faces": int(len(F))}
+        row = {"member": member.name, **dataclasses.asdict(member), "smooth": member.smooth,
+               "faces": int(len(F))}
         for term in terms:
             row[term] = run(quasidev, mesh, term, extra, tmp, V, F)
     return row

@@ -99,10 +99,10 @@ std::vector<Param<S>> declare() {
            "resist moving; the stiffness fades with the distance (in AE) from fixed vertices."),
       choice("target_mode", field(&S::engine, &P::targets), kTargetModes, "Target normals",
              "fixed: fit the Gauss-image curve once (the paper); reproject: project the current "
-             "normals onto it every iteration; refit: refit the curve every iteration (slower, "
-             "strongest); reproject-then-refit: reproject, and where that stalls (a plateau, or "
-             "no step), fit the curve again and refit from there on (a run never removes less "
-             "than with reproject; slower on garments).")
+             "normals onto it every iteration; refit: refit the curve every iteration (slower); "
+             "reproject-then-refit (default): reproject, and where that stalls (a plateau, or no "
+             "step), fit the curve again and refit from there on, once (a run never removes less "
+             "than with reproject; where it stalls it runs at least 3 iterations more).")
           .alias("--targets"),
       choice("seam_mode", field(&S::engine, &P::seams), kSeamModes, "Seams",
              "fixed: vertices shared by two patches do not move (the paper), except where a patch "

@@ -102,7 +102,7 @@ def approximate(
     developability: Literal['curve', 'defect', 'both', 'auto'] = 'auto',
     defect_weight: float = 0.03,
     anchor: float = 3.0,
-    target_mode: Literal['fixed', 'reproject', 'refit', 'reproject-then-refit'] = 'reproject',
+    target_mode: Literal['fixed', 'reproject', 'refit', 'reproject-then-refit'] = 'reproject-then-refit',
     seam_mode: Literal['fixed', 'free'] = 'fixed',
     segment_first: Literal['auto', 'never', 'always'] = 'auto',
     keep_boundary: bool = True,

@@ -56,7 +56,8 @@ def test_help_lists_the_subcommands_and_the_defaults():
     assert "Usage: quasidev approximate [OPTIONS] INPUT OUTPUT" in sub.stdout
     for option, default in (("--tolerance-ae,--tolerance X", "1"), ("--max-iter N", "30"),
                             ("--weight X", "30"), ("--developability NAME", "auto"),
-                            ("--seam-mode,--seams NAME", "fixed"), ("--target-mode,--targets NAME", "reproject"),
+                            ("--seam-mode,--seams NAME", "fixed"),
+                            ("--target-mode,--targets NAME", "reproject-then-refit"),
                             ("--output-quality,--quality NAME", "curvature"), ("--threads N", "0"),
                             ("--defect-weight X", "0.03")):
         entry = sub.stdout[sub.stdout.index(option):]

@@ -161,7 +161,8 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
     Problem alone = p;
     alone.params.developability = mode;
     const Result single = approximate::approximate(alone);
-    if (patch.developability == name) {
+    // The kept run is that term's own, unless the race fitted its curve again (term_race.h).
+    if (patch.developability == name && !patch.stops[0].refit_behind) {
       EXPECT_EQ(r.V, single.V) << term_name(name);
     }
     EXPECT_GE(r.abd_reduction, single.abd_reduction - 2.0)

@@ -68,3 +68,26 @@ def test_a_slow_starter_is_not_dropped_behind_a_lead_that_has_stopped():
     rows = rs.sweep(LARGE_BUMPS, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
     gaps = {row["member"]: round(gap(row), 1) for row in rows}
     assert max(gaps.values()) <= 2.0, gaps
+
+
+def test_a_term_that_takes_hold_late_is_not_stopped_at_the_keep_leader_round():
+    """The cylinder with bumps of 2 AE, 0.16 wide: both's re-fitted targets take hold after round
+    12, where the race keeps only the leader (defect), and both ends 8 points ahead. The race
+    lets a term run on whose pace over its last iterations would take it below the leader by
+    the last iteration (term_race.h), so auto keeps both."""
+    member = mesh_family.Member("cylinder", 2, 0.16, 0, 1, 1)
+    row = rs.sweep([member], TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)[0]
+    assert gap(row) <= 2.0, row
+    assert row["auto"]["chosen"] == "both", row["auto"]
+    assert row["auto"]["iterations"] > 0.4 * 30, row["auto"]
+
+
+def test_the_race_fits_the_curve_again_rather_than_drop_it():
+    """The plane with bumps of 4 AE, 0.16 wide: the curve term's first targets raise G_ABD, and
+    the race would drop it at round 3, far behind the angle-defect rows (71 % in the end). Fitted
+    again instead (term_race.h), the curve term removes nearly all; the stop reason says so."""
+    member = mesh_family.Member("plane", 4, 0.16, 0, 1, 1)
+    row = rs.sweep([member], ("defect", "auto"), os.path.join(BUILD, "bin", "quasidev"), jobs=1)[0]
+    assert row["auto"]["chosen"] == "curve", row["auto"]
+    assert "where its re-projected targets had fallen far behind another term's" in row["auto"]["stop"]
+    assert row["auto"]["reduction"] >= 90.0 and row["defect"]["reduction"] < 80.0, row

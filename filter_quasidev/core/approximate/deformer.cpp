@@ -211,7 +211,7 @@ bool Deformation::step() {
                       : accept(step, scale_label(1), report, before))
       break;
     if (!can_back_off) {
-      if (refit_instead_of_stopping()) return true;  // the next iteration re-fits
+      if (refit_targets()) return true;  // the next iteration re-fits
       halt(PatchStop::NoStep);
       out_.stop_detail = report.note;
       return false;
@@ -251,19 +251,18 @@ void Deformation::check_stop(const IterationReport& report) {
   if (n - 1 - plateau_from_ < static_cast<size_t>(kPlateauIterations)) return;
   const double removed =
       decrease_ratio(best_track_[n - 1 - kPlateauIterations], best_track_[n - 1]);
-  if (removed < params_.stop_abd && !refit_instead_of_stopping()) {
-    halt(PatchStop::Plateau);
-    out_.plateau_removed = removed;
-  }
+  if (removed >= params_.stop_abd) return;
+  if (refit_targets()) return;  // the next iteration re-fits
+  halt(PatchStop::Plateau);
+  out_.plateau_removed = removed;
 }
 
-bool Deformation::refit_instead_of_stopping() {
-  if (!refits_ || params_.targets != TargetMode::ReprojectThenRefit ||
-      params_.stop_rule != StopRule::Plateau || mode_ != TargetMode::Reproject)
-    return false;
+bool Deformation::refit_targets(bool behind) {
+  if (!refits_ || mode_ != TargetMode::Reproject || !running()) return false;
   mode_ = TargetMode::Refit;
   plateau_from_ = best_track_.size() - 1;
   out_.refit_after = out_.iterations_run;
+  out_.refit_behind = behind;
   return true;
 }
 

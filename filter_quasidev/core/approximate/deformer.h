@@ -21,15 +21,15 @@
 // ratio_ABD (Eq. 19) is below δ_ABD, or ratio_OBD (Eq. 20) below δ_OBD with fixed targets.
 // Both also stop at maxIter and when no step down to kMinStepScale is accepted.
 //
-// TargetMode::ReprojectThenRefit (beyond the paper; Plateau rule only): where a run with curve
-// targets would stop at a plateau or for want of a step, the Gauss-image curve is fitted again
-// to the current normals and the run goes on with re-fitted targets until a plateau of its own,
-// once. The curve fitted to the input's normals is one the surface may have moved off; its
-// targets stall where another curve's do not. On the generated family of
+// TargetMode::ReprojectThenRefit (the default; beyond the paper; Plateau rule only): where a run
+// with curve targets would stop at a plateau or for want of a step, the Gauss-image curve is
+// fitted again to the current normals and the run goes on with re-fitted targets until a plateau
+// of its own, once. The curve fitted to the input's normals is one the surface may have moved
+// off; its targets stall where another curve's do not. On the generated family of
 // scripts/robustness_sweep.py this took the curve term on a plane with bumps of 2 AE from 36 %
-// to 100 % of G_ABD removed, and auto further on 16 members, less on none; it is not the
-// default because a term that stalls early is dropped from auto's race before its re-fit pays,
-// and it costs garments up to a fifth more (docs/robustness.md).
+// to 100 % of G_ABD removed, and auto (with term_race.h's rules) further on 26 members, less on
+// none. A run that gains nothing from the re-fit costs kPlateauIterations iterations more
+// (docs/robustness.md has what the garments pay).
 #pragma once
 
 #include <functional>
@@ -64,6 +64,7 @@ struct DeformOutcome {
   std::string stop_detail;     // NoStep: the refused candidates; Unfitted: why
   double plateau_removed = 0;  // Plateau: percent of G_ABD the last iterations removed
   int refit_after = -1;        // accepted iterations before the curve was re-fitted; -1: never
+  bool refit_behind = false;   // re-fitted by auto's race (term_race.h), not at a stall
   StageTimes times;            // assembly, factorisation, solve, re-targeting, metrics
 };
 
@@ -73,7 +74,7 @@ class Deformation {
  public:
   // targets: initial target per group face (zero: no Eq. 13 developability rows for it);
   // retarget: used between iterations unless params.targets == TargetMode::Fixed;
-  // refits: whether the run may fit its curves again when it stalls (above; patch_fit.h);
+  // refits: whether the run fits its curves again when it stalls (above; refits_when_stalled);
   // layouts: the group's (for the same params), which the runs on it share; defect_rows: per
   // local vertex, 1 = an angle-defect row (angle_defect.h; empty = none).
   Deformation(const GroupMesh& group, std::vector<Vec3> targets, Retarget retarget, bool refits,
@@ -88,6 +89,12 @@ class Deformation {
   double initial_g_abd() const { return initial_g_; }
   double best_g_abd() const { return best_.g_abd; }
   double best_mean_displacement() const { return best_.mean_disp; }
+  // The best G_ABD after each accepted iteration ([0]: the input's).
+  const std::vector<double>& best_track() const { return best_track_; }
+  // From the next iteration on, fits the curve again and goes on with re-fitted targets to a
+  // plateau of their own (above; what a stalled run does), once; false: it cannot (not asked
+  // for, already done). behind: asked by auto's race, where these targets fell far behind.
+  bool refit_targets(bool behind = false);
   // The result (call once, after the last step).
   DeformOutcome finish();
 
@@ -97,9 +104,6 @@ class Deformation {
   bool accept_shortened(const Positions& step, IterationReport& report, const Figures& before);
   void set_rows();
   void check_stop(const IterationReport& report);
-  // Where the re-projected curve targets stall, goes on with re-fitted ones (above); false:
-  // the run stops.
-  bool refit_instead_of_stopping();
   // Ends the run (out_.stop says why; a run that never halts stopped at maxIter).
   void halt(PatchStop why) {
     out_.stop = why;
@@ -123,7 +127,7 @@ class Deformation {
   double weight_scale_ = 1;  // of the developability weights, after back-offs
   int it_ = 0;
   bool stopped_ = false;
-  bool refits_;              // may fit its curves again when it stalls (above)
+  bool refits_;              // fits its curves again when it stalls (above)
   TargetMode mode_;          // of the re-targeting now
   size_t plateau_from_ = 0;  // best_track_ index where the plateau window may start
   DeformOutcome out_;

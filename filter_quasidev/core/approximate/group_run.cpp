@@ -64,7 +64,8 @@ void race(GroupRun& run, const std::vector<Term>& candidates, const Params& para
   const auto start = [&](Term t) {
     const std::vector<PatchFit>& fits = fits_of.at(t);
     return Deformation(g, group_targets(g, fits), make_retarget(g, fits, threads),
-                       refits_when_stalled(fits), layouts, group_defect_rows(g, fits), params);
+                       refits_when_stalled(fits, params), layouts, group_defect_rows(g, fits),
+                       params);
   };
   RaceOutcome raced =
       race_terms(candidates, start, params.max_iter, params.stop_abd / 100, idle, progress);
@@ -113,9 +114,9 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
   } else if (candidates.size() > 1) {
     race(run, candidates, params, in.ae, threads, idle, progress);
   } else {
-    run.outcome =
-        deform(g, run.targets, make_retarget(g, run.fits, threads), refits_when_stalled(run.fits),
-               group_defect_rows(g, run.fits), params, in.ae, progress);
+    run.outcome = deform(g, run.targets, make_retarget(g, run.fits, threads),
+                         refits_when_stalled(run.fits, params), group_defect_rows(g, run.fits),
+                         params, in.ae, progress);
   }
   run.outcome.times.setup += setup_ms;
   run.outcome.times.step1 += step1_ms;

@@ -41,7 +41,7 @@ struct Params {
   SeamMode seams = SeamMode::Fixed;
   SegmentFirst segment_first = SegmentFirst::Auto;  // meshes without patch ids
   bool keep_boundary = true;                        // open mesh boundary vertices are constrained
-  TargetMode targets = TargetMode::Reproject;
+  TargetMode targets = TargetMode::ReprojectThenRefit;
   StopRule stop_rule = StopRule::Plateau;
   double stop_abd = 1.0;                 // δ_ABD, percent (Eq. 19)
   double stop_obd = 1.0;                 // δ_OBD, percent (Eq. 20)

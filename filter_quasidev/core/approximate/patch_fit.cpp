@@ -130,7 +130,9 @@ Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, si
   };
 }
 
-bool refits_when_stalled(const std::vector<PatchFit>& fits) {
+bool refits_when_stalled(const std::vector<PatchFit>& fits, const Params& params) {
+  if (params.targets != TargetMode::ReprojectThenRefit || params.stop_rule != StopRule::Plateau)
+    return false;
   return std::any_of(fits.begin(), fits.end(), [](const PatchFit& p) {
     return (p.term == Term::Curve || p.term == Term::Both) && p.fitted() && !p.planar();
   });

@@ -59,9 +59,10 @@ std::vector<Vec3> group_targets(const GroupMesh& g, const std::vector<PatchFit>&
 // its term) between iterations, on up to `threads` threads. Keeps references to g and fits.
 Retarget make_retarget(const GroupMesh& g, const std::vector<PatchFit>& fits, size_t threads);
 
-// Whether a run on these fits that stalls may fit its curves again (deformer.h): some patch
-// takes the curve rows of a fitted Gauss-image model that is not already a plane it lies in.
-bool refits_when_stalled(const std::vector<PatchFit>& fits);
+// Whether a run on these fits that stalls fits its curves again (deformer.h): asked for
+// (TargetMode::ReprojectThenRefit under the Plateau rule), and some patch takes the curve rows
+// of a fitted Gauss-image model that is not already a plane it lies in.
+bool refits_when_stalled(const std::vector<PatchFit>& fits, const Params& params);
 
 // Per local vertex, 1 = an angle-defect row: the free interior vertices that touch a face of
 // a patch with defect rows (empty when there is none).

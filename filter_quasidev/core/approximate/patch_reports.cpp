@@ -53,6 +53,7 @@ PassStop pass_stop(const PatchFit& p, const DeformOutcome& o, SolvePass pass,
   s.iterations_run = o.iterations_run;
   s.kept = static_cast<int>(o.history.size());
   s.refit_after = o.refit_after;
+  s.refit_behind = o.refit_behind;
   s.detail = o.stop_detail;
   return s;
 }

@@ -118,7 +118,8 @@ std::string pass_stop_text(const PassStop& s) {
   }
   if (s.refit_after >= 0)
     t += "; the curve was fitted again after iteration " + std::to_string(s.refit_after) +
-         ", where its re-projected targets had stalled";
+         (s.refit_behind ? ", where its re-projected targets had fallen far behind another term's"
+                         : ", where its re-projected targets had stalled");
   if (s.kept < s.iterations_run)
     t += "; iteration " + std::to_string(s.kept) + " of " + std::to_string(s.iterations_run) +
          " had the least curvature and is kept";

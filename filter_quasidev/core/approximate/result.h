@@ -47,6 +47,7 @@ struct PassStop {
   int iterations_run = 0;      // accepted iterations, including those after the kept one
   int kept = 0;                // the kept (best) iteration
   int refit_after = -1;        // iterations before the curve was re-fitted (deformer.h); -1: never
+  bool refit_behind = false;   // re-fitted by auto's race, where it fell behind (term_race.h)
   std::string detail;          // NoStep: the refused candidates; Unfitted: why Step 1 failed
 };
 

@@ -38,6 +38,16 @@ int most_iterations(const std::vector<Deformation>& runs, const std::vector<char
   return most;
 }
 
+// The best G_ABD at max_iter if it falls on at its pace over the last kPlateauIterations
+// iterations.
+double projected_g_abd(const Deformation& run, int max_iter) {
+  const std::vector<double>& best = run.best_track();
+  const auto n = static_cast<int>(best.size()) - 1;  // accepted iterations
+  if (n < kPlateauIterations) return run.best_g_abd();
+  const double pace = (best[n - kPlateauIterations] - best[n]) / kPlateauIterations;
+  return best[n] - pace * std::max(0, max_iter - n);
+}
+
 }  // namespace
 
 RaceOutcome race_terms(const std::vector<Term>& terms,
@@ -60,7 +70,23 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   const int keep_leader_after =
       std::max(drop_worst_after + 1, static_cast<int>(std::lround(kKeepLeaderShare * max_iter)));
   bool worst_dropped = false;
-  for (int round = 1; any_active(); ++round) {
+  // The curve term, when the rules would drop it after as many rounds as the plateau rule gives
+  // its re-projected targets, is re-fitted instead (once, where the budget leaves its new targets
+  // kPlateauIterations rounds), and the rules spare it for those rounds.
+  std::vector<int> spared_until(runs.size(), 0);
+  int round = 1;
+  const auto refits = [&](size_t k) {
+    return terms[k] == Term::Curve && round >= kPlateauIterations &&
+           round + kPlateauIterations < max_iter && runs[k].refit_targets(true);
+  };
+  const auto drop = [&](size_t k) {
+    if (dropped[k] || round < spared_until[k]) return;
+    if (refits(k))
+      spared_until[k] = round + 1 + kPlateauIterations;
+    else
+      dropped[k] = 1;
+  };
+  for (; any_active(); ++round) {
     std::vector<size_t> stepping;  // each candidate's step reads only its own run's state
     for (size_t k = 0; k < runs.size(); ++k)
       if (active(k)) stepping.push_back(k);
@@ -77,15 +103,17 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     };
     if (lead_runs && round >= drop_nothing_after && removed(lead) > 0)
       for (size_t k = 0; k < runs.size(); ++k)
-        if (behind(k)) dropped[k] = 1;
+        if (k != lead && behind(k)) drop(k);
     if (lead_runs && round >= drop_worst_after && !worst_dropped) {
       worst_dropped = true;
-      if (std::count(dropped.begin(), dropped.end(), 0) > 2) dropped[trailer(runs, dropped)] = 1;
+      if (std::count(dropped.begin(), dropped.end(), 0) > 2) drop(trailer(runs, dropped));
     }
-    if ((lead_runs && round >= keep_leader_after) ||
-        runs[lead].best_g_abd() <= meaningful * runs[lead].initial_g_abd()) {
-      const size_t keep = leader(runs, dropped);
-      for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != keep;
+    if (runs[lead].best_g_abd() <= meaningful * runs[lead].initial_g_abd()) {
+      for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != lead;
+    } else if (lead_runs && round >= keep_leader_after) {
+      const double lead_ends = projected_g_abd(runs[lead], max_iter);
+      for (size_t k = 0; k < runs.size(); ++k)
+        if (k != lead && !(active(k) && projected_g_abd(runs[k], max_iter) < lead_ends)) drop(k);
     }
   }
   RaceOutcome out;
