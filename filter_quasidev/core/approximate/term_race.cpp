@@ -101,7 +101,9 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
       return round >= drop_worst_after ? !(removed(k) >= kFarBehind * removed(lead))
                                        : !(removed(k) > 0);
     };
-    if (lead_runs && round >= drop_nothing_after && removed(lead) > 0)
+    const double lead_needed =  // before drop_worst_after, a lead of δ_ABD
+        round >= drop_worst_after ? 0 : meaningful * runs[lead].initial_g_abd();
+    if (lead_runs && round >= drop_nothing_after && removed(lead) > lead_needed)
       for (size_t k = 0; k < runs.size(); ++k)
         if (k != lead && behind(k)) drop(k);
     if (lead_runs && round >= drop_worst_after && !worst_dropped) {
