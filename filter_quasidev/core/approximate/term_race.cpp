@@ -97,20 +97,19 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     const size_t lead = leader(runs, dropped);
     const bool lead_runs = runs[lead].running();
     const auto removed = [&](size_t k) { return runs[k].initial_g_abd() - runs[k].best_g_abd(); };
+    const double meaningful_g = meaningful * runs[lead].initial_g_abd();
+    const bool trial = round < drop_worst_after;  // only what removed nothing is behind yet
     const auto behind = [&](size_t k) {
-      return round >= drop_worst_after ? !(removed(k) >= kFarBehind * removed(lead))
-                                       : !(removed(k) > 0);
+      return trial ? !(removed(k) > 0) : !(removed(k) >= kFarBehind * removed(lead));
     };
-    const double lead_needed =  // before drop_worst_after, a lead of δ_ABD
-        round >= drop_worst_after ? 0 : meaningful * runs[lead].initial_g_abd();
-    if (lead_runs && round >= drop_nothing_after && removed(lead) > lead_needed)
+    if (lead_runs && round >= drop_nothing_after && removed(lead) > (trial ? meaningful_g : 0))
       for (size_t k = 0; k < runs.size(); ++k)
         if (k != lead && behind(k)) drop(k);
     if (lead_runs && round >= drop_worst_after && !worst_dropped) {
       worst_dropped = true;
       if (std::count(dropped.begin(), dropped.end(), 0) > 2) drop(trailer(runs, dropped));
     }
-    if (runs[lead].best_g_abd() <= meaningful * runs[lead].initial_g_abd()) {
+    if (runs[lead].best_g_abd() <= meaningful_g) {
       for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != lead;
     } else if (lead_runs && round >= keep_leader_after) {
       const double lead_ends = projected_g_abd(runs[lead], max_iter);

@@ -11,12 +11,12 @@
 // does any that has removed less than kFarBehind of what the leader removed; after kKeepLeaderShare
 // the others stop, but for any whose best G_ABD, falling on at its pace over the last
 // kPlateauIterations iterations, would end below the leader's likewise projected (a term whose
-// re-fitted targets took hold late: on the cylinder with bumps of 2 AE, 0.16 wide, both reaches 87
-// % against the leader's 79 %, yet trailed it at round 12), and the leader runs to its own stop.
+// re-fitted targets took hold late: on the cylinder with bumps of 2 AE, 0.16 wide, both reaches
+// 87 % against the leader's 79 %, yet trailed it at round 12), and the leader runs to its own stop.
 // Where these rules would drop the curve term after kPlateauIterations rounds or more, its curve is
-// fitted again instead (TargetMode:: ReprojectThenRefit, once, where maxIter leaves its new targets
-// kPlateauIterations rounds), and the rules spare it for those rounds (on the plane with bumps of 4
-// AE, 0.16 wide, its first targets raise G_ABD, and re-fitted they remove 99.6 % against the
+// fitted again instead (TargetMode::ReprojectThenRefit, once, where maxIter leaves its new targets
+// kPlateauIterations rounds), and the rules spare it for those rounds (on the plane with bumps of
+// 4 AE, 0.16 wide, its first targets raise G_ABD, and re-fitted they remove 99.6 % against the
 // leader's 71 %; re-fitting both too cost the shirt's re-cuts up to half more time for the same
 // figures). A leader that has stopped by its own rule is final, and the others run on until one
 // overtakes it or they stop: a term that starts slowly is not dropped for being behind a lead that
