@@ -1,9 +1,11 @@
 // fill_reducing_rank on small known graphs: it is a permutation, it adds no fill to a path, and
-// on grids it fills no more than the natural order.
+// on grids it fills no more than the natural order; LeastFill fills no more than AMD and gives
+// the same order on several threads at once as alone.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <thread>
 
 #include "common/vertex_order.h"
 #include "solver_matrices.h"
@@ -64,6 +66,29 @@ TEST(FillReducingRank, TwoDisconnectedGridsAreOrderedTogether) {
   const std::vector<int> rank = fill_reducing_rank(n, edges);
   EXPECT_TRUE(is_permutation(rank));
   EXPECT_LE(factor_entries(n, edges, rank), factor_entries(n, edges, natural(n)));
+}
+
+TEST(FillReducingRank, LeastFillFillsNoMoreThanMinimumDegree) {
+  const int rows = 90, cols = 80, n = rows * cols;
+  const test::Edges edges = test::grid_edges(rows, cols);
+  const std::vector<int> least = fill_reducing_rank(n, edges, FillOrder::LeastFill);
+  EXPECT_TRUE(is_permutation(least));
+  EXPECT_LE(factor_entries(n, edges, least),
+            factor_entries(n, edges, fill_reducing_rank(n, edges, FillOrder::MinimumDegree)));
+}
+
+TEST(FillReducingRank, LeastFillOrdersTheSameOnConcurrentThreads) {
+  const test::Edges a = test::grid_edges(70, 60), b = test::grid_edges(50, 90);
+  const std::vector<int> alone_a = fill_reducing_rank(70 * 60, a, FillOrder::LeastFill);
+  const std::vector<int> alone_b = fill_reducing_rank(50 * 90, b, FillOrder::LeastFill);
+  for (int round = 0; round < 10; ++round) {
+    std::vector<int> at_once_a, at_once_b;
+    std::thread other([&] { at_once_b = fill_reducing_rank(50 * 90, b, FillOrder::LeastFill); });
+    at_once_a = fill_reducing_rank(70 * 60, a, FillOrder::LeastFill);
+    other.join();
+    EXPECT_EQ(at_once_a, alone_a);
+    EXPECT_EQ(at_once_b, alone_b);
+  }
 }
 
 TEST(FillReducingRank, IsolatedNodesAndTinyGraphs) {

@@ -3,6 +3,7 @@
 #include "approximate/common_names.h"
 #include "common/conjugate_gradients.h"
 #include "common/stage_timer.h"
+#include "common/vertex_order.h"
 
 namespace qd::approximate {
 namespace {
@@ -41,16 +42,35 @@ Eigen::VectorXd SolveStrategy::solve(const Eigen::SparseMatrix<double>& M, const
   return iterative_ ? solve_iteratively(M, b, start, normals) : solve_directly(M, b);
 }
 
+const Eigen::SparseMatrix<double>& SolveStrategy::in_factor_order(
+    const Eigen::SparseMatrix<double>& M) {
+  if (pattern_.blocks() < kLeastFillFromBlocks) return M;
+  if (factor_order_.size() == 0) {
+    const std::vector<int> rank =
+        common::fill_reducing_rank(pattern_, common::FillOrder::LeastFill);
+    factor_order_.resize(M.rows());
+    for (int k = 0; k < pattern_.blocks(); ++k)
+      for (int d = 0; d < 3; ++d)
+        factor_order_.indices()[3 * k + d] = 3 * rank[static_cast<size_t>(k)] + d;
+  }
+  Eigen::SparseMatrix<double> lower(M.rows(), M.cols());
+  lower.selfadjointView<Eigen::Lower>() =
+      M.selfadjointView<Eigen::Lower>().twistedBy(factor_order_);
+  reordered_ = Eigen::SparseMatrix<double>(lower.transpose()).transpose();  // sorted columns
+  return reordered_;
+}
+
 Eigen::VectorXd SolveStrategy::solve_directly(const Eigen::SparseMatrix<double>& M,
                                               const Eigen::VectorXd& b) {
   if (!factor_current_) {  // new targets: a numeric factorisation (analysis reused)
     StageTimer timer(times_.factorization);
-    positive_.factorize(M);
+    positive_.factorize(in_factor_order(M));
     factor_current_ = true;
   }
   StageTimer timer(times_.solve);
   times_.solve_bytes += pass_bytes(positive_.entries());
-  return positive_.solve(b);
+  if (factor_order_.size() == 0) return positive_.solve(b);
+  return factor_order_.transpose() * positive_.solve(factor_order_ * b);
 }
 
 Eigen::VectorXd SolveStrategy::solve_quasi_definite(const Eigen::SparseMatrix<double>& K,

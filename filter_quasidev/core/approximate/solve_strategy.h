@@ -11,7 +11,8 @@
 // targets move. Each solve stops when the correction's error in M's energy norm is below
 // kCgTolerance of the correction, and starts from the solve before's solution when that is
 // closer. A solve that CG gives up on (conjugate_gradients.h) factorises M instead, and so do
-// the group's later solves. Measurements behind the constants: docs/solvers.md.
+// the group's later solves; M, in the AMD order CG wants, is then permuted to the
+// kLeastFillFromBlocks order for its factor. Measurements behind the constants: docs/solvers.md.
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -30,6 +31,12 @@
 namespace qd::approximate {
 
 constexpr long kIterativeFromUnknowns = 10000;  // SolveMethod::Auto: CG from here on
+// From this many vertex blocks a factorised system is ordered by common::FillOrder::LeastFill
+// (AMD or METIS's nested dissection, whichever fills less): on a draped garment's panels of
+// 20k–270k vertices nested dissection halves a factorisation's flops, while METIS's ordering
+// (1.8 s for 500k vertices) costs more than it saves where CG factorises only the frame
+// split's two scalar matrices; on panels of 1.4k–4.3k vertices it saved nothing.
+constexpr int kLeastFillFromBlocks = 10000;
 constexpr double kCgTolerance = 1e-2;
 constexpr int kCgIterations = 40;
 
@@ -63,6 +70,8 @@ class SolveStrategy {
 
  private:
   Eigen::VectorXd solve_directly(const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& b);
+  // M permuted to a LeastFill order of its blocks, from kLeastFillFromBlocks blocks (else M).
+  const Eigen::SparseMatrix<double>& in_factor_order(const Eigen::SparseMatrix<double>& M);
   Eigen::VectorXd solve_iteratively(const Eigen::SparseMatrix<double>& M, const Eigen::VectorXd& b,
                                     const std::function<Eigen::VectorXd()>& start,
                                     const std::function<std::vector<Vec3>()>& normals);
@@ -80,6 +89,8 @@ class SolveStrategy {
   int scalar_factorizations_ = 0;                        // the preconditioner's
   double scalar_flops_ = 0;
   Eigen::VectorXd last_solution_;  // of the last iterative solve: the next one's warm start
+  Eigen::PermutationMatrix<Eigen::Dynamic> factor_order_;  // M's unknown i → the factor's
+  Eigen::SparseMatrix<double> reordered_;                  // M in that order
 };
 
 }  // namespace qd::approximate

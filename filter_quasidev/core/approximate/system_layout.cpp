@@ -3,11 +3,13 @@
 #include <algorithm>
 
 #include "approximate/anchor_weights.h"
+#include "approximate/solve_strategy.h"
 #include "common/vertex_order.h"
 
 namespace qd::approximate {
 
-MatrixLayout::MatrixLayout(const GroupMesh& g, const Params& params, double ae)
+MatrixLayout::MatrixLayout(const GroupMesh& g, const Params& params, double ae,
+                           common::FillOrder order)
     : incident(g.F, g.V0.rows()) {
   const size_t n = g.fixed.size();
   std::vector<int> free_index(n, -1);
@@ -21,7 +23,7 @@ MatrixLayout::MatrixLayout(const GroupMesh& g, const Params& params, double ae)
       const int b = free_index[static_cast<size_t>(g.F(f, pq[1]))];
       if (a >= 0 && b >= 0) edges.emplace_back(a, b);
     }
-  const std::vector<int> rank = fill_reducing_rank(free_count, edges);
+  const std::vector<int> rank = fill_reducing_rank(free_count, edges, order);
   unknown.assign(n, -1);
   block_vertex.resize(static_cast<size_t>(free_count));
   for (size_t v = 0; v < n; ++v)
@@ -132,18 +134,33 @@ AugmentedLayout::AugmentedLayout(const MatrixLayout& m, DefectStars stars)
 SystemLayouts::SystemLayouts(const GroupMesh& g, const Params& params, double ae)
     : g_(g), params_(params), ae_(ae) {}
 
-SystemLayout SystemLayouts::get(const std::vector<char>& defect_rows) {
-  if (!matrix_) matrix_ = std::make_shared<const MatrixLayout>(g_, params_, ae_);
-  const auto known = augmented_.find(defect_rows);
-  if (known != augmented_.end()) return {matrix_, known->second};
-  std::shared_ptr<const AugmentedLayout> augmented;
-  if (!defect_rows.empty()) {
-    DefectStars stars = defect_stars(g_, matrix_->incident, defect_rows, params_.defect_weight);
-    if (!stars.empty())
-      augmented = std::make_shared<const AugmentedLayout>(*matrix_, std::move(stars));
+std::shared_ptr<const MatrixLayout> SystemLayouts::matrix(bool defect_rows) {
+  const auto free = std::count(g_.fixed.begin(), g_.fixed.end(), false);
+  if (defect_rows && free >= kLeastFillFromBlocks) {
+    if (!defect_matrix_)
+      defect_matrix_ =
+          std::make_shared<const MatrixLayout>(g_, params_, ae_, common::FillOrder::LeastFill);
+    return defect_matrix_;
   }
-  augmented_.emplace(defect_rows, augmented);
-  return {matrix_, augmented};
+  if (!matrix_)
+    matrix_ =
+        std::make_shared<const MatrixLayout>(g_, params_, ae_, common::FillOrder::MinimumDegree);
+  return matrix_;
+}
+
+SystemLayout SystemLayouts::get(const std::vector<char>& defect_rows) {
+  const auto known = layouts_.find(defect_rows);
+  if (known != layouts_.end()) return known->second;
+  SystemLayout layout;
+  if (!defect_rows.empty()) {
+    const std::shared_ptr<const MatrixLayout> with_rows = matrix(true);
+    DefectStars stars = defect_stars(g_, with_rows->incident, defect_rows, params_.defect_weight);
+    if (!stars.empty())
+      layout = {with_rows, std::make_shared<const AugmentedLayout>(*with_rows, std::move(stars))};
+  }
+  if (!layout.matrix) layout.matrix = matrix(false);
+  layouts_.emplace(defect_rows, layout);
+  return layout;
 }
 
 }  // namespace qd::approximate

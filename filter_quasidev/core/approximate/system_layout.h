@@ -18,6 +18,7 @@
 #include "approximate/params.h"
 #include "common/block_pattern.h"
 #include "common/quasi_definite_factor.h"
+#include "common/vertex_order.h"
 
 namespace qd::approximate {
 
@@ -27,8 +28,8 @@ constexpr int kCornerPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
 // M's unknowns and pattern: unknown 3k+d is coordinate d of block k; blocks follow a
 // fill-reducing order of the free vertices' graph (vertex_order.h).
 struct MatrixLayout {
-  // ae: the average edge length of Eq. (15).
-  MatrixLayout(const GroupMesh& g, const Params& params, double ae);
+  // ae: the average edge length of Eq. (15); order: how the free vertices are ordered.
+  MatrixLayout(const GroupMesh& g, const Params& params, double ae, common::FillOrder order);
 
   VertexFaces incident;           // faces of each local vertex, ascending
   std::vector<int> unknown;       // unknown block of each local vertex (-1 when fixed)
@@ -64,7 +65,10 @@ struct SystemLayout {
   std::shared_ptr<const AugmentedLayout> augmented;
 };
 
-// The layouts of one group, each computed at its first request.
+// The layouts of one group, each computed at its first request. From kLeastFillFromBlocks free
+// vertices (solve_strategy.h) the systems with defect rows, always factorised, take an M
+// ordered by common::FillOrder::LeastFill, and those without keep AMD's, which their conjugate
+// gradients want.
 class SystemLayouts {
  public:
   // params: α (Eq. 15), w_d and the threads; ae: the average edge length.
@@ -73,11 +77,15 @@ class SystemLayouts {
   SystemLayout get(const std::vector<char>& defect_rows);
 
  private:
+  // M's layout for systems with or without defect rows.
+  std::shared_ptr<const MatrixLayout> matrix(bool defect_rows);
+
   const GroupMesh& g_;
   Params params_;
   double ae_;
-  std::shared_ptr<const MatrixLayout> matrix_;
-  std::map<std::vector<char>, std::shared_ptr<const AugmentedLayout>> augmented_;
+  std::shared_ptr<const MatrixLayout> matrix_;         // of the systems without defect rows
+  std::shared_ptr<const MatrixLayout> defect_matrix_;  // of those with (the same below the bound)
+  std::map<std::vector<char>, SystemLayout> layouts_;
 };
 
 }  // namespace qd::approximate

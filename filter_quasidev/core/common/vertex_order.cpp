@@ -1,5 +1,6 @@
 #include "common/vertex_order.h"
 
+#include <mutex>
 #include <numeric>
 
 #include "common/block_pattern.h"
@@ -14,18 +15,26 @@ namespace qd::common {
 namespace {
 
 #ifdef QD_WITH_CHOLMOD
-// perm[k]: the node eliminated k-th, as CHOLMOD chooses it. graph: lower triangle with diagonal.
-void elimination_order(const Eigen::SparseMatrix<double>& graph, std::vector<int>& perm) {
+// perm[k]: the node eliminated k-th, as CHOLMOD chooses it (of several orders, the one whose
+// factor has fewest entries). graph: lower triangle with diagonal.
+void elimination_order(const Eigen::SparseMatrix<double>& graph, FillOrder order,
+                       std::vector<int>& perm) {
   cholmod_common common;
   cholmod_start(&common);
-  common.nmethods = 1;
+  common.nmethods = order == FillOrder::LeastFill ? 2 : 1;
   common.method[0].ordering = CHOLMOD_AMD;
+  common.method[1].ordering = CHOLMOD_METIS;
   common.supernodal = CHOLMOD_SIMPLICIAL;
   cholmod_sparse view = Eigen::viewAsCholmod(graph.selfadjointView<Eigen::Lower>());
+  // METIS draws from one random generator per process: two orders computed at once on two
+  // threads would each depend on the other's draws, and the result on the thread count.
+  static std::mutex metis;
+  std::unique_lock<std::mutex> one_at_a_time(metis, std::defer_lock);
+  if (order == FillOrder::LeastFill) one_at_a_time.lock();
   cholmod_factor* symbolic = cholmod_analyze(&view, &common);
   if (symbolic) {
-    const int* order = static_cast<const int*>(symbolic->Perm);
-    perm.assign(order, order + graph.rows());
+    const int* chosen = static_cast<const int*>(symbolic->Perm);
+    perm.assign(chosen, chosen + graph.rows());
   }
   const bool ok = symbolic != nullptr;
   cholmod_free_factor(&symbolic, &common);
@@ -33,8 +42,10 @@ void elimination_order(const Eigen::SparseMatrix<double>& graph, std::vector<int
   if (!ok) throw Error("out of memory while ordering the deformation system");
 }
 #else
-// perm[k]: the node eliminated k-th by Eigen's minimum degree (AMD). graph: lower triangle.
-void elimination_order(const Eigen::SparseMatrix<double>& graph, std::vector<int>& perm) {
+// perm[k]: the node eliminated k-th by Eigen's minimum degree (AMD), whatever the order asked.
+// graph: lower triangle.
+void elimination_order(const Eigen::SparseMatrix<double>& graph, FillOrder,
+                       std::vector<int>& perm) {
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
   Eigen::AMDOrdering<int>()(graph.selfadjointView<Eigen::Lower>(), order);
   perm.assign(order.indices().data(), order.indices().data() + graph.rows());
@@ -43,14 +54,20 @@ void elimination_order(const Eigen::SparseMatrix<double>& graph, std::vector<int
 
 }  // namespace
 
-std::vector<int> fill_reducing_rank(int nodes, const std::vector<std::pair<int, int>>& edges) {
+std::vector<int> fill_reducing_rank(const BlockPattern& graph, FillOrder order) {
+  const int nodes = graph.blocks();
   std::vector<int> rank(static_cast<size_t>(nodes));
   std::iota(rank.begin(), rank.end(), 0);
   if (nodes < 2) return rank;
   std::vector<int> perm;
-  elimination_order(scalar_lower(lower_pattern(nodes, edges)), perm);
+  elimination_order(scalar_lower(graph), order, perm);
   for (int k = 0; k < nodes; ++k) rank[static_cast<size_t>(perm[static_cast<size_t>(k)])] = k;
   return rank;
+}
+
+std::vector<int> fill_reducing_rank(int nodes, const std::vector<std::pair<int, int>>& edges,
+                                    FillOrder order) {
+  return fill_reducing_rank(lower_pattern(nodes, edges), order);
 }
 
 }  // namespace qd::common
