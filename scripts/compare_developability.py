@@ -35,8 +35,17 @@ DEFAULT_PLUGIN = os.path.join(ROOT, "build", "bin", "pymeshlab", "libfilter_quas
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from mesh_folders import SAMPLES, mesh_folders  # noqa: E402
 
-DEFAULT_MESHES = [p for folder in mesh_folders() for p in sorted(glob.glob(os.path.join(folder, "*.ply")))] + sorted(
-    glob.glob(os.path.join(SAMPLES, "*.ply")))
+def _first_of_each_name(paths: list[str]) -> list[str]:
+    """Each file name once, where it is first found (tests/data/ repeats some shared meshes)."""
+    first: dict[str, str] = {}
+    for path in paths:
+        first.setdefault(os.path.basename(path), path)
+    return list(first.values())
+
+
+DEFAULT_MESHES = _first_of_each_name(
+    [p for folder in mesh_folders() for p in sorted(glob.glob(os.path.join(folder, "*.ply")))] +
+    sorted(glob.glob(os.path.join(SAMPLES, "*.ply"))))
 
 OURS = "apply_coord_quasi_developable_approximation"
 THEIRS = "apply_coord_developability_of_mesh"

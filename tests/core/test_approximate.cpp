@@ -461,5 +461,32 @@ TEST(Approximate, StalledReprojectedTargetsAreFittedAgainWhenAsked) {
   }
 }
 
+// Where the angle-defect rows stall against the soft anchors (Eq. 15), the anchors move to the
+// current positions and the run goes on to a plateau of its own, once (deformer.h): on this
+// cylinder it then removes more. The paper's stop rule stops where the rows stall.
+TEST(Approximate, StalledAngleDefectRowsGoOnWithTheAnchorsMoved) {
+  Problem p = bumpy();
+  p.params.developability = Developability::Defect;
+  const Result r = approximate::approximate(p);
+  const PatchReport& patch = r.patches[0];
+  ASSERT_EQ(patch.stops.size(), 1u);
+  const PassStop& stop = patch.stops[0];
+  const int moved_after = stop.anchors_moved_after;
+  ASSERT_GE(moved_after, 1);
+  ASSERT_GT(patch.history.size(), static_cast<size_t>(moved_after));  // the best came after it
+  double stalled = patch.before.g_abd;
+  for (size_t i = 0; i < static_cast<size_t>(moved_after); ++i)
+    stalled = std::min(stalled, patch.history[i].figures.g_abd);
+  EXPECT_LT(patch.after.g_abd, stalled);
+  EXPECT_NE(
+      stop_reason_text(patch.stops)
+          .find("the anchors moved to the positions of iteration " + std::to_string(moved_after)),
+      std::string::npos);
+  EXPECT_EQ(flipped_faces(p.F, p.V, r.V), 0);
+  Problem q = p;
+  q.params.stop_rule = StopRule::Paper;
+  EXPECT_EQ(approximate::approximate(q).patches[0].stops[0].anchors_moved_after, -1);
+}
+
 }  // namespace
 }  // namespace qd

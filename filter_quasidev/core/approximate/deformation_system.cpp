@@ -39,7 +39,8 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
       defects_(layout_.augmented ? layout_.augmented->defects : DefectStars{}),
       M_(m_.M),
       threads_(params.threads),
-      K_(layout_.augmented ? layout_.augmented->K : Eigen::SparseMatrix<double>()) {
+      K_(layout_.augmented ? layout_.augmented->K : Eigen::SparseMatrix<double>()),
+      anchored_at_(group.V0) {
   strategy_.emplace(params, 3L * m_.blocks, layout_.augmented != nullptr, m_.pattern, times_,
                     layout_.augmented ? layout_.augmented->analysis : nullptr);
 }
@@ -155,7 +156,7 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
   for (size_t v = 0; v < m_.unknown.size(); ++v)
     if (m_.unknown[v] >= 0)
       b.segment<3>(3 * m_.unknown[v]) += m_.anchor2[static_cast<size_t>(m_.unknown[v])] *
-                                         g_.V0.row(static_cast<Eigen::Index>(v)).transpose();
+                                         anchored_at_.row(static_cast<Eigen::Index>(v)).transpose();
   return b;
 }
 

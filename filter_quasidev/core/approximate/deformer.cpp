@@ -253,6 +253,7 @@ void Deformation::check_stop(const IterationReport& report) {
       decrease_ratio(best_track_[n - 1 - kPlateauIterations], best_track_[n - 1]);
   if (removed >= params_.stop_abd) return;
   if (refit_targets()) return;  // the next iteration re-fits
+  if (move_anchors()) return;
   halt(PatchStop::Plateau);
   out_.plateau_removed = removed;
 }
@@ -263,6 +264,14 @@ bool Deformation::refit_targets(bool behind) {
   plateau_from_ = best_track_.size() - 1;
   out_.refit_after = out_.iterations_run;
   out_.refit_behind = behind;
+  return true;
+}
+
+bool Deformation::move_anchors() {
+  if (!system_->has_defect_rows() || out_.anchors_moved_after >= 0 || !running()) return false;
+  system_->move_anchors(V_);
+  plateau_from_ = best_track_.size() - 1;
+  out_.anchors_moved_after = out_.iterations_run;
   return true;
 }
 

@@ -54,6 +54,7 @@ PassStop pass_stop(const PatchFit& p, const DeformOutcome& o, SolvePass pass,
   s.kept = static_cast<int>(o.history.size());
   s.refit_after = o.refit_after;
   s.refit_behind = o.refit_behind;
+  s.anchors_moved_after = o.anchors_moved_after;
   s.detail = o.stop_detail;
   return s;
 }

@@ -120,6 +120,9 @@ std::string pass_stop_text(const PassStop& s) {
     t += "; the curve was fitted again after iteration " + std::to_string(s.refit_after) +
          (s.refit_behind ? ", where its re-projected targets had fallen far behind another term's"
                          : ", where its re-projected targets had stalled");
+  if (s.anchors_moved_after >= 0)
+    t += "; the anchors moved to the positions of iteration " +
+         std::to_string(s.anchors_moved_after) + ", where the angle-defect rows had stalled";
   if (s.kept < s.iterations_run)
     t += "; iteration " + std::to_string(s.kept) + " of " + std::to_string(s.iterations_run) +
          " had the least curvature and is kept";

@@ -48,7 +48,8 @@ struct PassStop {
   int kept = 0;                // the kept (best) iteration
   int refit_after = -1;        // iterations before the curve was re-fitted (deformer.h); -1: never
   bool refit_behind = false;   // re-fitted by auto's race, where it fell behind (term_race.h)
-  std::string detail;          // NoStep: the refused candidates; Unfitted: why Step 1 failed
+  int anchors_moved_after = -1;  // iterations before the anchors moved (deformer.h); -1: never
+  std::string detail;            // NoStep: the refused candidates; Unfitted: why Step 1 failed
 };
 
 struct IterationReport {
