@@ -39,8 +39,7 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
       defects_(layout_.augmented ? layout_.augmented->defects : DefectStars{}),
       M_(m_.M),
       threads_(params.threads),
-      K_(layout_.augmented ? layout_.augmented->K : Eigen::SparseMatrix<double>()),
-      anchored_at_(group.V0) {
+      K_(layout_.augmented ? layout_.augmented->K : Eigen::SparseMatrix<double>()) {
   strategy_.emplace(params, 3L * m_.blocks, layout_.augmented != nullptr, m_.pattern, times_,
                     layout_.augmented ? layout_.augmented->analysis : nullptr);
 }
@@ -153,10 +152,11 @@ Eigen::VectorXd DeformationSystem::rhs(const Positions& ref) const {
       b.segment<3>(3 * bp) += row;
     }
   }
+  const Positions& anchors = moved_anchors_.size() > 0 ? moved_anchors_ : g_.V0;
   for (size_t v = 0; v < m_.unknown.size(); ++v)
     if (m_.unknown[v] >= 0)
       b.segment<3>(3 * m_.unknown[v]) += m_.anchor2[static_cast<size_t>(m_.unknown[v])] *
-                                         anchored_at_.row(static_cast<Eigen::Index>(v)).transpose();
+                                         anchors.row(static_cast<Eigen::Index>(v)).transpose();
   return b;
 }
 

@@ -61,7 +61,7 @@ class DeformationSystem {
 
   bool has_defect_rows() const { return !defects_.empty(); }
   // The soft anchors (Eq. 15) hold the free vertices to X from now on instead of the input.
-  void move_anchors(const Positions& X) { anchored_at_ = X; }
+  void move_anchors(const Positions& X) { moved_anchors_ = X; }
   // The angle-defect rows linearised at X (angles: vertex_angles of X), for set_rows.
   DefectLinearisation linearise_defects_at(const Positions& X, const VertexAngles& angles) const {
     return linearise_defects(defects_, g_, m_.incident, X, angles);
@@ -100,7 +100,7 @@ class DeformationSystem {
   Eigen::SparseMatrix<double> K_;  // lower triangle of [[M, Cᵀ], [C, −I]] (defect rows C)
   StageTimes times_;
   std::optional<SolveStrategy> strategy_;  // chosen once the system's size is known
-  Positions anchored_at_;                  // where the anchors hold (the group's V0 at first)
+  Positions moved_anchors_;                // where the anchors hold once moved (empty: V0)
 };
 
 }  // namespace qd::approximate
