@@ -64,8 +64,8 @@ UNCHANGED = 1e-7  # Hausdorff / diag at or below this: the output is the input (
 SWEEPS = {
     "defect_weight": ([0.01, 0.03, 0.1, 0.3, 1, 3, 10, 100], [0.3, 10]),
     "weight": ([3, 10, 30, 100, 300], [10, 100]),
-    "tolerance": ([0.03, 0.1, 0.3, 1, 3], [0.3, 3]),
-    "maxfunevals": ([100, 300, 1000, 2000, 4000], [100, 1000]),
+    "tolerance": ([0.03, 0.1, 0.2, 0.3, 0.5, 1, 3], [0.3, 3]),
+    "maxfunevals": ([100, 300, 1000, 2000, 4000, 8000, 16000], [100, 1000]),
 }
 # series name -> (filter, marker, colour); a series' default point is drawn as a star.
 STYLE = {
