@@ -261,8 +261,7 @@ void Deformation::check_stop(const IterationReport& report) {
 bool Deformation::refit_targets(bool behind) {
   if (!refits_ || mode_ != TargetMode::Reproject || !running()) return false;
   mode_ = TargetMode::Refit;
-  plateau_from_ = best_track_.size() - 1;
-  out_.refit_after = out_.iterations_run;
+  out_.refit_after = start_phase();
   out_.refit_behind = behind;
   return true;
 }
@@ -270,8 +269,7 @@ bool Deformation::refit_targets(bool behind) {
 bool Deformation::move_anchors() {
   if (!system_->has_defect_rows() || out_.anchors_moved_after >= 0 || !running()) return false;
   system_->move_anchors(V_);
-  plateau_from_ = best_track_.size() - 1;
-  out_.anchors_moved_after = out_.iterations_run;
+  out_.anchors_moved_after = start_phase();
   return true;
 }
 

@@ -34,10 +34,8 @@
 // Moved anchors (beyond the paper; Plateau rule only): where a run with angle-defect rows would
 // stop at a plateau, the soft anchors of Eq. (15) move from the input to the current positions
 // and the run goes on until a plateau of its own, once. The rows stall where their pull balances
-// the anchors' pull back to the input, not where the surface is developable: on the generated
-// family the defect term on a tangent developable with bumps of 0.5 AE went from 86 % to 90 %,
-// and auto reached 90 % on 51 smooth members instead of 48, less on none; the garments' defaults
-// remove 1.4–2.1 points more at a Hausdorff distance up to 13 % larger (docs/robustness.md).
+// the anchors' pull back to the input, not where the surface is developable (what it gains on
+// the generated family and costs the garments: docs/robustness.md).
 #pragma once
 
 #include <functional>
@@ -116,6 +114,12 @@ class Deformation {
   // At a plateau of a run with angle-defect rows: the anchors hold to the current positions
   // from now on, and the run goes on to a plateau of its own (once); false: it cannot.
   bool move_anchors();
+  // A new phase (re-fitted targets, moved anchors) starts here: the plateau window restarts.
+  // Returns the accepted iterations before it.
+  int start_phase() {
+    plateau_from_ = best_track_.size() - 1;
+    return out_.iterations_run;
+  }
   // Ends the run (out_.stop says why; a run that never halts stopped at maxIter).
   void halt(PatchStop why) {
     out_.stop = why;
