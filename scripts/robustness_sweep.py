@@ -3,9 +3,10 @@
 
 For every member (base x bump amplitude x wavelength x jitter x resolution x seed) it runs each
 developability term (--terms, default curve, defect, both, auto) from the same input with the same
-options, reads the JSON report, and tabulates the G_ABD reduction, the iterations, the stop
-reason and the largest move (AE). A member passes when auto is within --margin percentage points
-of the best single term and, for smooth members (no jitter), removes at least --smooth-floor %.
+options, reads the JSON report, and tabulates the G_ABD reduction, the iterations and the
+largest move (AE); its JSON also keeps each run's stop reason, engine time and factorisations.
+A member passes when auto is within --margin percentage points of the best single term and, for
+smooth members (no jitter), removes at least --smooth-floor %.
 
 Writes OUT/robustness_sweep.md and OUT/robustness_sweep.json; exit status 1 when a member fails.
 
@@ -64,6 +65,7 @@ def run(quasidev: str, mesh: str, term: str, extra: list[str], tmp: str, V, F) -
     return {"reduction": r["abd_reduction"], "iterations": p["iterations"],
             "stop": p["stop_reason"], "max_move_ae": r["total_after"]["max_disp"] / r["average_edge"],
             "chosen": p["developability"], "time_ms": r["time_ms"],
+            "factorizations": r["factorizations"],
             "flipped": flipped_faces(V, positions(out), F)}
 
 

@@ -92,6 +92,7 @@ class Deformation {
   // One iteration; false once the run has stopped.
   bool step();
   bool running() const { return !stopped_; }
+  PatchStop stop_reason() const { return out_.stop; }  // once stopped
   int iterations() const { return out_.iterations_run; }
   double initial_g_abd() const { return initial_g_; }
   double best_g_abd() const { return best_.g_abd; }

@@ -86,7 +86,28 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     else
       dropped[k] = 1;
   };
-  for (; any_active(); ++round) {
+  // A leader that stopped by its own rule before maxIter with more than δ_ABD of the start's
+  // G_ABD left: the candidates the trial dropped while they still ran, and whose pace would take
+  // them below it by maxIter, rejoin (once), and run on while it still would.
+  const auto overtakes = [&](size_t k, size_t lead) {
+    return projected_g_abd(runs[k], max_iter) < runs[lead].best_g_abd();
+  };
+  std::vector<char> rejoined(runs.size(), 0);
+  bool rejoin_tried = false;
+  const auto rejoin = [&] {
+    if (rejoin_tried) return false;
+    rejoin_tried = true;
+    const size_t lead = leader(runs, dropped);
+    if (runs[lead].stop_reason() == PatchStop::MaxIter ||
+        runs[lead].best_g_abd() <= meaningful * runs[lead].initial_g_abd())
+      return false;
+    bool any = false;
+    for (size_t k = 0; k < runs.size(); ++k)
+      if (dropped[k] && runs[k].running() && overtakes(k, lead))
+        dropped[k] = 0, rejoined[k] = 1, any = true;
+    return any;
+  };
+  for (; any_active() || rejoin(); ++round) {
     std::vector<size_t> stepping;  // each candidate's step reads only its own run's state
     for (size_t k = 0; k < runs.size(); ++k)
       if (active(k)) stepping.push_back(k);
@@ -115,6 +136,9 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
       const double lead_ends = projected_g_abd(runs[lead], max_iter);
       for (size_t k = 0; k < runs.size(); ++k)
         if (k != lead && !(active(k) && projected_g_abd(runs[k], max_iter) < lead_ends)) drop(k);
+    } else if (!lead_runs) {
+      for (size_t k = 0; k < runs.size(); ++k)
+        if (rejoined[k] && active(k) && !overtakes(k, lead)) dropped[k] = 1;
     }
   }
   RaceOutcome out;
