@@ -39,11 +39,11 @@ int most_iterations(const std::vector<Deformation>& runs, const std::vector<char
 }
 
 // The best G_ABD at max_iter if it falls on at its pace over the last kPlateauIterations
-// iterations.
+// iterations; a run that has stopped ends where it is.
 double projected_g_abd(const Deformation& run, int max_iter) {
   const std::vector<double>& best = run.best_track();
   const auto n = static_cast<int>(best.size()) - 1;  // accepted iterations
-  if (n < kPlateauIterations) return run.best_g_abd();
+  if (n < kPlateauIterations || !run.running()) return run.best_g_abd();
   const double pace = (best[n - kPlateauIterations] - best[n]) / kPlateauIterations;
   return best[n] - pace * std::max(0, max_iter - n);
 }
@@ -86,17 +86,16 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     else
       dropped[k] = 1;
   };
+  // Candidate k, falling on at its pace, would end below the leader, likewise projected.
+  const auto overtakes = [&](size_t k, size_t lead) {
+    return projected_g_abd(runs[k], max_iter) < projected_g_abd(runs[lead], max_iter);
+  };
   // A leader that stopped by its own rule before maxIter with more than δ_ABD of the start's
   // G_ABD left: the candidates the trial dropped while they still ran, and whose pace would take
   // them below it by maxIter, rejoin (once), and run on while it still would.
-  const auto overtakes = [&](size_t k, size_t lead) {
-    return projected_g_abd(runs[k], max_iter) < runs[lead].best_g_abd();
-  };
   std::vector<char> rejoined(runs.size(), 0);
-  bool rejoin_tried = false;
-  const auto rejoin = [&] {
-    if (rejoin_tried) return false;
-    rejoin_tried = true;
+  const auto rejoin = [&] {  // once: a rejoin that found none ends the race
+    if (std::find(rejoined.begin(), rejoined.end(), 1) != rejoined.end()) return false;
     const size_t lead = leader(runs, dropped);
     if (runs[lead].stop_reason() == PatchStop::MaxIter ||
         runs[lead].best_g_abd() <= meaningful * runs[lead].initial_g_abd())
@@ -133,9 +132,8 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     if (runs[lead].best_g_abd() <= meaningful_g) {
       for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != lead;
     } else if (lead_runs && round >= keep_leader_after) {
-      const double lead_ends = projected_g_abd(runs[lead], max_iter);
       for (size_t k = 0; k < runs.size(); ++k)
-        if (k != lead && !(active(k) && projected_g_abd(runs[k], max_iter) < lead_ends)) drop(k);
+        if (k != lead && !(active(k) && overtakes(k, lead))) drop(k);
     } else if (!lead_runs) {
       for (size_t k = 0; k < runs.size(); ++k)
         if (rejoined[k] && active(k) && !overtakes(k, lead)) dropped[k] = 1;
