@@ -8,6 +8,7 @@ import json
 import math
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -474,6 +475,22 @@ def test_bad_constraint_file(tmp_path):
     r = run(mesh, out, "--constraints-file", cfile)
     assert_clean_failure(r, out, status=1)
     assert "line 2" in r.stderr
+
+
+def test_the_log_total_gives_the_reports_work(tmp_path):
+    """A mesh without patch ids is segmented first and solved in several passes: the log's total
+    line counts the factorisations and the time of all of them, as the report does."""
+    out, report = tmp_path / "out.ply", tmp_path / "r.json"
+    r = run(DATA / "classic_spot_lowres_crane.ply", out, "--report", report)
+    assert r.returncode == 0, r.stderr
+    rep = json.loads(report.read_text())
+    assert rep["segmented_first"]
+    total = [line for line in r.stdout.splitlines() if line.startswith("total: ")]
+    assert len(total) == 1, r.stdout
+    m = re.search(r" (\d+) factorisation\(s\), (\d+) ms$", total[0])
+    assert m, total[0]
+    assert int(m.group(1)) == rep["factorizations"] > 0
+    assert abs(int(m.group(2)) - rep["time_ms"]) <= 0.5
 
 
 def test_engine_refusal_is_one_line(tmp_path):

@@ -31,10 +31,13 @@ double ms_since(Clock::time_point t0) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
 }
 
-// A solve's result, and its groups' fresh runs for another grouping of the same mesh.
+// A solve's result, its groups' fresh runs for another grouping of the same mesh, and what its
+// log says beyond the result: the rounds solved again, and the share of G_ABD held still.
 struct GroupedSolve {
   Result result;
   std::vector<ScheduledRun> fresh;
+  std::vector<std::vector<int>> reruns;
+  double held_share = 0;
 };
 
 // What a solve of the patches in one grouping into solve groups runs from: the topology of the
@@ -102,9 +105,10 @@ GroupedSolve solve_in_groups(const Problem& problem, const GroupedInput& grouped
   }
   for (auto& [id, rep] : reports.patches) r.patches.push_back(std::move(rep));
   r.time_ms = setup_ms + ms_since(t0);
-  r.log = approximate_log(r, schedule.reruns, params,
-                          held_curvature_share(r.k_before, in.interior, grouped.roles.constrained));
-  return {std::move(r), fresh_runs(std::move(schedule))};
+  const double held_share =
+      held_curvature_share(r.k_before, in.interior, grouped.roles.constrained);
+  std::vector<std::vector<int>> reruns = schedule.reruns;
+  return {std::move(r), fresh_runs(std::move(schedule)), std::move(reruns), held_share};
 }
 
 // Joined seams are kept when they remove at least this much more of G_ABD (percentage points,
@@ -120,11 +124,12 @@ Progress part_of(const Progress& progress, int from, int to) {
 }
 
 // Solves the mesh with the seams of `held` held and with those of `joined` joined, and keeps the
-// one that removes more G_ABD (the log gives both figures). Under fixed seams the groups of both
-// groupings run at once (first_runs), then each solve takes their runs. setup_ms: of both
+// one that removes more G_ABD (r.join_trial gives both figures). Under fixed seams the groups of
+// both groupings run at once (first_runs), then each solve takes their runs. setup_ms: of both
 // groupings, counted in the first solve.
-Result join_trial(const Problem& problem, const GroupedInput& held, const GroupedInput& joined,
-                  const std::vector<double>& k_input, double setup_ms, const Progress& progress) {
+GroupedSolve join_trial(const Problem& problem, const GroupedInput& held,
+                        const GroupedInput& joined, const std::vector<double>& k_input,
+                        double setup_ms, const Progress& progress) {
   // The runs made for both solves; their work is counted once, here.
   std::vector<ScheduledRun> runs;
   const bool at_once = problem.params.seams == SeamMode::Fixed;
@@ -137,13 +142,15 @@ Result join_trial(const Problem& problem, const GroupedInput& held, const Groupe
   }
   const Progress held_progress = at_once ? part_of(progress, 90, 95) : part_of(progress, 0, 50);
   GroupedSolve first = solve_in_groups(problem, held, setup_ms, k_input, runs, held_progress);
-  Result r = std::move(first.result);
   // The groups no join changes are not solved again: their runs from the held solve are taken.
   runs.insert(runs.end(), std::make_move_iterator(first.fresh.begin()),
               std::make_move_iterator(first.fresh.end()));
-  Result j = solve_in_groups(problem, joined, 0, k_input, runs,
-                             at_once ? part_of(progress, 95, 100) : part_of(progress, 50, 100))
-                 .result;
+  first.fresh.clear();
+  GroupedSolve second =
+      solve_in_groups(problem, joined, 0, k_input, runs,
+                      at_once ? part_of(progress, 95, 100) : part_of(progress, 50, 100));
+  Result& r = first.result;
+  Result& j = second.result;
   JoinTrial trial;
   trial.patches = static_cast<int>(
       std::count_if(joined.solve.joins.begin(), joined.solve.joins.end(),
@@ -151,22 +158,21 @@ Result join_trial(const Problem& problem, const GroupedInput& held, const Groupe
   trial.joined = j.abd_reduction;
   trial.held = r.abd_reduction;
   trial.kept_joined = j.abd_reduction >= r.abd_reduction + kJoinMargin;
-  if (trial.kept_joined) std::swap(r, j);
+  if (trial.kept_joined) std::swap(first, second);
   r.times += j.times;  // the whole mesh's stages count the work of both solves, once
   r.times += first_times;
   r.factorizations = r.times.factorizations;
   r.join_trial = trial;
-  r.log.insert(r.log.begin(), join_trial_note(trial));
-  return r;
+  return first;
 }
 
 // Algorithm 1 over the patches the problem gives (the whole mesh as one when it gives none).
 // The seams held are those of the solve groups: a patch mostly on seams always joins its
 // neighbour; where patches hold most of their curvature on their seams (solve_groups.h), the
 // mesh is solved both with them joined and with them held (join_trial, beyond the paper).
+// t0: when the caller started (its validation and any segmentation count as setup).
 Result approximate_patches(const Problem& problem, const Topology& patch_topo,
-                           const Progress& progress) {
-  const auto t0 = Clock::now();
+                           const Progress& progress, Clock::time_point t0) {
   const Triangles& F = problem.F;
   const size_t nf = static_cast<size_t>(F.rows());
   const std::vector<int> patch = problem.patch.empty() ? std::vector<int>(nf, 0) : problem.patch;
@@ -180,16 +186,20 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   const VertexFaces incident(F, problem.V.rows());
   const double ae = average_edge_length(problem.V, F);
   const GroupedInput held_input(problem, patch_topo, patch, held, incident, ae);
-  Result r;
+  GroupedSolve solve;
   if (joined.group == held.group) {
-    r = solve_in_groups(problem, held_input, ms_since(t0), k_input, {}, progress).result;
+    solve = solve_in_groups(problem, held_input, ms_since(t0), k_input, {}, progress);
   } else {
     const GroupedInput joined_input(problem, patch_topo, patch, joined, incident, ae);
-    r = join_trial(problem, held_input, joined_input, k_input, ms_since(t0), progress);
+    solve = join_trial(problem, held_input, joined_input, k_input, ms_since(t0), progress);
   }
+  Result& r = solve.result;
   r.time_ms = ms_since(t0);
+  // Made last, so that its total gives the work of every solve the result took.
+  r.log = approximate_log(r, solve.reruns, problem.params, solve.held_share);
+  if (r.join_trial) r.log.insert(r.log.begin(), join_trial_note(*r.join_trial));
   if (progress) progress(100, "done");
-  return r;
+  return std::move(solve.result);
 }
 
 }  // namespace
@@ -198,30 +208,27 @@ Result approximate(const Problem& problem, const Progress& progress, const Setti
   const auto t0 = Clock::now();
   const Topology topo = validate(problem);
   const SegmentFirstPlan plan = plan_segment_first(problem, topo);
-  if (!plan.segment) return approximate_patches(problem, topo, progress);
+  if (!plan.segment) return approximate_patches(problem, topo, progress, t0);
   Problem split;
   try {
     split = segmented(problem);
   } catch (const Error& e) {
-    Result r = approximate_patches(problem, topo, progress);
+    Result r = approximate_patches(problem, topo, progress, t0);
     r.log.insert(r.log.begin(), std::string("note: the mesh has no patch ids and ") + plan.why +
                                     ", but it could not be split into patches (" + e.what() +
                                     "): solved as one patch");
     return r;
   }
   if (std::all_of(split.patch.begin(), split.patch.end(), [](int id) { return id == 0; })) {
-    Result r = approximate_patches(problem, topo, progress);
+    Result r = approximate_patches(problem, topo, progress, t0);
     r.log.insert(r.log.begin(), "note: the mesh has no patch ids and " + plan.why +
                                     ", but the segmentation keeps it one patch");
     return r;
   }
-  const double split_ms = ms_since(t0);
-  Result r = approximate_patches(split, validate(split), progress);
+  Result r = approximate_patches(split, validate(split), progress, t0);
   r.segmented_patch = split.patch;
   const int count = 1 + *std::max_element(split.patch.begin(), split.patch.end());
   r.log.insert(r.log.begin(), segmented_note(plan.why, count, setting));
-  r.times.setup += split_ms;
-  r.time_ms += split_ms;
   return r;
 }
 
