@@ -9,6 +9,8 @@ For each mesh, sweeps
     curve method's `--weight`, `--tolerance-ae` (step mode, the default: caps each iteration's move)
     and `--tolerance-ae` with `--tolerance-mode total`. The total mode caps the whole move, so only it
     reaches the small distances where MeshLab's points lie;
+    On a mesh with a boundary, also `--free-boundary` with `--tolerance-mode total`: ours keeps the
+    open boundary by default, MeshLab's filter moves it, and this series compares like with like;
   * MeshLab's own apply_coord_developability_of_mesh (Stein, Grinspun, Crane 2018) in pymeshlab with
     edgeflips=False, edgecollapses=False (topology kept), over `maxfunevals`;
 plus our default run (no options) and MeshLab's defaults without remeshing (maxfunevals 400).
@@ -19,7 +21,8 @@ functions:
   Hausdorff / diag = symmetric Hausdorff distance (max over both directions of pymeshlab's
     get_hausdorff_distance, vertex + face samples) over the input's bounding-box diagonal;
   mean distance / diag = the larger of the two directions' mean distances, over the diagonal;
-  max move (AE) = max |v' - v| over the input's average edge length (same vertex order);
+  max move (AE) = max |v' - v| over the input's average edge length (same vertex order), and
+    boundary move (AE) the same over the open boundary's vertices;
   time (s) = the filter's own time: quasidev's report `time_ms` (engine, without file I/O), and
     the pymeshlab filter call. The wall time of the quasidev process is kept in the JSON.
 Writes OUT/tradeoff.png (one panel per mesh: reduction against Hausdorff / diag), OUT/tradeoff.md
@@ -67,6 +70,7 @@ SWEEPS = {
     "tolerance": ([0.03, 0.1, 0.2, 0.3, 0.5, 1, 3], [0.3, 3]),
     "maxfunevals": ([100, 300, 1000, 2000, 4000, 8000, 16000], [100, 1000]),
 }
+FREE_BOUNDARY = "ours, --free-boundary, total"  # run only on meshes with an open boundary
 # series name -> (filter, marker, colour); a series' default point is drawn as a star.
 STYLE = {
     "ours, --defect-weight": ("ours", "o", "tab:blue"),
@@ -74,6 +78,7 @@ STYLE = {
     "ours, --weight": ("ours", "o", "tab:blue"),
     "ours, --tolerance-ae": ("ours", "s", "tab:green"),
     "ours, --tolerance-mode total": ("ours", "D", "tab:purple"),
+    FREE_BOUNDARY: ("ours", "v", "tab:orange"),
     "ours, default": ("ours", "*", "tab:blue"),
     "MeshLab, maxfunevals": ("meshlab", "^", "tab:red"),
     "MeshLab, default (no remeshing)": ("meshlab", "*", "tab:red"),
@@ -83,9 +88,10 @@ STYLE = {
 # ---- what to run --------------------------------------------------------------------------------
 
 def quasidev_options(quasidev: str) -> set[str]:
-    """The long options `quasidev --help` lists."""
+    """The long options `quasidev --help` lists, with their other names (`--a,--b`)."""
     out = subprocess.run([quasidev, "--help"], capture_output=True, text=True, check=True).stdout
-    return set(re.findall(r"^\s*(--[a-z][a-z-]*)", out, flags=re.M))
+    return {name for names in re.findall(r"^\s*(--[a-z][a-z,-]*)", out, flags=re.M)
+            for name in names.split(",") if name.startswith("--")}
 
 
 def plan(options: set[str], quick: bool) -> list[tuple[str, str, list[str] | dict]]:
@@ -101,6 +107,10 @@ def plan(options: set[str], quick: bool) -> list[tuple[str, str, list[str] | dic
                     ["--developability", "curve", "--weight", f"{w:g}"]) for w in pick["weight"]]
         points += [("ours, --tolerance-mode total", f"auto, total tolerance {t:g} AE",
                     [*auto, *total, "--tolerance-ae", f"{t:g}"]) for t in pick["tolerance"]]
+        if "--free-boundary" in options:
+            points += [(FREE_BOUNDARY, f"auto, free boundary, total tolerance {t:g} AE",
+                        [*auto, "--free-boundary", *total, "--tolerance-ae", f"{t:g}"])
+                       for t in pick["tolerance"]]
     else:
         points += [("ours, --weight", f"weight {w:g}", ["--weight", f"{w:g}"]) for w in pick["weight"]]
         points += [("ours, --tolerance-ae", f"tolerance {t:g} AE", ["--tolerance-ae", f"{t:g}"])
@@ -129,9 +139,20 @@ def measure(ms, before: dict) -> dict:
         "mean_dist_rel": max(h["mean"] for h in both) / before["diag"],
         "max_move_ae": None,
     }
+    fig["boundary_move_ae"] = None
     if len(V1) == before["vertices"]:
-        fig["max_move_ae"] = float(np.linalg.norm(V1 - before["V"], axis=1).max()) / before["ae"]
+        move = np.linalg.norm(V1 - before["V"], axis=1) / before["ae"]
+        fig["max_move_ae"] = float(move.max())
+        if len(before["boundary"]):
+            fig["boundary_move_ae"] = float(move[before["boundary"]].max())
     return fig
+
+
+def boundary_vertices(F: np.ndarray) -> np.ndarray:
+    """The vertices on edges that only one face has (the open boundary), sorted."""
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    unique, count = np.unique(edges, axis=0, return_counts=True)
+    return np.unique(unique[count == 1])
 
 
 def load_pair(input_path: str, output_path: str | None = None):
@@ -147,6 +168,7 @@ def input_figures(path: str) -> dict:
     ms = load_pair(path)
     V, F = ms.mesh(0).vertex_matrix().copy(), ms.mesh(0).face_matrix()
     return {"V": V, "vertices": len(V), "faces": len(F), "ae": average_edge(V, F),
+            "boundary": boundary_vertices(F),
             "diag": float(np.linalg.norm(V.max(axis=0) - V.min(axis=0))),
             "g_abd": float(np.abs(gaussian_curvature(V, F)).sum())}
 
@@ -198,6 +220,8 @@ def sweep(paths: list[str], quasidev: str, quick: bool) -> tuple[list[dict], lis
                 print(f"{name}: cannot read: {rows[-1]['error']}", file=sys.stderr, flush=True)
                 continue
             for series, setting, how in points:
+                if series == FREE_BOUNDARY and not len(before["boundary"]):
+                    continue  # closed: nothing to free
                 ours = STYLE[series][0] == "ours"
                 fig = run_ours(quasidev, path, how, before, tmp) if ours else run_meshlab(path, how, before)
                 row = {"mesh": name, "filter": "ours" if ours else "MeshLab", "series": series,
@@ -218,14 +242,14 @@ def fmt(x, spec: str) -> str:
 
 def table(rows: list[dict]) -> str:
     out = ["| mesh | filter | setting | G_ABD reduction (%) | Hausdorff / diag | mean distance / diag | "
-           "max move (AE) | time (s) |", "|---|---|---|---|---|---|---|---|"]
+           "max move (AE) | boundary move (AE) | time (s) |", "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         if "error" in r:
-            out.append(f"| {r['mesh']} | {r['filter']} | {r['setting']} | failed: {r['error']} |||||")
+            out.append(f"| {r['mesh']} | {r['filter']} | {r['setting']} | failed: {r['error']} ||||||")
             continue
         out.append(f"| {r['mesh']} | {r['filter']} | {r['setting']} | {r['reduction']:.1f} | "
                    f"{r['hausdorff_rel']:.2e} | {r['mean_dist_rel']:.2e} | {fmt(r['max_move_ae'], '.2f')} | "
-                   f"{r['time_s']:.2f} |")
+                   f"{fmt(r.get('boundary_move_ae'), '.2f')} | {r['time_s']:.2f} |")
     return "\n".join(out)
 
 
@@ -235,12 +259,9 @@ def envelope(points: list[dict], h: float) -> float | None:
     return max(ok) if ok else None
 
 
-def verdict(mesh: str, rows: list[dict]) -> str:
-    good = [r for r in rows if r["mesh"] == mesh and "error" not in r]
-    ours = [r for r in good if r["filter"] == "ours"]
-    theirs = [r for r in good if r["filter"] == "MeshLab"]
-    if not ours or not theirs:
-        return f"{mesh}: not enough successful points for a verdict"
+def above_below(ours: list[dict], theirs: list[dict]) -> tuple[int, int, list[str]]:
+    """At how many of `theirs` the best of `ours` at no larger Hausdorff removes more, and at how
+    many less or as much; and per MeshLab point, the two figures."""
     above, below, details = 0, 0, []
     for t in sorted(theirs, key=lambda r: r["hausdorff_rel"]):
         best = envelope(ours, t["hausdorff_rel"])
@@ -248,9 +269,26 @@ def verdict(mesh: str, rows: list[dict]) -> str:
         below += best is not None and best <= t["reduction"]
         details.append(f"{t['kwargs'].get('maxfunevals', THEIRS_DEFAULT_EVALS)}: "
                        f"{'none' if best is None else f'{best:.0f}'} vs {t['reduction']:.0f}")
+    return above, below, details
+
+
+def verdict(mesh: str, rows: list[dict]) -> str:
+    good = [r for r in rows if r["mesh"] == mesh and "error" not in r]
+    ours = [r for r in good if r["filter"] == "ours" and r["series"] != FREE_BOUNDARY]
+    freed = [r for r in good if r["series"] == FREE_BOUNDARY]
+    theirs = [r for r in good if r["filter"] == "MeshLab"]
+    if not ours or not theirs:
+        return f"{mesh}: not enough successful points for a verdict"
+    above, below, details = above_below(ours, theirs)
     text = (f"{mesh}: ours above MeshLab at {above}, below at {below}, and no point of ours as close at "
             f"{len(theirs) - above - below} of {len(theirs)} MeshLab points (per maxfunevals, our best "
             f"reduction at no larger Hausdorff vs theirs, %: {'; '.join(details)})")
+    if freed:
+        moved = max((t.get("boundary_move_ae") or 0.0) for t in theirs)
+        above, below, details = above_below(freed, theirs)
+        text += (f"; MeshLab's points move the open boundary up to {moved:.2f} AE, which ours keeps: "
+                 f"with it free (--free-boundary), ours above at {above} and below at {below} of "
+                 f"{len(theirs)} ({'; '.join(details)})")
     default = next((r for r in ours if r["series"] == "ours, default"), None)
     if default is not None:
         h = default["hausdorff_rel"]

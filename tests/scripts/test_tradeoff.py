@@ -61,3 +61,17 @@ def test_figures_are_sane(result):
         # MeshLab's runs have remeshing off and ours never remeshes: the vertices are kept.
         assert r["vertices"] == r["vertices_before"]
         assert r["max_move_ae"] is not None and r["max_move_ae"] >= 0
+
+
+def test_the_free_boundary_series_compares_like_with_like(result):
+    """bumpy_cone is open: ours keeps its boundary by default and in every series but the
+    free-boundary one, which moves it as MeshLab's filter does; the verdict says so."""
+    out, stdout, data = result
+    rows = data["rows"]
+    ours = [r for r in rows if r["filter"] == "ours"]
+    freed = [r for r in ours if r["series"] == "ours, --free-boundary, total"]
+    assert len(freed) == 2
+    assert all(r["boundary_move_ae"] == 0 for r in ours if r not in freed)
+    assert max(r["boundary_move_ae"] for r in freed) > 0
+    assert max(r["boundary_move_ae"] for r in rows if r["filter"] == "MeshLab") > 0
+    assert "with it free (--free-boundary), ours above at" in stdout
