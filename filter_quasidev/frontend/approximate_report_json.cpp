@@ -49,7 +49,8 @@ Json candidate(const approximate::CandidateReport& c) {
           {"abd_reduction", c.abd_reduction},
           {"mean_disp", c.mean_disp},
           {"kept", c.kept},
-          {"dropped", c.dropped}};
+          {"dropped", c.dropped},
+          {"started", c.started}};
 }
 
 Json patch(const approximate::PatchReport& p, double average_edge) {

@@ -152,6 +152,7 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
   int kept = 0;
   for (const CandidateReport& c : patch.candidates) {
     kept += c.kept;
+    EXPECT_TRUE(c.started) << term_name(c.term);  // the curve's first step leaves much
     EXPECT_NE(term_choice_text(patch).find(term_name(c.term)), std::string::npos);
   }
   EXPECT_EQ(kept, 1);
@@ -187,6 +188,35 @@ TEST(AngleDefect, AutoStopsTheRaceWhenTheLeaderLeavesLessThanDeltaAbd) {
       EXPECT_LT(c.iterations, keep_leader_round) << term_name(c.term);
     }
   }
+}
+
+// The race begins with the curve term's first step alone: where that leaves less than δ_ABD of
+// the start's G_ABD, the other terms never start, and auto costs what the curve term alone does
+// (the same result, the same factorisations); the log says why they did not run.
+TEST(AngleDefect, AutoStartsNoOtherTermWhereTheCurveTermsFirstStepLeavesLessThanDeltaAbd) {
+  Problem p = test::bumpy_plane(48, 0.05);
+  p.params.threads = 1;
+  Problem curve = p;
+  curve.params.developability = Developability::Curve;
+  const Result alone = approximate::approximate(curve);
+  ASSERT_FALSE(alone.patches[0].history.empty());
+  const double g0 = alone.patches[0].before.g_abd;
+  ASSERT_LE(alone.patches[0].history.front().figures.g_abd, p.params.stop_abd / 100 * g0);
+  const Result r = approximate::approximate(p);
+  const PatchReport& patch = r.patches[0];
+  ASSERT_EQ(patch.candidates.size(), 3u);
+  for (const CandidateReport& c : patch.candidates) {
+    EXPECT_EQ(c.started, c.term == Term::Curve) << term_name(c.term);
+    EXPECT_EQ(c.kept, c.term == Term::Curve) << term_name(c.term);
+    if (!c.started) {
+      EXPECT_EQ(c.iterations, 0) << term_name(c.term);
+    }
+  }
+  EXPECT_EQ(r.V, alone.V);
+  EXPECT_EQ(r.factorizations, alone.factorizations);
+  EXPECT_NE(term_choice_text(patch).find("defect and both not run: the first step of curve"),
+            std::string::npos)
+      << term_choice_text(patch);
 }
 
 // A candidate that has removed nothing after kNothingRounds iterations, while the leader has

@@ -80,14 +80,23 @@ std::string term_choice_text(const PatchReport& p) {
       break;
   }
   std::string s = "auto, measured:";
-  for (const CandidateReport& c : p.candidates)
+  std::string not_run;  // the candidates the first one's first step left nothing meaningful to
+  for (const CandidateReport& c : p.candidates) {
+    if (!c.started) {
+      not_run += std::string(not_run.empty() ? " " : " and ") + term_name(c.term);
+      continue;
+    }
     s += std::string(" ") + term_name(c.term) +
          format_text(" −%.1f%% in %d it.", c.abd_reduction, c.iterations) +
          (c.kept      ? " (kept)"
           : c.dropped ? " (left after the trial)"
                       : "") +
          ",";
+  }
   s.pop_back();
+  if (!not_run.empty())
+    s += ";" + not_run + " not run: the first step of " + term_name(p.candidates.front().term) +
+         " left less than δ_ABD of G_ABD";
   return s;
 }
 

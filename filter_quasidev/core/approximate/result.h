@@ -70,6 +70,8 @@ struct CandidateReport {
   double mean_disp = 0;      // of its best iterate, model units
   bool kept = false;         // the one whose result the patch keeps
   bool dropped = false;      // stopped after the trial, not by its own stop rule
+  bool started = true;       // false: not run, the first candidate's first step having left less
+                             // than δ_ABD of the start's G_ABD (term_race.h)
 };
 
 // Where the time went, in milliseconds summed over groups (and threads), and solver counts.

@@ -55,8 +55,13 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
                        double meaningful, common::IdleThreads& idle,
                        const std::function<void(double)>& progress) {
   assert(!terms.empty());
+  // Round 1 begins with the first candidate alone (the curve term, whose step costs least): where
+  // it leaves less than δ_ABD of the start's G_ABD, the others never start (the last rule below).
   std::vector<Deformation> runs;
-  for (Term t : terms) runs.push_back(start(t));
+  runs.push_back(start(terms.front()));
+  runs.front().step();
+  if (!(runs.front().best_g_abd() <= meaningful * runs.front().initial_g_abd()))
+    for (size_t k = 1; k < terms.size(); ++k) runs.push_back(start(terms[k]));
   std::vector<char> dropped(runs.size(), 0);
   const auto active = [&](size_t k) { return runs[k].running() && !dropped[k]; };
   const auto any_active = [&] {
@@ -108,7 +113,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   };
   for (; any_active() || rejoin(); ++round) {
     std::vector<size_t> stepping;  // each candidate's step reads only its own run's state
-    for (size_t k = 0; k < runs.size(); ++k)
+    for (size_t k = round == 1 ? 1 : 0; k < runs.size(); ++k)
       if (active(k)) stepping.push_back(k);
     common::run_with_idle_threads(idle, stepping.size(),
                                   [&](size_t i) { runs[stepping[i]].step(); });
@@ -142,14 +147,20 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   RaceOutcome out;
   const size_t lead = leader(runs, dropped);
   assert(lead < runs.size());  // the race never drops every candidate
-  for (size_t k = 0; k < runs.size(); ++k) {
+  for (size_t k = 0; k < terms.size(); ++k) {
     CandidateFigures c;
     c.term = terms[k];
-    c.iterations = runs[k].iterations();
-    c.g_abd = runs[k].best_g_abd();
-    c.mean_disp = runs[k].best_mean_displacement();
-    c.kept = k == lead;
-    c.dropped = dropped[k] != 0;  // by the race, whether or not it had stopped
+    c.started = k < runs.size();
+    if (c.started) {
+      c.iterations = runs[k].iterations();
+      c.g_abd = runs[k].best_g_abd();
+      c.mean_disp = runs[k].best_mean_displacement();
+      c.kept = k == lead;
+      c.dropped = dropped[k] != 0;  // by the race, whether or not it had stopped
+    } else {
+      c.g_abd = runs[lead].initial_g_abd();
+      c.dropped = true;
+    }
     out.candidates.push_back(c);
   }
   out.winner = terms[lead];

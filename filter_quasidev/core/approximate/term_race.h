@@ -1,16 +1,20 @@
 // Developability::Auto decides by measuring (beyond the paper). Each candidate term (the paper's
 // curve targets, the angle-defect rows, both) runs from the same start under the same tolerance,
 // one iteration each in turn, by successive halving over a fixed share of the iteration budget.
-// While the leader (least G_ABD; ties: least mean displacement) still runs: after kNothingRounds
-// rounds any candidate that has removed nothing stops, once the leader has removed δ_ABD of the
-// start's G_ABD (the curve targets on draped garments: a third round of theirs took the shared
-// 4-panel tee from 99 to 109 ms, medians of 11 runs at the default maxIter, same result; a lead
-// of less than δ_ABD is none: at --defect-weight 3 the angle-defect rows remove nothing in their
-// first two rounds on the tee's front, where both lead with 0.2 %, and then 59 %); after
-// kDropWorstShare of maxIter rounds the candidate with most G_ABD left stops, and from then on so
-// does any that has removed less than kFarBehind of what the leader removed; after kKeepLeaderShare
-// the others stop, but for any whose best G_ABD, falling on at its pace over the last
-// kPlateauIterations iterations, would end below the leader's likewise projected (a term whose
+// Round 1 begins with the first candidate alone (the curve term, whose step costs least): where
+// that step leaves less than δ_ABD of the start's G_ABD, the others could remove no meaningful
+// share more (the last rule below) and never start (on the plane with bumps of 0.5 AE, 12k faces,
+// one angle-defect factorisation of each other term cost more than the curve term's whole run by
+// CG: 152 → 65 ms, the same result). While the leader (least G_ABD; ties: least mean displacement)
+// still runs: after kNothingRounds rounds any candidate that has removed nothing stops, once the
+// leader has removed δ_ABD of the start's G_ABD (the curve targets on draped garments: a third
+// round of theirs took the shared 4-panel tee from 99 to 109 ms, medians of 11 runs at the default
+// maxIter, same result; a lead of less than δ_ABD is none: at --defect-weight 3 the angle-defect
+// rows remove nothing in their first two rounds on the tee's front, where both lead with 0.2 %, and
+// then 59 %); after kDropWorstShare of maxIter rounds the candidate with most G_ABD left stops, and
+// from then on so does any that has removed less than kFarBehind of what the leader removed; after
+// kKeepLeaderShare the others stop, but for any whose best G_ABD, falling on at its pace over the
+// last kPlateauIterations iterations, would end below the leader's likewise projected (a term whose
 // re-fitted targets took hold late: on the cylinder with bumps of 2 AE, 0.16 wide, both reaches
 // 87 % against the leader's 79 %, yet trailed it at round 12), and the leader runs to its own stop.
 // Where these rules would drop the curve term after kPlateauIterations rounds or more, its curve is
@@ -57,6 +61,7 @@ struct CandidateFigures {
   double mean_disp = 0;  // of its best iterate
   bool kept = false;
   bool dropped = false;  // stopped by the trial, not by its own stop rule
+  bool started = true;   // false: never run, the first candidate having left less than δ_ABD
 };
 
 struct RaceOutcome {
