@@ -113,7 +113,8 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   };
   for (; any_active() || rejoin(); ++round) {
     std::vector<size_t> stepping;  // each candidate's step reads only its own run's state
-    for (size_t k = round == 1 ? 1 : 0; k < runs.size(); ++k)
+    const size_t first = round == 1 ? 1 : 0;  // round 1's first candidate has stepped (above)
+    for (size_t k = first; k < runs.size(); ++k)
       if (active(k)) stepping.push_back(k);
     common::run_with_idle_threads(idle, stepping.size(),
                                   [&](size_t i) { runs[stepping[i]].step(); });
