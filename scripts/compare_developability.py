@@ -90,10 +90,15 @@ def mixed_areas(V: np.ndarray, F: np.ndarray, angles: np.ndarray) -> np.ndarray:
     return A
 
 
+def edge_use(F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Each undirected edge of the triangles (k x 2, sorted) and how many faces have it."""
+    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
+    return np.unique(edges, axis=0, return_counts=True)
+
+
 def interior_vertices(n: int, F: np.ndarray) -> np.ndarray:
     """True for referenced vertices all of whose edges are shared by exactly two faces."""
-    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
-    uniq, count = np.unique(edges, axis=0, return_counts=True)
+    uniq, count = edge_use(F)
     interior = np.zeros(n, dtype=bool)
     interior[np.unique(F)] = True
     interior[uniq[count != 2].ravel()] = False

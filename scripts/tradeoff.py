@@ -45,8 +45,8 @@ import time
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from compare_developability import (_FAILED_MESHSETS, average_edge, gaussian_curvature,  # noqa: E402
-                                    hausdorff_one_way)
+from compare_developability import (_FAILED_MESHSETS, average_edge, edge_use,  # noqa: E402
+                                    gaussian_curvature, hausdorff_one_way)
 from mesh_folders import SAMPLES, existing  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -150,9 +150,8 @@ def measure(ms, before: dict) -> dict:
 
 def boundary_vertices(F: np.ndarray) -> np.ndarray:
     """The vertices on edges that only one face has (the open boundary), sorted."""
-    edges = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
-    unique, count = np.unique(edges, axis=0, return_counts=True)
-    return np.unique(unique[count == 1])
+    edges, count = edge_use(F)
+    return np.unique(edges[count == 1])
 
 
 def load_pair(input_path: str, output_path: str | None = None):

@@ -55,12 +55,17 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
                        double meaningful, common::IdleThreads& idle,
                        const std::function<void(double)>& progress) {
   assert(!terms.empty());
+  // The run has left less than δ_ABD of the start's G_ABD: no term could remove a meaningful
+  // share more.
+  const auto spent = [&](const Deformation& run) {
+    return run.best_g_abd() <= meaningful * run.initial_g_abd();
+  };
   // Round 1 begins with the first candidate alone (the curve term, whose step costs least): where
   // it leaves less than δ_ABD of the start's G_ABD, the others never start (the last rule below).
   std::vector<Deformation> runs;
   runs.push_back(start(terms.front()));
   runs.front().step();
-  if (!(runs.front().best_g_abd() <= meaningful * runs.front().initial_g_abd()))
+  if (!spent(runs.front()))
     for (size_t k = 1; k < terms.size(); ++k) runs.push_back(start(terms[k]));
   std::vector<char> dropped(runs.size(), 0);
   const auto active = [&](size_t k) { return runs[k].running() && !dropped[k]; };
@@ -102,9 +107,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   const auto rejoin = [&] {  // once: a rejoin that found none ends the race
     if (std::find(rejoined.begin(), rejoined.end(), 1) != rejoined.end()) return false;
     const size_t lead = leader(runs, dropped);
-    if (runs[lead].stop_reason() == PatchStop::MaxIter ||
-        runs[lead].best_g_abd() <= meaningful * runs[lead].initial_g_abd())
-      return false;
+    if (runs[lead].stop_reason() == PatchStop::MaxIter || spent(runs[lead])) return false;
     bool any = false;
     for (size_t k = 0; k < runs.size(); ++k)
       if (dropped[k] && runs[k].running() && overtakes(k, lead))
@@ -135,7 +138,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
       worst_dropped = true;
       if (std::count(dropped.begin(), dropped.end(), 0) > 2) drop(trailer(runs, dropped));
     }
-    if (runs[lead].best_g_abd() <= meaningful_g) {
+    if (spent(runs[lead])) {
       for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != lead;
     } else if (lead_runs && round >= keep_leader_after) {
       for (size_t k = 0; k < runs.size(); ++k)
