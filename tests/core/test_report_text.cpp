@@ -28,6 +28,28 @@ TEST(ReportText, EveryTargetKindHasItsOwnName) {
   EXPECT_EQ(names, (std::set<std::string>{"curve", "closed curve", "plane", "unchanged"}));
 }
 
+// A curve patch far from one developable surface is told to try the angle-defect term, and
+// auto only where auto would have measured it (not on a group it does not race).
+TEST(ReportText, TheFarFromDevelopableWarningNamesAutoOnlyWhereAutoRaces) {
+  PatchReport p;
+  p.fitted = true;
+  p.target_kind = TargetKind::Curve;
+  p.developability = Term::Curve;
+  p.fit_residual_deg = 17.5;
+  p.developability_reason = TermChoice::AsAsked;
+  const std::string asked = patch_log_line(p, 1.0);
+  EXPECT_NE(asked.find("warning: fit residual 17.5°"), std::string::npos) << asked;
+  EXPECT_NE(asked.find("(developability defect or auto)"), std::string::npos) << asked;
+  p.developability_reason = TermChoice::AutoNotRaced;
+  const std::string not_raced = patch_log_line(p, 1.0);
+  EXPECT_NE(not_raced.find("warning: fit residual 17.5°"), std::string::npos) << not_raced;
+  EXPECT_EQ(not_raced.find("or auto"), std::string::npos) << not_raced;
+  EXPECT_NE(not_raced.find("developability defect; auto does not race it"), std::string::npos)
+      << not_raced;
+  p.fit_residual_deg = 5.0;
+  EXPECT_EQ(patch_log_line(p, 1.0).find("warning"), std::string::npos);
+}
+
 TEST(ReportText, EveryTermChoiceHasText) {
   std::set<std::string> texts;
   for (TermChoice c :

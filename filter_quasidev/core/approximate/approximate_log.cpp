@@ -44,10 +44,15 @@ std::string patch_log_line(const PatchReport& p, double ae) {
       format_text("max displacement %.3g AE, %.0f ms", p.after.max_disp / ae, p.time_ms);
   if (p.developability == Term::Curve && p.fit_residual_deg > kFarResidualDeg)
     s += format_text(
-        "; warning: fit residual %.1f°: this patch is far from one developable surface, which "
-        "the paper's method assumes: use the angle-defect term (developability defect or auto), "
-        "or split it into finer patches",
-        p.fit_residual_deg);
+             "; warning: fit residual %.1f°: this patch is far from one developable surface, "
+             "which the paper's method assumes: ",
+             p.fit_residual_deg) +
+         // auto took the curve term here without measuring the others, so it is no remedy
+         (p.developability_reason == TermChoice::AutoNotRaced
+              ? "use the angle-defect term (developability defect; auto does not race it on a "
+                "group this large)"
+              : "use the angle-defect term (developability defect or auto)") +
+         ", or split it into finer patches";
   return s;
 }
 
