@@ -55,13 +55,13 @@ TEST(ReportText, EveryTermChoiceHasText) {
   for (TermChoice c :
        {TermChoice::AsAsked, TermChoice::Planar, TermChoice::TooSmall, TermChoice::NoCurveFits,
         TermChoice::EarlierPass, TermChoice::AutoNoCurveFits, TermChoice::AutoNotRaced,
-        TermChoice::Auto, TermChoice::AutoMeasured}) {
+        TermChoice::AutoAfterCurve, TermChoice::Auto, TermChoice::AutoMeasured}) {
     PatchReport p;
     p.developability_reason = c;
     p.candidates = {{Term::Curve, 4, 50.0, 0.1, true, false}};
     texts.insert(term_choice_text(p));
   }
-  EXPECT_EQ(texts.size(), 9u);
+  EXPECT_EQ(texts.size(), 10u);
   EXPECT_EQ(texts.count(""), 0u);
 }
 

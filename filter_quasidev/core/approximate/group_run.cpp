@@ -51,6 +51,15 @@ std::vector<Term> choose_terms(GroupRun& run, const Params& params, const Decide
   return candidates;
 }
 
+// A run of Step 2 on the group with the terms of `fits`, which must outlive it (its re-projection
+// keeps a reference to them).
+Deformation start_run(const GroupMesh& g, const std::vector<PatchFit>& fits, SystemLayouts& layouts,
+                      const Params& params, size_t threads) {
+  return Deformation(g, group_targets(g, fits), make_retarget(g, fits, threads),
+                     refits_when_stalled(fits, params), layouts, group_defect_rows(g, fits),
+                     params);
+}
+
 // Step 2 as a race of the candidate terms; the run keeps the winner's fits and outcome.
 // threads: the group's share, for each candidate's own work; idle: the round's idle threads,
 // which step candidates at once.
@@ -61,12 +70,7 @@ void race(GroupRun& run, const std::vector<Term>& candidates, const Params& para
   std::map<Term, std::vector<PatchFit>> fits_of;
   for (Term t : candidates) fits_of[t] = with_term(run.fits, t);
   SystemLayouts layouts(g, params, ae);  // the candidates share the order and the analyses
-  const auto start = [&](Term t) {
-    const std::vector<PatchFit>& fits = fits_of.at(t);
-    return Deformation(g, group_targets(g, fits), make_retarget(g, fits, threads),
-                       refits_when_stalled(fits, params), layouts, group_defect_rows(g, fits),
-                       params);
-  };
+  const auto start = [&](Term t) { return start_run(g, fits_of.at(t), layouts, params, threads); };
   RaceOutcome raced =
       race_terms(candidates, start, params.max_iter, params.stop_abd / 100, idle, progress);
   run.fits = fits_of.at(raced.winner);
@@ -74,6 +78,44 @@ void race(GroupRun& run, const std::vector<Term>& candidates, const Params& para
   run.outcome = std::move(raced.outcome);
   run.race = std::move(raced.candidates);
   run.initial_g = raced.initial_g;
+}
+
+// Auto on a group above kMaxDefectRaceVertices: the curve term alone, whose conjugate gradients
+// cost a fraction of the angle-defect rows' factorisations (patch_fit.h). Where it removes less
+// than δ_ABD of the start's G_ABD (what the race calls no lead, term_race.h), that saving bought
+// nothing: the angle-defect rows run from the same start too, and the group keeps the one that
+// leaves less G_ABD, both reported as candidates (the tangent developable with bumps of 0.5 AE
+// and jitter of 0.1 AE at 77k faces, every curve step folding faces: −0.0 % → −98.5 %).
+void curve_then_defect(GroupRun& run, const Params& params, double ae, size_t threads,
+                       const std::function<void(double)>& progress) {
+  const GroupMesh& g = run.group;
+  double reported = 0;  // the progress, never back
+  const auto run_term = [&](const std::vector<PatchFit>& fits, Term term, CandidateFigures& c) {
+    SystemLayouts layouts(g, params, ae);  // not shared: the curve term's go before the next run
+    Deformation d = start_run(g, fits, layouts, params, threads);
+    while (d.step())
+      if (progress)
+        progress(reported =
+                     std::max(reported, static_cast<double>(d.iterations()) / params.max_iter));
+    if (term == Term::Curve) run.initial_g = d.initial_g_abd();
+    c = candidate_figures(term, d);
+    return d.finish();  // its system and factors go with it
+  };
+  CandidateFigures curve, defect;
+  run.outcome = run_term(run.fits, Term::Curve, curve);
+  if (run.initial_g - curve.g_abd >= params.stop_abd / 100 * run.initial_g) return;
+  std::vector<PatchFit> defect_fits = with_term(run.fits, Term::Defect);
+  DeformOutcome other = run_term(defect_fits, Term::Defect, defect);
+  const bool keep_defect = defect.g_abd < curve.g_abd;
+  if (keep_defect) {
+    std::swap(run.outcome, other);
+    run.fits = std::move(defect_fits);
+    for (PatchFit& p : run.fits) p.after_curve = p.reason == TermReason::Measured;
+  }
+  run.outcome.times += other.times;
+  (keep_defect ? defect : curve).kept = true;
+  run.race = {curve, defect};
+  run.targets = group_targets(g, run.fits);
 }
 
 }  // namespace
@@ -113,6 +155,8 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
     run.outcome.stop = run.outcome.stop_detail.empty() ? PatchStop::Planar : PatchStop::Unfitted;
   } else if (candidates.size() > 1) {
     race(run, candidates, params, in.ae, threads, idle, progress);
+  } else if (candidates == std::vector<Term>{Term::Curve}) {  // by kMaxDefectRaceVertices
+    curve_then_defect(run, params, in.ae, threads, progress);
   } else {
     run.outcome = deform(g, run.targets, make_retarget(g, run.fits, threads),
                          refits_when_stalled(run.fits, params), group_defect_rows(g, run.fits),

@@ -27,6 +27,8 @@ struct PatchFit {
   std::string skipped;  // why Step 1 failed; empty when it succeeded
   Term term = Term::None;
   TermReason reason = TermReason::AsAsked;
+  bool after_curve = false;  // Measured: the angle-defect rows ran after the curve term alone
+                             // removed nothing (group_run.cpp)
   bool fitted() const { return skipped.empty(); }
   bool planar() const;
   bool idle() const { return term == Term::None; }
@@ -46,6 +48,8 @@ void choose_term(PatchFit& p, Developability mode);
 // term's conjugate gradients (from 10,000 unknowns) never factorise, and the defect candidate's
 // factorisation would then dominate the race (docs/measurements-behind-the-code.md). The
 // garments' panels and the robustness sweep's members are all below the bound, so they race.
+// Above it, where the curve term removes nothing, the angle-defect rows run after it
+// (group_run.cpp).
 constexpr Eigen::Index kMaxDefectRaceVertices = 25000;
 
 // The candidate terms of Developability::Auto for a patch of a group with `vertices` vertices:

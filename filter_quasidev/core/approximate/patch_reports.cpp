@@ -34,7 +34,7 @@ TermChoice term_choice(const PatchFit& p, bool raced) {
       break;
   }
   if (!p.fitted()) return TermChoice::AutoNoCurveFits;
-  if (raced) return TermChoice::AutoMeasured;
+  if (raced) return p.after_curve ? TermChoice::AutoAfterCurve : TermChoice::AutoMeasured;
   return p.term == Term::Curve ? TermChoice::AutoNotRaced : TermChoice::Auto;
 }
 

@@ -54,6 +54,33 @@ const char* pass_name(SolvePass pass) {
   return "";
 }
 
+namespace {
+
+// " curve −0.0% in 1 it. (left after the trial), defect …" for a patch's candidates.
+std::string candidates_text(const PatchReport& p) {
+  std::string s;
+  std::string not_run;  // the candidates the first one's first step left nothing meaningful to
+  for (const CandidateReport& c : p.candidates) {
+    if (!c.started) {
+      not_run += std::string(not_run.empty() ? " " : " and ") + term_name(c.term);
+      continue;
+    }
+    s += std::string(" ") + term_name(c.term) +
+         format_text(" −%.1f%% in %d it.", c.abd_reduction, c.iterations) +
+         (c.kept      ? " (kept)"
+          : c.dropped ? " (left after the trial)"
+                      : "") +
+         ",";
+  }
+  if (!s.empty()) s.pop_back();
+  if (!not_run.empty())
+    s += ";" + not_run + " not run: the first step of " + term_name(p.candidates.front().term) +
+         " left less than δ_ABD of G_ABD";
+  return s;
+}
+
+}  // namespace
+
 std::string term_choice_text(const PatchReport& p) {
   switch (p.developability_reason) {
     case TermChoice::AsAsked:
@@ -76,28 +103,16 @@ std::string term_choice_text(const PatchReport& p) {
           kMaxDefectRaceVertices);
     case TermChoice::Auto:
       return "auto";
+    case TermChoice::AutoAfterCurve:
+      return format_text(
+                 "auto: above %td vertices the curve term runs alone, and it removed less than "
+                 "δ_ABD of G_ABD, so the angle-defect rows ran too:",
+                 kMaxDefectRaceVertices) +
+             candidates_text(p);
     case TermChoice::AutoMeasured:
       break;
   }
-  std::string s = "auto, measured:";
-  std::string not_run;  // the candidates the first one's first step left nothing meaningful to
-  for (const CandidateReport& c : p.candidates) {
-    if (!c.started) {
-      not_run += std::string(not_run.empty() ? " " : " and ") + term_name(c.term);
-      continue;
-    }
-    s += std::string(" ") + term_name(c.term) +
-         format_text(" −%.1f%% in %d it.", c.abd_reduction, c.iterations) +
-         (c.kept      ? " (kept)"
-          : c.dropped ? " (left after the trial)"
-                      : "") +
-         ",";
-  }
-  s.pop_back();
-  if (!not_run.empty())
-    s += ";" + not_run + " not run: the first step of " + term_name(p.candidates.front().term) +
-         " left less than δ_ABD of G_ABD";
-  return s;
+  return "auto, measured:" + candidates_text(p);
 }
 
 std::string pass_stop_text(const PassStop& s) {

@@ -24,6 +24,7 @@ enum class TermChoice {
   EarlierPass,      // Auto: decided by the race of an earlier pass
   AutoNoCurveFits,  // Auto: no curve fits, so the defect rows
   AutoNotRaced,     // Auto: above kMaxDefectRaceVertices, the curve term without a race
+  AutoAfterCurve,   // Auto: above it, the defect rows too where the curve term removed nothing
   Auto,             // Auto: the only candidate
   AutoMeasured      // Auto: the race's winner (candidates hold its figures)
 };

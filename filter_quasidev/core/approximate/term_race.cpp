@@ -50,6 +50,15 @@ double projected_g_abd(const Deformation& run, int max_iter) {
 
 }  // namespace
 
+CandidateFigures candidate_figures(Term term, const Deformation& run) {
+  CandidateFigures c;
+  c.term = term;
+  c.iterations = run.iterations();
+  c.g_abd = run.best_g_abd();
+  c.mean_disp = run.best_mean_displacement();
+  return c;
+}
+
 RaceOutcome race_terms(const std::vector<Term>& terms,
                        const std::function<Deformation(Term)>& start, int max_iter,
                        double meaningful, common::IdleThreads& idle,
@@ -156,9 +165,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     c.term = terms[k];
     c.started = k < runs.size();
     if (c.started) {
-      c.iterations = runs[k].iterations();
-      c.g_abd = runs[k].best_g_abd();
-      c.mean_disp = runs[k].best_mean_displacement();
+      c = candidate_figures(terms[k], runs[k]);
       c.kept = k == lead;
       c.dropped = dropped[k] != 0;  // by the race, whether or not it had stopped
     } else {

@@ -64,6 +64,9 @@ struct CandidateFigures {
   bool started = true;   // false: never run, the first candidate having left less than δ_ABD
 };
 
+// A run's figures as a candidate (kept, dropped and started left to the caller).
+CandidateFigures candidate_figures(Term term, const Deformation& run);
+
 struct RaceOutcome {
   Term winner = Term::None;
   DeformOutcome outcome;  // the winner's run
