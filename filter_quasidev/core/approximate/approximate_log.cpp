@@ -47,12 +47,12 @@ std::string patch_log_line(const PatchReport& p, double ae) {
              "; warning: fit residual %.1f°: this patch is far from one developable surface, "
              "which the paper's method assumes: ",
              p.fit_residual_deg) +
+         "use the angle-defect term (developability defect" +
          // auto took the curve term here without measuring the others, so it is no remedy
          (p.developability_reason == TermChoice::AutoNotRaced
-              ? "use the angle-defect term (developability defect; auto does not race it on a "
-                "group this large)"
-              : "use the angle-defect term (developability defect or auto)") +
-         ", or split it into finer patches";
+              ? "; auto does not race it on a group this large"
+              : " or auto") +
+         "), or split it into finer patches";
   return s;
 }
 

@@ -97,7 +97,7 @@ void curve_then_defect(GroupRun& run, const Params& params, double ae, size_t th
       if (progress)
         progress(reported =
                      std::max(reported, static_cast<double>(d.iterations()) / params.max_iter));
-    if (term == Term::Curve) run.initial_g = d.initial_g_abd();
+    run.initial_g = d.initial_g_abd();  // the same for both: they start from the same positions
     c = candidate_figures(term, d);
     return d.finish();  // its system and factors go with it
   };
@@ -111,11 +111,11 @@ void curve_then_defect(GroupRun& run, const Params& params, double ae, size_t th
     std::swap(run.outcome, other);
     run.fits = std::move(defect_fits);
     for (PatchFit& p : run.fits) p.after_curve = p.reason == TermReason::Measured;
+    run.targets = group_targets(g, run.fits);
   }
   run.outcome.times += other.times;
   (keep_defect ? defect : curve).kept = true;
   run.race = {curve, defect};
-  run.targets = group_targets(g, run.fits);
 }
 
 }  // namespace

@@ -162,14 +162,14 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   assert(lead < runs.size());  // the race never drops every candidate
   for (size_t k = 0; k < terms.size(); ++k) {
     CandidateFigures c;
-    c.term = terms[k];
-    c.started = k < runs.size();
-    if (c.started) {
+    if (k < runs.size()) {
       c = candidate_figures(terms[k], runs[k]);
       c.kept = k == lead;
       c.dropped = dropped[k] != 0;  // by the race, whether or not it had stopped
     } else {
+      c.term = terms[k];
       c.g_abd = runs[lead].initial_g_abd();
+      c.started = false;
       c.dropped = true;
     }
     out.candidates.push_back(c);
