@@ -1,8 +1,12 @@
 // Small matrices with known structure for the solver tests: graphs (a path, a grid, two
-// disconnected grids), their Laplacians, and random quasi-definite systems.
+// disconnected grids), their Laplacians, and random quasi-definite systems; and what the
+// order tests measure of an order: that it is a permutation, and its factor's entries.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <Eigen/Core>
+#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <numeric>
@@ -117,6 +121,30 @@ inline Eigen::SparseMatrix<double> block_matrix(const BlockPattern& p, const Edg
   Eigen::SparseMatrix<double> M(3 * n, 3 * n);
   M.setFromTriplets(t.begin(), t.end());
   return M;
+}
+
+// rank holds every position 0..n-1 once.
+inline bool is_permutation(std::vector<int> rank) {
+  std::sort(rank.begin(), rank.end());
+  for (size_t i = 0; i < rank.size(); ++i)
+    if (rank[i] != static_cast<int>(i)) return false;
+  return true;
+}
+
+// Entries of the Cholesky factor of the graph's shifted Laplacian with node v numbered rank[v]
+// (a test failure, and 0, if it cannot be factorised).
+inline long factor_entries(int n, const Edges& edges, const std::vector<int>& rank) {
+  Edges ranked;
+  for (const auto& [a, b] : edges)
+    ranked.emplace_back(rank[static_cast<size_t>(a)], rank[static_cast<size_t>(b)]);
+  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> llt(
+      laplacian_lower(n, ranked, 1.0));
+  if (llt.info() != Eigen::Success) {
+    ADD_FAILURE() << "the shifted Laplacian could not be factorised";
+    return 0;
+  }
+  const Eigen::SparseMatrix<double> L = llt.matrixL();
+  return L.nonZeros();
 }
 
 }  // namespace qd::test

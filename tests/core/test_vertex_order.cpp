@@ -3,7 +3,6 @@
 // the same order on several threads at once as alone.
 #include <gtest/gtest.h>
 
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <thread>
 
@@ -15,26 +14,6 @@ namespace {
 
 using namespace qd::common;
 
-bool is_permutation(const std::vector<int>& rank) {
-  std::vector<int> sorted = rank;
-  std::sort(sorted.begin(), sorted.end());
-  for (size_t i = 0; i < sorted.size(); ++i)
-    if (sorted[i] != static_cast<int>(i)) return false;
-  return true;
-}
-
-// Entries of the Cholesky factor of the graph's shifted Laplacian with node v numbered rank[v].
-long factor_entries(int n, const test::Edges& edges, const std::vector<int>& rank) {
-  test::Edges ranked;
-  for (const auto& [a, b] : edges)
-    ranked.emplace_back(rank[static_cast<size_t>(a)], rank[static_cast<size_t>(b)]);
-  Eigen::SimplicialLLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::NaturalOrdering<int>> llt(
-      test::laplacian_lower(n, ranked, 1.0));
-  EXPECT_EQ(llt.info(), Eigen::Success);
-  const Eigen::SparseMatrix<double> L = llt.matrixL();
-  return L.nonZeros();
-}
-
 std::vector<int> natural(int n) {
   std::vector<int> rank(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) rank[static_cast<size_t>(i)] = i;
@@ -45,8 +24,8 @@ TEST(FillReducingRank, APathGetsNoFill) {
   const int n = 50;
   const std::vector<int> rank = fill_reducing_rank(n, test::path_edges(n));
   ASSERT_EQ(rank.size(), static_cast<size_t>(n));
-  EXPECT_TRUE(is_permutation(rank));
-  EXPECT_EQ(factor_entries(n, test::path_edges(n), rank),
+  EXPECT_TRUE(test::is_permutation(rank));
+  EXPECT_EQ(test::factor_entries(n, test::path_edges(n), rank),
             2L * n - 1);  // the diagonal and the edges
 }
 
@@ -54,8 +33,8 @@ TEST(FillReducingRank, AGridFillsNoMoreThanTheNaturalOrder) {
   const int rows = 30, cols = 30, n = rows * cols;
   const test::Edges edges = test::grid_edges(rows, cols);
   const std::vector<int> rank = fill_reducing_rank(n, edges);
-  EXPECT_TRUE(is_permutation(rank));
-  EXPECT_LE(factor_entries(n, edges, rank), factor_entries(n, edges, natural(n)));
+  EXPECT_TRUE(test::is_permutation(rank));
+  EXPECT_LE(test::factor_entries(n, edges, rank), test::factor_entries(n, edges, natural(n)));
 }
 
 TEST(FillReducingRank, TwoDisconnectedGridsAreOrderedTogether) {
@@ -64,17 +43,17 @@ TEST(FillReducingRank, TwoDisconnectedGridsAreOrderedTogether) {
   const test::Edges second = test::grid_edges(15, 20, n / 2);
   edges.insert(edges.end(), second.begin(), second.end());
   const std::vector<int> rank = fill_reducing_rank(n, edges);
-  EXPECT_TRUE(is_permutation(rank));
-  EXPECT_LE(factor_entries(n, edges, rank), factor_entries(n, edges, natural(n)));
+  EXPECT_TRUE(test::is_permutation(rank));
+  EXPECT_LE(test::factor_entries(n, edges, rank), test::factor_entries(n, edges, natural(n)));
 }
 
 TEST(FillReducingRank, LeastFillFillsNoMoreThanMinimumDegree) {
   const int rows = 90, cols = 80, n = rows * cols;
   const test::Edges edges = test::grid_edges(rows, cols);
   const std::vector<int> least = fill_reducing_rank(n, edges, FillOrder::LeastFill);
-  EXPECT_TRUE(is_permutation(least));
-  EXPECT_LE(factor_entries(n, edges, least),
-            factor_entries(n, edges, fill_reducing_rank(n, edges, FillOrder::MinimumDegree)));
+  EXPECT_TRUE(test::is_permutation(least));
+  EXPECT_LE(test::factor_entries(n, edges, least),
+            test::factor_entries(n, edges, fill_reducing_rank(n, edges, FillOrder::MinimumDegree)));
 }
 
 TEST(FillReducingRank, LeastFillOrdersTheSameOnConcurrentThreads) {
@@ -94,7 +73,7 @@ TEST(FillReducingRank, LeastFillOrdersTheSameOnConcurrentThreads) {
 TEST(FillReducingRank, IsolatedNodesAndTinyGraphs) {
   EXPECT_TRUE(fill_reducing_rank(0, {}).empty());
   EXPECT_EQ(fill_reducing_rank(1, {}), std::vector<int>{0});
-  EXPECT_TRUE(is_permutation(fill_reducing_rank(7, {{2, 5}})));  // five nodes with no edge
+  EXPECT_TRUE(test::is_permutation(fill_reducing_rank(7, {{2, 5}})));  // five nodes with no edge
 }
 
 }  // namespace

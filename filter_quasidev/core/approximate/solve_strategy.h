@@ -11,7 +11,7 @@
 // targets move. Each solve stops when the correction's error in M's energy norm is below
 // kCgTolerance of the correction, and starts from the solve before's solution when that is
 // closer. A solve that CG gives up on (conjugate_gradients.h) factorises M instead, and so do
-// the group's later solves; M, in the AMD order CG wants, is then permuted to the
+// the group's later solves; M, in the order CG wants (system_layout.h), is then permuted to the
 // kLeastFillFromBlocks order for its factor. Measurements behind the constants: docs/solvers.md.
 #pragma once
 

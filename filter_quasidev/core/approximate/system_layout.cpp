@@ -23,7 +23,15 @@ MatrixLayout::MatrixLayout(const GroupMesh& g, const Params& params, double ae,
       const int b = free_index[static_cast<size_t>(g.F(f, pq[1]))];
       if (a >= 0 && b >= 0) edges.emplace_back(a, b);
     }
-  const std::vector<int> rank = fill_reducing_rank(free_count, edges, order);
+  std::vector<Vec3> points;
+  if (order == common::FillOrder::Coordinates)
+    for (size_t v = 0; v < n; ++v)
+      if (free_index[v] >= 0) points.push_back(g.V0.row(static_cast<Eigen::Index>(v)).transpose());
+  const std::vector<int> rank =
+      order == common::FillOrder::Coordinates
+          ? common::fill_reducing_rank(common::lower_pattern(free_count, edges), points,
+                                       kLeastFillFromBlocks, params.threads)
+          : common::fill_reducing_rank(free_count, edges, order);
   unknown.assign(n, -1);
   block_vertex.resize(static_cast<size_t>(free_count));
   for (size_t v = 0; v < n; ++v)
@@ -143,8 +151,10 @@ std::shared_ptr<const MatrixLayout> SystemLayouts::matrix(bool defect_rows) {
     return defect_matrix_;
   }
   if (!matrix_)
-    matrix_ =
-        std::make_shared<const MatrixLayout>(g_, params_, ae_, common::FillOrder::MinimumDegree);
+    matrix_ = std::make_shared<const MatrixLayout>(g_, params_, ae_,
+                                                   free >= kLeastFillFromBlocks
+                                                       ? common::FillOrder::Coordinates
+                                                       : common::FillOrder::MinimumDegree);
   return matrix_;
 }
 

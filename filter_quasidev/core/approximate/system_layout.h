@@ -67,8 +67,10 @@ struct SystemLayout {
 
 // The layouts of one group, each computed at its first request. From kLeastFillFromBlocks free
 // vertices (solve_strategy.h) the systems with defect rows, always factorised, take an M
-// ordered by common::FillOrder::LeastFill, and those without keep AMD's, which their conjugate
-// gradients want.
+// ordered by common::FillOrder::LeastFill, and those without, which conjugate gradients solve,
+// one ordered by common::FillOrder::Coordinates (cut into parts of at most kLeastFillFromBlocks
+// vertices): it costs a fraction of METIS's order, and their preconditioner's factors are read
+// in every CG iteration.
 class SystemLayouts {
  public:
   // params: α (Eq. 15), w_d and the threads; ae: the average edge length.

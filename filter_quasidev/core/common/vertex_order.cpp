@@ -1,9 +1,11 @@
 #include "common/vertex_order.h"
 
+#include <future>
 #include <mutex>
 #include <numeric>
 
 #include "common/block_pattern.h"
+#include "common/coordinate_dissection.h"
 #include "common/error.h"
 #ifdef QD_WITH_CHOLMOD
 #include <Eigen/CholmodSupport>
@@ -41,6 +43,45 @@ void elimination_order(const Eigen::SparseMatrix<double>& graph, FillOrder order
   cholmod_finish(&common);
   if (!ok) throw Error("out of memory while ordering the deformation system");
 }
+
+// An order of `graph` and its factor's entries: AMD's (given null) or the given one.
+struct CountedOrder {
+  std::vector<int> perm;
+  double entries = 0;
+};
+CountedOrder counted_order(const Eigen::SparseMatrix<double>& graph, int* given) {
+  cholmod_common common;
+  cholmod_start(&common);
+  common.nmethods = 1;
+  common.method[0].ordering = given ? CHOLMOD_GIVEN : CHOLMOD_AMD;
+  common.supernodal = CHOLMOD_SIMPLICIAL;
+  cholmod_sparse view = Eigen::viewAsCholmod(graph.selfadjointView<Eigen::Lower>());
+  cholmod_factor* symbolic = cholmod_analyze_p(&view, given, nullptr, 0, &common);
+  CountedOrder order;
+  if (symbolic) {
+    const int* chosen = static_cast<const int*>(symbolic->Perm);
+    order.perm.assign(chosen, chosen + graph.rows());
+    order.entries = common.lnz;
+  }
+  const bool ok = symbolic != nullptr;
+  cholmod_free_factor(&symbolic, &common);
+  cholmod_finish(&common);
+  if (!ok) throw Error("out of memory while ordering the deformation system");
+  return order;
+}
+
+// The nodes of each of the dissection's sets ordered by CAMD after those of the sets numbered
+// below it.
+CountedOrder dissected_order(const Eigen::SparseMatrix<double>& graph, std::vector<int>& sets) {
+  cholmod_common common;
+  cholmod_start(&common);
+  cholmod_sparse view = Eigen::viewAsCholmod(graph.selfadjointView<Eigen::Lower>());
+  std::vector<int> perm(static_cast<size_t>(graph.rows()));
+  const bool ok = cholmod_camd(&view, nullptr, 0, sets.data(), perm.data(), &common);
+  cholmod_finish(&common);
+  if (!ok) throw Error("out of memory while ordering the deformation system");
+  return counted_order(graph, perm.data());
+}
 #else
 // perm[k]: the node eliminated k-th by Eigen's minimum degree (AMD), whatever the order asked.
 // graph: lower triangle.
@@ -53,6 +94,33 @@ void elimination_order(const Eigen::SparseMatrix<double>& graph, FillOrder,
 #endif
 
 }  // namespace
+
+std::vector<int> fill_reducing_rank(const BlockPattern& graph, const std::vector<Vec3>& points,
+                                    int leaf, int threads) {
+  const int nodes = graph.blocks();
+  std::vector<int> rank(static_cast<size_t>(nodes));
+  std::iota(rank.begin(), rank.end(), 0);
+  if (nodes < 2) return rank;
+  std::vector<int> perm;
+#ifdef QD_WITH_CHOLMOD
+  // AMD's order on another thread while the graph is cut; the one that fills less is kept.
+  const Eigen::SparseMatrix<double> lower = scalar_lower(graph);
+  std::future<CountedOrder> amd =
+      std::async(threads > 1 ? std::launch::async : std::launch::deferred,
+                 [&] { return counted_order(lower, nullptr); });
+  std::vector<int> sets = coordinate_dissection(graph, points, leaf);
+  CountedOrder cut = dissected_order(lower, sets);
+  CountedOrder other = amd.get();
+  perm = std::move(other.entries < cut.entries ? other.perm : cut.perm);
+#else
+  (void)points;
+  (void)leaf;
+  (void)threads;
+  elimination_order(scalar_lower(graph), FillOrder::Coordinates, perm);
+#endif
+  for (int k = 0; k < nodes; ++k) rank[static_cast<size_t>(perm[static_cast<size_t>(k)])] = k;
+  return rank;
+}
 
 std::vector<int> fill_reducing_rank(const BlockPattern& graph, FillOrder order) {
   const int nodes = graph.blocks();
