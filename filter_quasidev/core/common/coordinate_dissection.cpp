@@ -7,12 +7,34 @@ namespace qd::common {
 namespace {
 
 struct Dissection {
+  Dissection(const BlockPattern& graph, const std::vector<Vec3>& at, int most)
+      : start(static_cast<size_t>(graph.blocks()) + 1, 0),
+        points(at),
+        leaf(std::max(most, 1)),
+        part(static_cast<size_t>(graph.blocks()), 0),
+        set(static_cast<size_t>(graph.blocks()), 0) {
+    for (int c = 0; c < graph.blocks(); ++c)
+      for (int s = graph.begin(c); s < graph.end(c); ++s) {
+        ++start[static_cast<size_t>(c) + 1];
+        ++start[static_cast<size_t>(graph.row(s)) + 1];
+      }
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    neighbour.resize(static_cast<size_t>(start.back()));
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (int c = 0; c < graph.blocks(); ++c)
+      for (int s = graph.begin(c); s < graph.end(c); ++s) {
+        const int r = graph.row(s);
+        neighbour[static_cast<size_t>(next[static_cast<size_t>(c)]++)] = r;
+        neighbour[static_cast<size_t>(next[static_cast<size_t>(r)]++)] = c;
+      }
+  }
+
   std::vector<int> start, neighbour;  // symmetric adjacency (CSR)
   const std::vector<Vec3>& points;
   int leaf;
-  std::vector<int> part;  // the part each node is in while it is cut
+  std::vector<int> part;  // the part each node is in while it is cut (-1: a separator's)
   std::vector<int> set;
-  int parts = 0, sets = 0;
+  int parts = 1, sets = 0;
 
   bool touches(int v, int other) const {
     for (int k = start[static_cast<size_t>(v)]; k < start[static_cast<size_t>(v) + 1]; ++k)
@@ -49,43 +71,36 @@ struct Dissection {
       for (size_t i = b; i < e; ++i) set[static_cast<size_t>(order[i])] = s;
       return;
     }
-    // The cut along each axis in turn; the one whose separator has fewest nodes is made.
+    // Cut along x, y and z in turn, and made along the axis whose separator has fewest nodes:
+    // those of one half that touch the other, in the half where they are fewer.
     const size_t mid = b + (e - b) / 2;
     const int low = parts++, high = parts++;
-    size_t low_touching = 0, high_touching = 0;
-    int best_axis = -1;
+    int best_axis = 0;
     size_t best = 0;
+    bool from_low = false;
     for (int axis = 0; axis < 3; ++axis) {
       split(order, b, mid, e, axis, low, high);
       const auto [l, h] = touching(order, b, mid, e, low, high);
-      if (best_axis < 0 || std::min(l, h) < best) {
+      if (axis == 0 || std::min(l, h) < best) {
         best_axis = axis;
         best = std::min(l, h);
-        low_touching = l;
-        high_touching = h;
+        from_low = l < h;
       }
     }
     if (best_axis != 2) split(order, b, mid, e, best_axis, low, high);
-    const bool from_low = low_touching < high_touching;
-    std::vector<int> separator;
-    separator.reserve(from_low ? low_touching : high_touching);
+    // The separator goes to the end of its half, where the halves' own cuts leave it.
     const size_t sb = from_low ? b : mid, se = from_low ? mid : e;
     const int other = from_low ? high : low;
-    const auto kept = std::stable_partition(order.begin() + static_cast<long>(sb),
-                                            order.begin() + static_cast<long>(se),
-                                            [&](int v) { return !touches(v, other); });
-    separator.assign(kept, order.begin() + static_cast<long>(se));
-    const size_t kept_end = static_cast<size_t>(kept - order.begin());
-    for (int v : separator) part[static_cast<size_t>(v)] = -1;
-    if (from_low) {
-      cut(order, b, kept_end);
-      cut(order, mid, e);
-    } else {
-      cut(order, b, mid);
-      cut(order, mid, kept_end);
-    }
+    const size_t kept =
+        static_cast<size_t>(std::stable_partition(order.begin() + static_cast<long>(sb),
+                                                  order.begin() + static_cast<long>(se),
+                                                  [&](int v) { return !touches(v, other); }) -
+                            order.begin());
+    for (size_t i = kept; i < se; ++i) part[static_cast<size_t>(order[i])] = -1;
+    cut(order, b, from_low ? kept : mid);
+    cut(order, mid, from_low ? e : kept);
     const int s = sets++;
-    for (int v : separator) set[static_cast<size_t>(v)] = s;
+    for (size_t i = kept; i < se; ++i) set[static_cast<size_t>(order[i])] = s;
   }
 };
 
@@ -93,31 +108,9 @@ struct Dissection {
 
 std::vector<int> coordinate_dissection(const BlockPattern& graph, const std::vector<Vec3>& points,
                                        int leaf) {
-  const int n = graph.blocks();
-  Dissection d{{},
-               {},
-               points,
-               std::max(leaf, 1),
-               std::vector<int>(static_cast<size_t>(n), 0),
-               std::vector<int>(static_cast<size_t>(n), 0)};
-  d.start.assign(static_cast<size_t>(n) + 1, 0);
-  for (int c = 0; c < n; ++c)
-    for (int s = graph.begin(c); s < graph.end(c); ++s) {
-      ++d.start[static_cast<size_t>(c) + 1];
-      ++d.start[static_cast<size_t>(graph.row(s)) + 1];
-    }
-  std::partial_sum(d.start.begin(), d.start.end(), d.start.begin());
-  d.neighbour.resize(static_cast<size_t>(d.start.back()));
-  std::vector<int> fill(d.start.begin(), d.start.end() - 1);
-  for (int c = 0; c < n; ++c)
-    for (int s = graph.begin(c); s < graph.end(c); ++s) {
-      const int r = graph.row(s);
-      d.neighbour[static_cast<size_t>(fill[static_cast<size_t>(c)]++)] = r;
-      d.neighbour[static_cast<size_t>(fill[static_cast<size_t>(r)]++)] = c;
-    }
-  std::vector<int> order(static_cast<size_t>(n));
+  Dissection d(graph, points, leaf);
+  std::vector<int> order(static_cast<size_t>(graph.blocks()));
   std::iota(order.begin(), order.end(), 0);
-  d.parts = 1;
   d.cut(order, 0, order.size());
   return d.set;
 }
