@@ -50,7 +50,7 @@ Json candidate(const approximate::CandidateReport& c) {
           {"mean_disp", c.mean_disp},
           {"kept", c.kept},
           {"dropped", c.dropped},
-          {"started", c.started}};
+          {"started", c.started()}};
 }
 
 Json patch(const approximate::PatchReport& p, double average_edge) {

@@ -152,7 +152,7 @@ TEST(AngleDefect, AutoKeepsTheCandidateThatRemovesMost) {
   int kept = 0;
   for (const CandidateReport& c : patch.candidates) {
     kept += c.kept;
-    EXPECT_TRUE(c.started) << term_name(c.term);  // the curve's first step leaves much
+    EXPECT_TRUE(c.started()) << term_name(c.term);  // the curve's first step leaves much
     EXPECT_NE(term_choice_text(patch).find(term_name(c.term)), std::string::npos);
   }
   EXPECT_EQ(kept, 1);
@@ -206,9 +206,9 @@ TEST(AngleDefect, AutoStartsNoOtherTermWhereTheCurveTermsFirstStepLeavesLessThan
   const PatchReport& patch = r.patches[0];
   ASSERT_EQ(patch.candidates.size(), 3u);
   for (const CandidateReport& c : patch.candidates) {
-    EXPECT_EQ(c.started, c.term == Term::Curve) << term_name(c.term);
+    EXPECT_EQ(c.started(), c.term == Term::Curve) << term_name(c.term);
     EXPECT_EQ(c.kept, c.term == Term::Curve) << term_name(c.term);
-    if (!c.started) {
+    if (!c.started()) {
       EXPECT_EQ(c.iterations, 0) << term_name(c.term);
     }
   }
@@ -237,6 +237,40 @@ TEST(AngleDefect, AutoStopsACandidateThatRemovesNothing) {
   }
   EXPECT_TRUE(nothing);
   EXPECT_LT(kNothingRounds, std::lround(kDropWorstShare * p.params.max_iter));
+}
+
+// Both, the angle-defect rows with the curve targets, does not start where those targets' first
+// step removed nothing and the rows' first step removed some: the log says why, and the patch
+// keeps a run of the others, exactly as that term alone gives it.
+TEST(AngleDefect, AutoStartsNoBothWhereTheCurveTargetsFirstStepRemovesNothing) {
+  Problem p = wrinkled_sheet(24, 0.08);
+  p.params.tolerance = 1.0;
+  p.params.segment_first = SegmentFirst::Never;
+  const auto alone = [&](Developability term, int max_iter) {
+    Problem q = p;
+    q.params.developability = term;
+    q.params.max_iter = max_iter;
+    return approximate::approximate(q);
+  };
+  ASSERT_LE(alone(Developability::Curve, 1).abd_reduction, 0.0);  // its first step: nothing
+  ASSERT_GT(alone(Developability::Defect, 1).abd_reduction, 0.0);
+  const Result r = approximate::approximate(p);
+  const PatchReport& patch = r.patches[0];
+  ASSERT_EQ(patch.candidates.size(), 3u);
+  for (const CandidateReport& c : patch.candidates) {
+    EXPECT_EQ(c.started(), c.term != Term::Both) << term_name(c.term);
+    if (c.term == Term::Both) {
+      EXPECT_EQ(c.not_run, NotRun::TargetsRemovedNothing);
+      EXPECT_EQ(c.iterations, 0);
+      EXPECT_FALSE(c.kept);
+    }
+  }
+  EXPECT_NE(term_choice_text(patch).find("both not run: the first step of curve removed nothing"),
+            std::string::npos)
+      << term_choice_text(patch);
+  const Developability kept =
+      patch.developability == Term::Curve ? Developability::Curve : Developability::Defect;
+  EXPECT_EQ(r.V, alone(kept, p.params.max_iter).V);
 }
 
 TEST(AngleDefect, DefectModeIsScaleAndRotationInvariant) {

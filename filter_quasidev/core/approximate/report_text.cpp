@@ -59,10 +59,12 @@ namespace {
 // " curve −0.0% in 1 it. (left after the trial), defect …" for a patch's candidates.
 std::string candidates_text(const PatchReport& p) {
   std::string s;
-  std::string not_run;  // the candidates the first one's first step left nothing meaningful to
+  std::string not_run;  // the candidates that never started (term_race.h), and why
+  NotRun why = NotRun::No;
   for (const CandidateReport& c : p.candidates) {
-    if (!c.started) {
+    if (!c.started()) {
       not_run += std::string(not_run.empty() ? " " : " and ") + term_name(c.term);
+      why = c.not_run;
       continue;
     }
     s += std::string(" ") + term_name(c.term) +
@@ -73,9 +75,11 @@ std::string candidates_text(const PatchReport& p) {
          ",";
   }
   if (!s.empty()) s.pop_back();
-  if (!not_run.empty())
+  if (why == NotRun::LeftLittle)
     s += ";" + not_run + " not run: the first step of " + term_name(p.candidates.front().term) +
          " left less than δ_ABD of G_ABD";
+  if (why == NotRun::TargetsRemovedNothing)
+    s += ";" + not_run + " not run: the first step of curve removed nothing, that of defect some";
   return s;
 }
 

@@ -63,16 +63,23 @@ struct IterationReport {
   std::string note;         // why a step was shortened or rejected, if it was
 };
 
+// Why a candidate of Developability::Auto's race never started (term_race.h).
+enum class NotRun {
+  No,                     // it ran
+  LeftLittle,             // the first step before it left less than δ_ABD of the start's G_ABD
+  TargetsRemovedNothing,  // both: the curve targets' first step removed nothing, the rows' some
+};
+
 // One candidate of Developability::Auto's race (term_race.h).
 struct CandidateReport {
   Term term = Term::None;
-  int iterations = 0;        // accepted iterations it ran
-  double abd_reduction = 0;  // of its best iterate, percent
-  double mean_disp = 0;      // of its best iterate, model units
-  bool kept = false;         // the one whose result the patch keeps
-  bool dropped = false;      // stopped after the trial, not by its own stop rule
-  bool started = true;       // false: not run, the first candidate's first step having left less
-                             // than δ_ABD of the start's G_ABD (term_race.h)
+  int iterations = 0;           // accepted iterations it ran
+  double abd_reduction = 0;     // of its best iterate, percent
+  double mean_disp = 0;         // of its best iterate, model units
+  bool kept = false;            // the one whose result the patch keeps
+  bool dropped = false;         // stopped after the trial, not by its own stop rule
+  NotRun not_run = NotRun::No;  // why it never ran (term_race.h), if it did not
+  bool started() const { return not_run == NotRun::No; }
 };
 
 // Where the time went, in milliseconds summed over groups (and threads), and solver counts.

@@ -71,11 +71,35 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   };
   // Round 1 begins with the first candidate alone (the curve term, whose step costs least): where
   // it leaves less than δ_ABD of the start's G_ABD, the others never start (the last rule below).
+  // The angle-defect rows step next where both follows them, which starts only where its parts'
+  // first steps leave the question open (term_race.h).
   std::vector<Deformation> runs;
   runs.push_back(start(terms.front()));
   runs.front().step();
-  if (!spent(runs.front()))
-    for (size_t k = 1; k < terms.size(); ++k) runs.push_back(start(terms[k]));
+  size_t stepped = 1;  // the candidates whose step of round 1 is done
+  NotRun never = spent(runs.front()) ? NotRun::LeftLittle : NotRun::No;  // the rest's, if any
+  // The run of term t once its step of round 1 is done, else null.
+  const auto stepped_run = [&](Term t) -> const Deformation* {
+    const auto end = terms.begin() + static_cast<long>(stepped);
+    const auto at = std::find(terms.begin(), end, t);
+    return at == end ? nullptr : &runs[static_cast<size_t>(at - terms.begin())];
+  };
+  const auto removed_some = [](const Deformation* run) {
+    return run->best_g_abd() < run->initial_g_abd();
+  };
+  for (size_t k = 1; k < terms.size() && never == NotRun::No; ++k) {
+    const Deformation* curve = stepped_run(Term::Curve);
+    const Deformation* defect = stepped_run(Term::Defect);
+    if (terms[k] == Term::Both && curve && defect && !removed_some(curve) && removed_some(defect)) {
+      never = NotRun::TargetsRemovedNothing;
+      break;
+    }
+    runs.push_back(start(terms[k]));
+    if (k + 1 < terms.size() && terms[k + 1] == Term::Both && stepped == k) {
+      runs.back().step();
+      stepped = runs.size();
+    }
+  }
   std::vector<char> dropped(runs.size(), 0);
   const auto active = [&](size_t k) { return runs[k].running() && !dropped[k]; };
   const auto any_active = [&] {
@@ -125,7 +149,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   };
   for (; any_active() || rejoin(); ++round) {
     std::vector<size_t> stepping;  // each candidate's step reads only its own run's state
-    const size_t first = round == 1 ? 1 : 0;  // round 1's first candidate has stepped (above)
+    const size_t first = round == 1 ? stepped : 0;  // round 1's first candidates have stepped
     for (size_t k = first; k < runs.size(); ++k)
       if (active(k)) stepping.push_back(k);
     common::run_with_idle_threads(idle, stepping.size(),
@@ -169,7 +193,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     } else {
       c.term = terms[k];
       c.g_abd = runs[lead].initial_g_abd();
-      c.started = false;
+      c.not_run = never;
       c.dropped = true;
     }
     out.candidates.push_back(c);

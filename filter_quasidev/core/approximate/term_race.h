@@ -5,7 +5,13 @@
 // that step leaves less than δ_ABD of the start's G_ABD, the others could remove no meaningful
 // share more (the last rule below) and never start (on the plane with bumps of 0.5 AE, 12k faces,
 // one angle-defect factorisation of each other term cost more than the curve term's whole run by
-// CG: 152 → 65 ms, the same result). While the leader (least G_ABD; ties: least mean displacement)
+// CG: 152 → 65 ms, the same result). The angle-defect rows step next, and both, the rows with the
+// curve targets, does not start where those targets' first step removed nothing and the rows'
+// removed some: adding targets that only raised G_ABD to rows that lower it (the draped garments'
+// panels, whose Gauss images fit no curve within 18–27°) never won on the robustness sweep, and
+// its first iteration cost the shared 4-panel tee 12 % of its engine time. Where neither removed
+// anything, both still runs (on the spot cut into patches, at --defect-weight 0.3, it alone removes
+// 26 %). While the leader (least G_ABD; ties: least mean displacement)
 // still runs: after kNothingRounds rounds any candidate that has removed nothing stops, once the
 // leader has removed δ_ABD of the start's G_ABD (the curve targets on draped garments: a third
 // round of theirs took the shared 4-panel tee from 99 to 109 ms, medians of 11 runs at the default
@@ -60,8 +66,8 @@ struct CandidateFigures {
   double g_abd = 0;      // its best G_ABD
   double mean_disp = 0;  // of its best iterate
   bool kept = false;
-  bool dropped = false;  // stopped by the trial, not by its own stop rule
-  bool started = true;   // false: never run, the first candidate having left less than δ_ABD
+  bool dropped = false;         // stopped by the trial, not by its own stop rule
+  NotRun not_run = NotRun::No;  // why it never started, if it did not
 };
 
 // A run's figures as a candidate (kept, dropped and started left to the caller).
