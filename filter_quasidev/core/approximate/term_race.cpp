@@ -71,8 +71,8 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   };
   // Round 1 begins with the first candidate alone (the curve term, whose step costs least): where
   // it leaves less than δ_ABD of the start's G_ABD, the others never start (the last rule below).
-  // The angle-defect rows step next where both follows them, which starts only where its parts'
-  // first steps leave the question open (term_race.h).
+  // Where it removed nothing, the angle-defect rows step next, alone too, and both starts only
+  // where they removed nothing either (term_race.h); elsewhere they step at once in the loop.
   std::vector<Deformation> runs;
   runs.push_back(start(terms.front()));
   runs.front().step();
@@ -87,15 +87,19 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   const auto removed_some = [](const Deformation* run) {
     return run->best_g_abd() < run->initial_g_abd();
   };
-  for (size_t k = 1; k < terms.size() && never == NotRun::No; ++k) {
+  const bool targets_removed_nothing = [&] {
     const Deformation* curve = stepped_run(Term::Curve);
-    const Deformation* defect = stepped_run(Term::Defect);
-    if (terms[k] == Term::Both && curve && defect && !removed_some(curve) && removed_some(defect)) {
+    return curve && !removed_some(curve);
+  }();
+  for (size_t k = 1; k < terms.size() && never == NotRun::No; ++k) {
+    const Deformation* rows = stepped_run(Term::Defect);
+    if (terms[k] == Term::Both && targets_removed_nothing && rows && removed_some(rows)) {
       never = NotRun::TargetsRemovedNothing;
       break;
     }
     runs.push_back(start(terms[k]));
-    if (k + 1 < terms.size() && terms[k + 1] == Term::Both && stepped == k) {
+    if (targets_removed_nothing && k + 1 < terms.size() && terms[k + 1] == Term::Both &&
+        stepped == k) {
       runs.back().step();
       stepped = runs.size();
     }
