@@ -75,11 +75,13 @@ std::string candidates_text(const PatchReport& p) {
          ",";
   }
   if (!s.empty()) s.pop_back();
-  if (why == NotRun::LeftLittle)
-    s += ";" + not_run + " not run: the first step of " + term_name(p.candidates.front().term) +
-         " left less than δ_ABD of G_ABD";
-  if (why == NotRun::TargetsRemovedNothing)
-    s += ";" + not_run + " not run: the first step of curve removed nothing, that of defect some";
+  if (why != NotRun::No)
+    s += ";" + not_run + " not run: " +
+         (why == NotRun::LeftLittle
+              ? "the first step of " + std::string(term_name(p.candidates.front().term)) +
+                    " left less than δ_ABD of G_ABD"
+              : std::string("the first step of curve removed nothing, "
+                            "that of defect some"));
   return s;
 }
 

@@ -78,22 +78,17 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   runs.front().step();
   size_t stepped = 1;  // the candidates whose step of round 1 is done
   NotRun never = spent(runs.front()) ? NotRun::LeftLittle : NotRun::No;  // the rest's, if any
-  // The run of term t once its step of round 1 is done, else null.
-  const auto stepped_run = [&](Term t) -> const Deformation* {
+  const auto removed = [&](size_t k) { return runs[k].initial_g_abd() - runs[k].best_g_abd(); };
+  // Whether term t's step of round 1 is done and removed some: 1, 0, or -1 when not yet done.
+  const auto first_step_removed = [&](Term t) {
     const auto end = terms.begin() + static_cast<long>(stepped);
     const auto at = std::find(terms.begin(), end, t);
-    return at == end ? nullptr : &runs[static_cast<size_t>(at - terms.begin())];
+    return at == end ? -1 : removed(static_cast<size_t>(at - terms.begin())) > 0 ? 1 : 0;
   };
-  const auto removed_some = [](const Deformation* run) {
-    return run->best_g_abd() < run->initial_g_abd();
-  };
-  const bool targets_removed_nothing = [&] {
-    const Deformation* curve = stepped_run(Term::Curve);
-    return curve && !removed_some(curve);
-  }();
+  const bool targets_removed_nothing = first_step_removed(Term::Curve) == 0;
   for (size_t k = 1; k < terms.size() && never == NotRun::No; ++k) {
-    const Deformation* rows = stepped_run(Term::Defect);
-    if (terms[k] == Term::Both && targets_removed_nothing && rows && removed_some(rows)) {
+    if (terms[k] == Term::Both && targets_removed_nothing &&
+        first_step_removed(Term::Defect) == 1) {
       never = NotRun::TargetsRemovedNothing;
       break;
     }
@@ -162,7 +157,6 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     // The rules of term_race.h.
     const size_t lead = leader(runs, dropped);
     const bool lead_runs = runs[lead].running();
-    const auto removed = [&](size_t k) { return runs[k].initial_g_abd() - runs[k].best_g_abd(); };
     const double meaningful_g = meaningful * runs[lead].initial_g_abd();
     const bool trial = round < drop_worst_after;  // only what removed nothing is behind yet
     const auto behind = [&](size_t k) {
