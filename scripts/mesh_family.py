@@ -10,6 +10,9 @@ nobody looked at. Every member is deterministic for its parameters and seed.
   wavelength  the bumps' width (sigma) as a fraction of the base's size along v
   jitter      each interior vertex moved by a random vector of this length, in AE
   resolution  grid density: 1 = 64 x 24 cells (about 3k triangles), 2 = twice as fine each way
+  irregular   0 = the regular grid; above 0 (below 0.25) each interior vertex slides within the
+              surface by up to this fraction of a cell each way and every cell takes a random
+              diagonal, so the triangles vary in shape and size while the surface stays smooth
 
 Tube (for the benchmark family, scripts/bench_family.py) is the same idea at a given face count
 and in units of the radius: a cylinder, cone or curved sheet of a chosen length, cell aspect and
@@ -45,17 +48,19 @@ class Member:
     jitter: float      # AE
     resolution: int = 1
     seed: int = 0
+    irregular: float = 0.0  # fraction of a cell
 
     @property
     def name(self) -> str:
         return (f"{self.base}_a{self.amplitude:g}_w{self.wavelength:g}_j{self.jitter:g}"
-                f"_r{self.resolution}_s{self.seed}")
+                f"_r{self.resolution}_s{self.seed}" + (f"_i{self.irregular:g}" if self.irregular else ""))
 
     @classmethod
     def from_name(cls, name: str) -> "Member":
         """The member whose name is `name` (the inverse of .name)."""
-        base, a, w, j, r, s = name.split("_")
-        return cls(base, float(a[1:]), float(w[1:]), float(j[1:]), int(r[1:]), int(s[1:]))
+        base, a, w, j, r, s, *i = name.split("_")
+        return cls(base, float(a[1:]), float(w[1:]), float(j[1:]), int(r[1:]), int(s[1:]),
+                   float(i[0][1:]) if i else 0.0)
 
     @property
     def smooth(self) -> bool:
@@ -82,17 +87,34 @@ def _surface(base: str, u: np.ndarray, v: np.ndarray) -> np.ndarray:
     raise ValueError(f"unknown base {base!r}; one of {', '.join(BASES)}")
 
 
-def _grid_faces(nu: int, nv: int, periodic: bool) -> np.ndarray:
+def _grid_faces(nu: int, nv: int, periodic: bool, flips=None) -> np.ndarray:
     """Triangles of an nu x nv grid of vertices (periodic in u: nu columns of cells, else nu - 1),
-    diagonals alternating like a checkerboard, counter-clockwise in (u, v)."""
+    counter-clockwise in (u, v). Each cell's diagonal alternates like a checkerboard, or, given
+    flips (one bool per cell, row by row), follows them."""
     cols = nu if periodic else nu - 1
     faces = []
     for j in range(nv - 1):
         for i in range(cols):
             a, b = j * nu + i, j * nu + (i + 1) % nu
             c, d = b + nu, a + nu
-            faces += [(a, b, c), (a, c, d)] if (i + j) % 2 == 0 else [(a, b, d), (b, c, d)]
+            first = (i + j) % 2 == 0 if flips is None else flips[j * cols + i]
+            faces += [(a, b, c), (a, c, d)] if first else [(a, b, d), (b, c, d)]
     return np.array(faces, dtype=np.int64)
+
+
+def _slide(u: np.ndarray, v: np.ndarray, nu: int, nv: int, periodic: bool, fraction: float,
+           rng) -> tuple[np.ndarray, np.ndarray]:
+    """Each interior grid vertex moved in (u, v) by up to `fraction` of a cell each way; the
+    boundary stays put. Below a quarter of a cell no triangle folds: a cell's corner is 1/sqrt(2)
+    of a cell from its diagonal, and the three corners together close at most 2 sqrt(2) times
+    the fraction."""
+    if not 0 <= fraction < 0.25:
+        raise ValueError(f"irregular must be in [0, 0.25), not {fraction}")
+    du, dv = (1 / nu if periodic else 1 / (nu - 1)), 1 / (nv - 1)
+    off_u, off_v = rng.uniform(-fraction, fraction, (2, len(u)))
+    inner_v = (v > 0) & (v < 1)
+    inner_u = inner_v & (periodic | ((u > 0) & (u < 1)))
+    return u + np.where(inner_u, off_u * du, 0), v + np.where(inner_v, off_v * dv, 0)
 
 
 def _normals(surface, u: np.ndarray, v: np.ndarray, h: float = 1e-6) -> np.ndarray:
@@ -135,7 +157,12 @@ def make(m: Member) -> tuple[np.ndarray, np.ndarray]:
     uu = np.arange(nu) / nu if periodic else np.linspace(0, 1, nu)
     u, v = np.meshgrid(uu, np.linspace(0, 1, nv))
     u, v = u.ravel(), v.ravel()
-    F = _grid_faces(nu, nv, periodic)
+    flips = None
+    if m.irregular > 0:  # its own generator, so the bumps and jitter of a seed stay the same
+        shuffle = np.random.default_rng([m.seed, 1])
+        u, v = _slide(u, v, nu, nv, periodic, m.irregular, shuffle)
+        flips = shuffle.uniform(size=(nu if periodic else nu - 1) * (nv - 1)) < 0.5
+    F = _grid_faces(nu, nv, periodic, flips)
     V = _surface(m.base, u, v)
     ae = average_edge(V, F)
     rng = np.random.default_rng(m.seed)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Robustness sweep: `quasidev approximate` on a generated family (scripts/mesh_family.py).
 
-For every member (base x bump amplitude x wavelength x jitter x resolution x seed) it runs each
+For every member (base x bump amplitude x wavelength x jitter x resolution x seed x irregular
+triangulation) it runs each
 developability term (--terms, default curve, defect, both, auto) from the same input with the same
 options, reads the JSON report, and tabulates the G_ABD reduction, the iterations and the
 largest move (AE); its JSON also keeps each run's stop reason, engine time and factorisations.
@@ -12,7 +13,8 @@ Writes OUT/robustness_sweep.md and OUT/robustness_sweep.json; exit status 1 when
 
 Usage: .venv/bin/python scripts/robustness_sweep.py [--quick] [--out DIR] [--quasidev PATH]
          [--bases ...] [--amplitudes ...] [--wavelengths ...] [--jitters ...]
-         [--resolutions ...] [--seeds ...] [--terms ...] [-- extra quasidev options]
+         [--resolutions ...] [--seeds ...] [--irregular ...] [--terms ...]
+         [-- extra quasidev options]
 """
 from __future__ import annotations
 
@@ -36,9 +38,9 @@ import ply_columns  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_QUASIDEV = os.path.join(ROOT, "build", "bin", "quasidev")
 FULL = dict(bases=list(mesh_family.BASES), amplitudes=[0.5, 1, 2, 4], wavelengths=[0.08, 0.16],
-            jitters=[0, 0.05, 0.2], resolutions=[1, 2], seeds=[1])  # 240 members
+            jitters=[0, 0.05, 0.2], resolutions=[1, 2], seeds=[1], irregular=[0])  # 240 members
 QUICK = dict(bases=list(mesh_family.BASES), amplitudes=[1, 3], wavelengths=[0.12],
-             jitters=[0, 0.05, 0.2], resolutions=[1], seeds=[1])
+             jitters=[0, 0.05, 0.2], resolutions=[1], seeds=[1], irregular=[0])
 SINGLE = ("curve", "defect", "both")
 
 
@@ -64,6 +66,7 @@ def run(quasidev: str, mesh: str, term: str, extra: list[str], tmp: str, V, F) -
     p = r["patches"][0]
     return {"reduction": r["abd_reduction"], "iterations": p["iterations"],
             "stop": p["stop_reason"], "max_move_ae": r["total_after"]["max_disp"] / r["average_edge"],
+            "mean_move_ae": r["total_after"]["mean_disp"] / r["average_edge"],
             "chosen": p["developability"], "time_ms": r["time_ms"],
             "factorizations": r["factorizations"],
             "flipped": flipped_faces(V, positions(out), F)}
@@ -139,9 +142,8 @@ def main() -> int:
     args.extra = extra
     grid = QUICK if args.quick else FULL
     axes = {k: getattr(args, k) or grid[k] for k in FULL}
-    members = [mesh_family.Member(b, a, w, j, int(r), int(s)) for b, a, w, j, r, s in itertools.product(
-        axes["bases"], axes["amplitudes"], axes["wavelengths"], axes["jitters"], axes["resolutions"],
-        axes["seeds"])]
+    members = [mesh_family.Member(b, a, w, j, int(r), int(s), i)
+               for b, a, w, j, r, s, i in itertools.product(*(axes[k] for k in FULL))]
     rows = sweep(members, args.terms, args.quasidev, args.extra, args.jobs)
     lines = table(rows, args.terms, args.margin, args.smooth_floor)
     failed = [r for r in rows if verdict(r, args.margin, args.smooth_floor)]
