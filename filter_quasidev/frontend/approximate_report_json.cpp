@@ -48,6 +48,7 @@ Json candidate(const approximate::CandidateReport& c) {
           {"iterations", c.iterations},
           {"abd_reduction", c.abd_reduction},
           {"mean_disp", c.mean_disp},
+          {"defect_weight_factor", c.weight_factor},
           {"kept", c.kept},
           {"dropped", c.dropped},
           {"started", c.started()}};

@@ -6,7 +6,10 @@
 // each compiles it against its own generation.
 #pragma once
 
+#include <charconv>
+#include <cstdlib>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "declared_parameters.h"
@@ -135,6 +138,22 @@ inline void add_parameters(const FilterSpec& f, const CMeshO& m, RichParameterLi
   }
 }
 
+// A RichFloat's value as the user typed it. It holds a float in MeshLab 2020.09 and in the 2025.07
+// application (a double in pymeshlab): 0.03 arrives as 0.0299999993. The shortest decimal that
+// gives the same float is the text the user typed, so read back through it the value is the
+// command's for the same text (after 30 iterations of auto's stronger angle-defect rows, runs at
+// 0.03 and at 0.0299999993 part by 1e-4 of the diagonal).
+template <typename Real>
+double as_typed(Real value) {
+  if constexpr (std::is_same_v<Real, float>) {
+    char text[32];
+    *std::to_chars(text, text + sizeof text - 1, value).ptr = '\0';
+    return std::strtod(text, nullptr);
+  } else {
+    return static_cast<double>(value);
+  }
+}
+
 // The user's values by name, for the filter's parameters present in `params`.
 inline ParamValues read_values(const FilterSpec& f, const CMeshO& m,
                                const RichParameterList& params) {
@@ -145,7 +164,7 @@ inline ParamValues read_values(const FilterSpec& f, const CMeshO& m,
     if (!params.hasParameter(name)) continue;
     switch (p.type) {
       case Type::Real:
-        values[p.name] = static_cast<double>(params.getFloat(name));
+        values[p.name] = as_typed(params.getFloat(name));
         break;
       case Type::Integer:
         values[p.name] = static_cast<double>(params.getInt(name));

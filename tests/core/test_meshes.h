@@ -11,6 +11,17 @@ namespace qd::test {
 using namespace qd::approximate;
 using namespace qd::common;
 
+// The open cylinder of bumpy_cylinder() at angle t and height z.
+inline Vec3 cylinder_point(double t, double z, double bump, double cone, double h) {
+  const double d2 = std::pow(std::remainder(t - 1.0, 2 * M_PI), 2) + std::pow(z - h / 2, 2);
+  const double r =
+      1.0 + cone * z + bump * std::exp(-d2 / 0.18) +
+      0.5 * bump *
+          std::exp(-(std::pow(std::remainder(t + 2.0, 2 * M_PI), 2) + std::pow(z - h / 3, 2)) /
+                   0.1);
+  return Vec3(r * std::cos(t), r * std::sin(t), z);
+}
+
 // Open cylinder (axis z, radius 1, height h) of nu×nv quads split into triangles, with a smooth
 // radial Gaussian bump of amplitude `bump` (0 = exactly developable up to discretisation) and an
 // optional cone factor (radius grows by `cone`·z). Patch id = 0, or by angular sector when
@@ -18,14 +29,7 @@ using namespace qd::common;
 inline Problem bumpy_cylinder(int nu, int nv, double bump, double cone = 0.0, int sectors = 1,
                               double h = 2.0) {
   const GridMesh grid = grid_mesh(nu, nv, true, [&](int i, int j) {
-    const double t = 2 * M_PI * i / nu, z = h * j / nv;
-    const double d2 = std::pow(std::remainder(t - 1.0, 2 * M_PI), 2) + std::pow(z - h / 2, 2);
-    const double r =
-        1.0 + cone * z + bump * std::exp(-d2 / 0.18) +
-        0.5 * bump *
-            std::exp(-(std::pow(std::remainder(t + 2.0, 2 * M_PI), 2) + std::pow(z - h / 3, 2)) /
-                     0.1);
-    return Vec3(r * std::cos(t), r * std::sin(t), z);
+    return cylinder_point(2 * M_PI * i / nu, h * j / nv, bump, cone, h);
   });
   Problem p;
   p.V = grid.V;
@@ -38,6 +42,23 @@ inline Problem bumpy_cylinder(int nu, int nv, double bump, double cone = 0.0, in
     }
   if (sectors == 1) p.patch.clear();
   p.params.tolerance = 1.0;  // model units: generous
+  return p;
+}
+
+// The same surface (height 2, no cone, one patch) with every interior grid vertex slid within it
+// by up to `slide` of a cell each way (a fixed pseudo-random pattern), so that no edge follows a
+// ruling: the curve targets' face normals are then out of reach (docs/robustness.md).
+inline Problem irregular_cylinder(int nu, int nv, double bump, double slide) {
+  const auto jitter = [](int i, int j, int k) {  // in [−1, 1]
+    return std::sin(12.9898 * i + 78.233 * j + 37.719 * k) * 0.5 + std::sin(3.1 * i * j + k);
+  };
+  Problem p = bumpy_cylinder(nu, nv, bump);
+  const GridMesh grid = grid_mesh(nu, nv, true, [&](int i, int j) {
+    const double s = j == 0 || j == nv ? 0.0 : slide / 1.5;
+    return cylinder_point(2 * M_PI * (i + s * jitter(i, j, 0)) / nu,
+                          2.0 * (j + s * jitter(i, j, 1)) / nv, bump, 0.0, 2.0);
+  });
+  p.V = grid.V;
   return p;
 }
 

@@ -96,7 +96,8 @@ class Deformation {
   int iterations() const { return out_.iterations_run; }
   double initial_g_abd() const { return initial_g_; }
   double best_g_abd() const { return best_.g_abd; }
-  double best_mean_displacement() const { return best_.mean_disp; }
+  const Figures& best() const { return best_; }     // the best iterate's figures
+  const Figures& current() const { return last_; }  // the last accepted iterate's
   // The best G_ABD after each accepted iteration ([0]: the input's).
   const std::vector<double>& best_track() const { return best_track_; }
   // From the next iteration on, fits the curve again and goes on with re-fitted targets to a

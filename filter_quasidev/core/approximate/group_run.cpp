@@ -118,6 +118,47 @@ void curve_then_defect(GroupRun& run, const Params& params, double ae, size_t th
   run.race = {curve, defect};
 }
 
+// Whether an iterate has moved further than `pick`, on average or at most.
+bool moved_further(const Figures& iterate, const Figures& pick) {
+  return iterate.mean_disp > pick.mean_disp || iterate.max_disp > pick.max_disp;
+}
+
+// Auto's stronger angle-defect rows after its pick (kStrongerRowsFactor): kept where they dominate.
+void try_stronger_rows(GroupRun& run, const Params& params, double ae, size_t threads,
+                       const std::function<void(double)>& progress) {
+  const bool targets = std::any_of(run.fits.begin(), run.fits.end(), [](const PatchFit& p) {
+    return p.reason == TermReason::Measured && (p.term == Term::Curve || p.term == Term::Both);
+  });
+  if (!targets || run.outcome.history.empty()) return;      // (an unmoved pick: nothing moves less)
+  const Figures pick = run.outcome.history.back().figures;  // its best iterate's
+  // Less than δ_ABD of the start's G_ABD left: nothing could remove a meaningful share more.
+  if (pick.g_abd <= params.stop_abd / 100 * run.initial_g) return;
+  const GroupMesh& g = run.group;
+  Params stronger = params;
+  stronger.defect_weight *= kStrongerRowsFactor;
+  std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);
+  SystemLayouts layouts(g, stronger, ae);
+  Deformation d = start_run(g, fits, layouts, stronger, threads);
+  while (d.step() && !moved_further(d.current(), pick))
+    progress(static_cast<double>(d.iterations()) / params.max_iter);
+  const bool dominates = d.best().g_abd < pick.g_abd && !moved_further(d.best(), pick);
+  CandidateFigures c = candidate_figures(Term::Defect, d);
+  c.weight_factor = kStrongerRowsFactor;
+  c.kept = dominates;
+  c.dropped = d.running();  // stopped here, having moved further than the pick
+  DeformOutcome out = d.finish();
+  if (dominates) {
+    for (CandidateFigures& other : run.race) other.kept = false;
+    out.times += run.outcome.times;
+    run.outcome = std::move(out);
+    run.fits = std::move(fits);
+    run.targets = group_targets(g, run.fits);
+  } else {
+    run.outcome.times += out.times;
+  }
+  run.race.push_back(c);
+}
+
 }  // namespace
 
 GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<int>& faces,
@@ -141,6 +182,10 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
   }
   const GroupMesh& g = run.group;
   const size_t threads = static_cast<size_t>(params.threads);
+  double reported = 0;  // the progress, never back: the stronger rows start again from 0
+  const auto forward = [&](double fraction) {
+    if (progress && fraction > reported) progress(reported = fraction);
+  };
   double step1_ms = 0;
   std::vector<Term> candidates;  // of the race, when a patch's term is to be measured
   {
@@ -154,7 +199,8 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
     run.outcome.stop_detail = run.fits.front().skipped;
     run.outcome.stop = run.outcome.stop_detail.empty() ? PatchStop::Planar : PatchStop::Unfitted;
   } else if (candidates.size() > 1) {
-    race(run, candidates, params, in.ae, threads, idle, progress);
+    race(run, candidates, params, in.ae, threads, idle, forward);
+    try_stronger_rows(run, params, in.ae, threads, forward);
   } else if (candidates == std::vector<Term>{Term::Curve}) {  // by kMaxDefectRaceVertices
     curve_then_defect(run, params, in.ae, threads, progress);
   } else {

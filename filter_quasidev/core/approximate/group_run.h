@@ -39,6 +39,22 @@ struct GroupRun {
   double time_ms = 0;
 };
 
+// Developability::Auto, where the race picked curve targets (curve or both) for a patch of the
+// group and left more than δ_ABD of the start's G_ABD (less, and nothing could remove a meaningful
+// share more): the angle-defect rows alone at this many times the defect weight run from the start,
+// and the group keeps them only where they dominate the pick: less G_ABD left, and the vertices
+// moved no further, on average or at most. No trade-off is made for the user (--defect-weight
+// moves along the curve); the run stops as soon as an iterate has moved further than the pick's
+// result. Where triangles do not follow the rulings (an irregular triangulation of a smooth
+// cylinder, cone or lampshade) no face normal can reach the curve targets, while the rows, which
+// only ask each vertex's angles to sum to 2π, can: on such members of scripts/mesh_family.py
+// (`irregular`) the pick removed 52–99 % where these rows remove 85–100 % and move less. Where the
+// pick is the rows at the given weight they are not tried: a stronger pull removes more by moving
+// further (the anchors' share of the least-squares energy grows with the weight), which is the
+// user's trade-off to make. Not above kMaxDefectRaceVertices, where the rows are not raced for
+// their cost. Measurements behind the factor: docs/robustness.md.
+constexpr double kStrongerRowsFactor = 100;
+
 // The terms decided for each patch id by an earlier pass's race (Developability::Auto).
 using DecidedTerms = std::map<int, Term>;
 

@@ -67,11 +67,16 @@ std::string candidates_text(const PatchReport& p) {
       why = c.not_run;
       continue;
     }
+    const bool stronger = c.weight_factor != 1;  // auto's stronger rows (group_run.h)
     s += std::string(" ") + term_name(c.term) +
+         (stronger ? format_text(" ×%g weight", c.weight_factor) : std::string()) +
          format_text(" −%.1f%% in %d it.", c.abd_reduction, c.iterations) +
-         (c.kept      ? " (kept)"
-          : c.dropped ? " (left after the trial)"
-                      : "") +
+         (c.kept && stronger ? " (kept: less G_ABD left, moved less)"
+          : c.kept           ? " (kept)"
+          : stronger         ? (c.dropped ? " (stopped: moved further than the pick)"
+                                          : " (not kept: left more G_ABD than the pick)")
+          : c.dropped        ? " (left after the trial)"
+                             : "") +
          ",";
   }
   if (!s.empty()) s.pop_back();

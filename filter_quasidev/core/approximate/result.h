@@ -79,6 +79,7 @@ struct CandidateReport {
   bool kept = false;            // the one whose result the patch keeps
   bool dropped = false;         // stopped after the trial, not by its own stop rule
   NotRun not_run = NotRun::No;  // why it never ran (term_race.h), if it did not
+  double weight_factor = 1;     // of the defect weight (auto's stronger rows: group_run.h)
   bool started() const { return not_run == NotRun::No; }
 };
 

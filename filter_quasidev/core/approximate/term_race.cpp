@@ -10,8 +10,7 @@ namespace {
 // a leads b: less G_ABD, or as much and less mean displacement.
 bool leads(const Deformation& a, const Deformation& b) {
   return a.best_g_abd() < b.best_g_abd() ||
-         (a.best_g_abd() == b.best_g_abd() &&
-          a.best_mean_displacement() < b.best_mean_displacement());
+         (a.best_g_abd() == b.best_g_abd() && a.best().mean_disp < b.best().mean_disp);
 }
 
 // The leading candidate among those not dropped (the first on a tie).
@@ -55,7 +54,7 @@ CandidateFigures candidate_figures(Term term, const Deformation& run) {
   c.term = term;
   c.iterations = run.iterations();
   c.g_abd = run.best_g_abd();
-  c.mean_disp = run.best_mean_displacement();
+  c.mean_disp = run.best().mean_disp;
   return c;
 }
 

@@ -69,6 +69,7 @@ struct CandidateFigures {
   bool kept = false;
   bool dropped = false;         // stopped by the trial, not by its own stop rule
   NotRun not_run = NotRun::No;  // why it never started, if it did not
+  double weight_factor = 1;     // of the defect weight (auto's stronger rows: group_run.h)
 };
 
 // A run's figures as a candidate (kept, dropped and started left to the caller).
