@@ -77,6 +77,25 @@ TEST(ReportText, MeasuredChoiceNamesEveryCandidate) {
   EXPECT_NE(text.find("(kept)"), std::string::npos) << text;
 }
 
+TEST(ReportText, StrongerRowsSayWhyTheyWereKeptOrStopped) {
+  PatchReport p;
+  p.developability_reason = TermChoice::AutoMeasured;
+  const auto text = [&](double removed, bool kept, bool dropped, bool further = false) {
+    p.candidates = {{Term::Curve, 4, 50.0, 0.1, !kept, false},
+                    {Term::Defect, 3, removed, 0.05, kept, dropped, NotRun::No, 100, further}};
+    return term_choice_text(p);
+  };
+  EXPECT_NE(text(90, true, false).find("defect ×100 weight −90.0% in 3 it. (kept: less G_ABD left"),
+            std::string::npos)
+      << text(90, true, false);
+  EXPECT_NE(text(0, false, true).find("(stopped: removed nothing)"), std::string::npos);
+  EXPECT_NE(text(20, false, true, true).find("(stopped: moved further than the pick)"),
+            std::string::npos);
+  EXPECT_NE(text(20, false, false).find("(not kept: left more G_ABD than the pick)"),
+            std::string::npos);
+  EXPECT_NE(text(20, false, false).find("curve −50.0% in 4 it. (kept)"), std::string::npos);
+}
+
 TEST(ReportText, StopsOfSeveralPassesNameEachPassInOrder) {
   std::vector<PassStop> stops(3);
   stops[0].pass = SolvePass::AllAtOnce;

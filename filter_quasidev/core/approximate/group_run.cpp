@@ -139,13 +139,18 @@ void try_stronger_rows(GroupRun& run, const Params& params, double ae, size_t th
   std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);
   SystemLayouts layouts(g, stronger, ae);
   Deformation d = start_run(g, fits, layouts, stronger, threads);
-  while (d.step() && !moved_further(d.current(), pick))
+  // As in the race (term_race.h), rows that removed nothing in kNothingRounds iterations stop.
+  const auto removed_nothing = [&] {
+    return d.iterations() >= kNothingRounds && d.best_g_abd() >= d.initial_g_abd();
+  };
+  while (d.step() && !moved_further(d.current(), pick) && !removed_nothing())
     progress(static_cast<double>(d.iterations()) / params.max_iter);
   const bool dominates = d.best().g_abd < pick.g_abd && !moved_further(d.best(), pick);
   CandidateFigures c = candidate_figures(Term::Defect, d);
   c.weight_factor = kStrongerRowsFactor;
   c.kept = dominates;
-  c.dropped = d.running();  // stopped here, having moved further than the pick
+  c.dropped = d.running();  // stopped here: moved further than the pick, or removed nothing
+  c.moved_further = c.dropped && moved_further(d.current(), pick);
   DeformOutcome out = d.finish();
   if (dominates) {
     for (CandidateFigures& other : run.race) other.kept = false;

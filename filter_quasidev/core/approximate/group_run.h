@@ -45,9 +45,10 @@ struct GroupRun {
 // and the group keeps them only where they dominate the pick: less G_ABD left, and the vertices
 // moved no further, on average or at most. No trade-off is made for the user (--defect-weight
 // moves along the curve); the run stops as soon as an iterate has moved further than the pick's
-// result. Where triangles do not follow the rulings (an irregular triangulation of a smooth
-// cylinder, cone or lampshade) no face normal can reach the curve targets, while the rows, which
-// only ask each vertex's angles to sum to 2π, can: on such members of scripts/mesh_family.py
+// result, or, as a candidate of the race does, once kNothingRounds iterations removed nothing.
+// Where triangles do not follow the rulings (an irregular triangulation of a smooth cylinder, cone
+// or lampshade) no face normal can reach the curve targets, while the rows, which only ask each
+// vertex's angles to sum to 2π, can: on such members of scripts/mesh_family.py
 // (`irregular`) the pick removed 52–99 % where these rows remove 85–100 % and move less. Where the
 // pick is the rows at the given weight they are not tried: a stronger pull removes more by moving
 // further (the anchors' share of the least-squares energy grows with the weight), which is the

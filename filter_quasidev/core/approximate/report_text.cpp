@@ -56,6 +56,16 @@ const char* pass_name(SolvePass pass) {
 
 namespace {
 
+// How a candidate ended, for candidates_text: " (kept)", " (left after the trial)" or nothing;
+// for auto's stronger rows (group_run.h) why they were kept, stopped or not kept.
+std::string outcome_text(const CandidateReport& c) {
+  if (c.weight_factor == 1) return c.kept ? " (kept)" : c.dropped ? " (left after the trial)" : "";
+  if (c.kept) return " (kept: less G_ABD left, moved less)";
+  if (!c.dropped) return " (not kept: left more G_ABD than the pick)";
+  return c.moved_further ? " (stopped: moved further than the pick)"
+                         : " (stopped: removed nothing)";
+}
+
 // " curve −0.0% in 1 it. (left after the trial), defect …" for a patch's candidates.
 std::string candidates_text(const PatchReport& p) {
   std::string s;
@@ -67,17 +77,9 @@ std::string candidates_text(const PatchReport& p) {
       why = c.not_run;
       continue;
     }
-    const bool stronger = c.weight_factor != 1;  // auto's stronger rows (group_run.h)
     s += std::string(" ") + term_name(c.term) +
-         (stronger ? format_text(" ×%g weight", c.weight_factor) : std::string()) +
-         format_text(" −%.1f%% in %d it.", c.abd_reduction, c.iterations) +
-         (c.kept && stronger ? " (kept: less G_ABD left, moved less)"
-          : c.kept           ? " (kept)"
-          : stronger         ? (c.dropped ? " (stopped: moved further than the pick)"
-                                          : " (not kept: left more G_ABD than the pick)")
-          : c.dropped        ? " (left after the trial)"
-                             : "") +
-         ",";
+         (c.weight_factor != 1 ? format_text(" ×%g weight", c.weight_factor) : std::string()) +
+         format_text(" −%.1f%% in %d it.", c.abd_reduction, c.iterations) + outcome_text(c) + ",";
   }
   if (!s.empty()) s.pop_back();
   if (why != NotRun::No)

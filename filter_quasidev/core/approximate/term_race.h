@@ -70,6 +70,7 @@ struct CandidateFigures {
   bool dropped = false;         // stopped by the trial, not by its own stop rule
   NotRun not_run = NotRun::No;  // why it never started, if it did not
   double weight_factor = 1;     // of the defect weight (auto's stronger rows: group_run.h)
+  bool moved_further = false;   // the stronger rows: dropped having moved further than the pick
 };
 
 // A run's figures as a candidate (kept, dropped and started left to the caller).
