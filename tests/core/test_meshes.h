@@ -49,7 +49,7 @@ inline Problem bumpy_cylinder(int nu, int nv, double bump, double cone = 0.0, in
 // by up to `slide` of a cell each way (a fixed pseudo-random pattern), so that no edge follows a
 // ruling: the curve targets' face normals are then out of reach (docs/robustness.md).
 inline Problem irregular_cylinder(int nu, int nv, double bump, double slide) {
-  const auto jitter = [](int i, int j, int k) {  // in [−1, 1]
+  const auto jitter = [](int i, int j, int k) {  // in [−1.5, 1.5], hence slide / 1.5 below
     return std::sin(12.9898 * i + 78.233 * j + 37.719 * k) * 0.5 + std::sin(3.1 * i * j + k);
   };
   Problem p = bumpy_cylinder(nu, nv, bump);
