@@ -51,7 +51,8 @@ Json candidate(const approximate::CandidateReport& c) {
           {"defect_weight_factor", c.weight_factor},
           {"kept", c.kept},
           {"dropped", c.dropped},
-          {"started", c.started()}};
+          {"started", c.started()},
+          {"started_late", c.late}};
 }
 
 Json patch(const approximate::PatchReport& p, double average_edge) {

@@ -244,10 +244,13 @@ TEST(AngleDefect, AutoStopsACandidateThatRemovesNothing) {
   EXPECT_LT(kNothingRounds, std::lround(kDropWorstShare * p.params.max_iter));
 }
 
-// Both, the angle-defect rows with the curve targets, does not start where those targets' first
-// step removed nothing and the rows' first step removed some: the log says why, and the patch
-// keeps a run of the others, exactly as that term alone gives it.
-TEST(AngleDefect, AutoStartsNoBothWhereTheCurveTargetsFirstStepRemovesNothing) {
+// Both, the angle-defect rows with the curve targets, does not start with them where those
+// targets' first step removed nothing and the rows' first step removed some: where the rows then
+// run to maxIter it never starts, the log says why, and the patch keeps a run of the others,
+// exactly as that term alone gives it. Where the rows stop short of maxIter it starts then, from
+// the same start, is judged by its own steps (here: it removes nothing, and stops after
+// kNothingRounds), and the log says it started late.
+TEST(AngleDefect, AutoStartsBothOnlyWhenTheRowsStopShortWhereTheTargetsFirstStepRemovesNothing) {
   Problem p = wrinkled_sheet(24, 0.08);
   p.params.tolerance = 1.0;
   p.params.segment_first = SegmentFirst::Never;
@@ -259,23 +262,38 @@ TEST(AngleDefect, AutoStartsNoBothWhereTheCurveTargetsFirstStepRemovesNothing) {
   };
   ASSERT_LE(alone(Developability::Curve, 1).abd_reduction, 0.0);  // its first step: nothing
   ASSERT_GT(alone(Developability::Defect, 1).abd_reduction, 0.0);
-  const Result r = approximate::approximate(p);
-  const PatchReport& patch = r.patches[0];
-  ASSERT_EQ(patch.candidates.size(), 3u);  // the rows won: no stronger rows (group_run.h)
-  for (const CandidateReport& c : patch.candidates) {
-    EXPECT_EQ(c.started(), c.term != Term::Both) << term_name(c.term);
-    if (c.term == Term::Both) {
-      EXPECT_EQ(c.not_run, NotRun::TargetsRemovedNothing);
-      EXPECT_EQ(c.iterations, 0);
-      EXPECT_FALSE(c.kept);
+  const Result rows = alone(Developability::Defect, p.params.max_iter);
+  const PassStop stop = rows.patches[0].stops.back();
+  ASSERT_EQ(stop.reason, PatchStop::Plateau);  // short of maxIter
+  const int short_iter = stop.iterations_run;
+  for (const int max_iter : {short_iter - 1, p.params.max_iter}) {
+    Problem q = p;
+    q.params.max_iter = max_iter;
+    const Result r = approximate::approximate(q);
+    const PatchReport& patch = r.patches[0];
+    const bool late = max_iter == p.params.max_iter;  // the rows stop before maxIter
+    ASSERT_EQ(patch.candidates.size(), 3u);  // the rows won: no stronger rows (group_run.h)
+    for (const CandidateReport& c : patch.candidates) {
+      EXPECT_EQ(c.started(), late || c.term != Term::Both) << term_name(c.term);
+      EXPECT_EQ(c.late, late && c.term == Term::Both) << term_name(c.term);
+      if (c.term == Term::Both) {
+        EXPECT_EQ(c.not_run, late ? NotRun::No : NotRun::TargetsRemovedNothing);
+        EXPECT_EQ(c.iterations, late ? kNothingRounds : 0);
+        EXPECT_FALSE(c.kept);
+      }
     }
+    const std::string text = term_choice_text(patch);
+    EXPECT_EQ(
+        text.find("both not run: the first step of curve removed nothing") != std::string::npos,
+        !late)
+        << text;
+    EXPECT_EQ(
+        text.find("(started when the leader stopped; left after the trial)") != std::string::npos,
+        late)
+        << text;
+    EXPECT_EQ(patch.developability, Term::Defect) << text;
+    EXPECT_EQ(r.V, alone(Developability::Defect, max_iter).V);
   }
-  EXPECT_NE(term_choice_text(patch).find("both not run: the first step of curve removed nothing"),
-            std::string::npos)
-      << term_choice_text(patch);
-  const Developability kept =
-      patch.developability == Term::Curve ? Developability::Curve : Developability::Defect;
-  EXPECT_EQ(r.V, alone(kept, p.params.max_iter).V);
 }
 
 TEST(AngleDefect, AutoKeepsStrongerRowsWhereTheyLeaveLessAndMoveLess) {

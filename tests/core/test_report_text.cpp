@@ -96,6 +96,25 @@ TEST(ReportText, StrongerRowsSayWhyTheyWereKeptOrStopped) {
   EXPECT_NE(text(20, false, false).find("curve −50.0% in 4 it. (kept)"), std::string::npos);
 }
 
+TEST(ReportText, ALateCandidateSaysItStartedWhenTheLeaderStopped) {
+  PatchReport p;
+  p.developability_reason = TermChoice::AutoMeasured;
+  const auto text = [&](bool kept) {
+    p.candidates = {{Term::Curve, 2, 0.0, 0.0, false, true},
+                    {Term::Defect, 8, 40.0, 0.1, !kept, false},
+                    {Term::Both, 5, kept ? 60.0 : 0.0, 0.3, kept, !kept}};
+    p.candidates.back().late = true;
+    return term_choice_text(p);
+  };
+  EXPECT_NE(text(true).find("both −60.0% in 5 it. (started when the leader stopped; kept)"),
+            std::string::npos)
+      << text(true);
+  EXPECT_NE(text(false).find("(started when the leader stopped; left after the trial)"),
+            std::string::npos)
+      << text(false);
+  EXPECT_EQ(text(false).find("not run"), std::string::npos) << text(false);
+}
+
 TEST(ReportText, StopsOfSeveralPassesNameEachPassInOrder) {
   std::vector<PassStop> stops(3);
   stops[0].pass = SolvePass::AllAtOnce;

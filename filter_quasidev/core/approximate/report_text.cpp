@@ -56,10 +56,15 @@ const char* pass_name(SolvePass pass) {
 
 namespace {
 
-// How a candidate ended, for candidates_text: " (kept)", " (left after the trial)" or nothing;
-// for auto's stronger rows (group_run.h) why they were kept, stopped or not kept.
+// How a candidate ended, for candidates_text: " (kept)", " (left after the trial)" or nothing,
+// after when it started if it started late (term_race.h); for auto's stronger rows (group_run.h)
+// why they were kept, stopped or not kept.
 std::string outcome_text(const CandidateReport& c) {
-  if (c.weight_factor == 1) return c.kept ? " (kept)" : c.dropped ? " (left after the trial)" : "";
+  if (c.weight_factor == 1) {
+    std::string what = c.kept ? "kept" : c.dropped ? "left after the trial" : "";
+    if (c.late) what = "started when the leader stopped" + (what.empty() ? "" : "; " + what);
+    return what.empty() ? "" : " (" + what + ")";
+  }
   if (c.kept) return " (kept: less G_ABD left, moved less)";
   if (!c.dropped) return " (not kept: left more G_ABD than the pick)";
   return c.moved_further ? " (stopped: moved further than the pick)"

@@ -81,6 +81,7 @@ struct CandidateReport {
   NotRun not_run = NotRun::No;  // why it never ran (term_race.h), if it did not
   double weight_factor = 1;     // of the defect weight (auto's stronger rows: group_run.h)
   bool moved_further = false;   // the stronger rows: dropped having moved further than the pick
+  bool late = false;            // started once the leader had stopped (both, term_race.h)
   bool started() const { return not_run == NotRun::No; }
 };
 

@@ -133,9 +133,13 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   };
   // A leader that stopped by its own rule before maxIter with more than δ_ABD of the start's
   // G_ABD left: the candidates the trial dropped while they still ran, and whose pace would take
-  // them below it by maxIter, rejoin (once), and run on while it still would.
+  // them below it by maxIter, rejoin (once), and run on while it still would. Both, if it never
+  // started for the targets' first step, starts then from the same start, and is judged likewise
+  // once its own steps give it a pace.
   std::vector<char> rejoined(runs.size(), 0);
-  const auto rejoin = [&] {  // once: a rejoin that found none ends the race
+  std::vector<int> first_round(runs.size(), 1);  // of each candidate's steps (above 1: late)
+  // Once: a rejoin that found none ends the race.
+  const auto rejoin = [&] {
     if (std::find(rejoined.begin(), rejoined.end(), 1) != rejoined.end()) return false;
     const size_t lead = leader(runs, dropped);
     if (runs[lead].stop_reason() == PatchStop::MaxIter || spent(runs[lead])) return false;
@@ -143,6 +147,15 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     for (size_t k = 0; k < runs.size(); ++k)
       if (dropped[k] && runs[k].running() && overtakes(k, lead))
         dropped[k] = 0, rejoined[k] = 1, any = true;
+    // Both, not started for the targets' first step, starts now from the same start.
+    if (never == NotRun::TargetsRemovedNothing) {
+      never = NotRun::No;
+      for (size_t k = runs.size(); k < terms.size(); ++k, any = true) {
+        runs.push_back(start(terms[k]));
+        dropped.push_back(0), rejoined.push_back(1), spared_until.push_back(0);
+        first_round.push_back(round);
+      }
+    }
     return any;
   };
   for (; any_active() || rejoin(); ++round) {
@@ -173,9 +186,14 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     } else if (lead_runs && round >= keep_leader_after) {
       for (size_t k = 0; k < runs.size(); ++k)
         if (k != lead && !(active(k) && overtakes(k, lead))) drop(k);
-    } else if (!lead_runs) {
-      for (size_t k = 0; k < runs.size(); ++k)
-        if (rejoined[k] && active(k) && !overtakes(k, lead)) dropped[k] = 1;
+    } else if (!lead_runs) {  // a late candidate is judged as in the race, by its own steps
+      for (size_t k = 0; k < runs.size(); ++k) {
+        const int steps = round - first_round[k] + 1;
+        if (rejoined[k] && active(k) &&
+            ((steps >= kNothingRounds && !(removed(k) > 0)) ||
+             (steps >= kPlateauIterations && !overtakes(k, lead))))
+          dropped[k] = 1;
+      }
     }
   }
   RaceOutcome out;
@@ -187,6 +205,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
       c = candidate_figures(terms[k], runs[k]);
       c.kept = k == lead;
       c.dropped = dropped[k] != 0;  // by the race, whether or not it had stopped
+      c.late = first_round[k] > 1;
     } else {
       c.term = terms[k];
       c.g_abd = runs[lead].initial_g_abd();

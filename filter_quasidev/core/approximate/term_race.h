@@ -10,6 +10,7 @@
 // step removed some: adding targets that only raised G_ABD to rows that lower it never won on the
 // robustness sweep, and on the draped garments' panels, whose Gauss images fit no curve within
 // 18–27°, its first iteration cost the shared 4-panel tee 14 % of its engine time at 5 iterations.
+// It starts later instead, where the rows stop by their own rule (the late start below).
 // Where neither removed anything, both still runs (on the spot cut into patches, at --defect-weight
 // 0.3, it alone removes 26 %); elsewhere the rows and both step at once, on an idle thread where
 // there is one. While the leader (least G_ABD; ties: least mean displacement) still runs: after
@@ -36,14 +37,19 @@
 // their last kPlateauIterations iterations would take them below it by maxIter, and run on while it
 // still would (the tangent developable with bumps of 1 AE, 0.16 wide, 12k faces: the angle-defect
 // rows, dropped at round 3 with 37 %, rejoin when both stops at 48 %, and reach 53 %; over the
-// robustness sweep 3 % more factorisations). Once the leader has left less than δ_ABD of the
-// start's G_ABD (the share the plateau rule calls meaningful), no other can remove a meaningful
-// share more, and the others stop (on smooth bumps the curve targets remove all but 1 % within a
-// few iterations, while the angle-defect rows, whose factorisation costs several times more, would
-// run on). A candidate that stops by its own rule stays in the comparison where it stopped. On the
-// generated family of scripts/robustness_sweep.py this keeps the term that running every candidate
-// to its end would keep, on all but a few members, at a fraction of the cost (docs/robustness.md
-// has the figures); the round counts are not fitted to any one mesh.
+// robustness sweep 3 % more factorisations). Both, if it never started, starts then from the same
+// start, and is dropped once kNothingRounds of its steps removed nothing or kPlateauIterations of
+// them give a pace that would not take it below the leader (on irregular triangulations of the
+// sweep's lampshades and cones it removes 17–74 % where the rows stopped at 10–61 %; on the shared
+// garments at the default maxIter, where it never wins, 4–7 % more factorisations). Once the
+// leader has left less than δ_ABD of the start's G_ABD (the share the plateau rule calls
+// meaningful), no other can remove a meaningful share more, and the others stop (on smooth bumps
+// the curve targets remove all but 1 % within a few iterations, while the angle-defect rows,
+// whose factorisation costs several times more, would run on). A candidate that stops by its own
+// rule stays in the comparison where it stopped. On the generated family of
+// scripts/robustness_sweep.py this keeps the term that running every candidate to its end would
+// keep, on all but a few members, at a fraction of the cost (docs/robustness.md has the figures);
+// the round counts are not fitted to any one mesh.
 #pragma once
 
 #include <functional>
@@ -71,6 +77,7 @@ struct CandidateFigures {
   NotRun not_run = NotRun::No;  // why it never started, if it did not
   double weight_factor = 1;     // of the defect weight (auto's stronger rows: group_run.h)
   bool moved_further = false;   // the stronger rows: dropped having moved further than the pick
+  bool late = false;            // started once the leader had stopped (both, term_race.h)
 };
 
 // A run's figures as a candidate (kept, dropped and started left to the caller).
