@@ -66,10 +66,11 @@ def main() -> int:
     for r in results:
         cells = [r["member"], str(r["faces"]), figures(r["ours"])] + [figures(f) for f in r["meshlab"].values()]
         lines.append("| " + " | ".join(cells) + " |")
+    command = " ".join([".venv/bin/python scripts/robustness_meshlab.py", *sys.argv[1:]])
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.out, "robustness_meshlab.md"), "w") as f:
         f.write("# The smooth members below the floor, beside MeshLab's filter\n\n"
-                "Made by `.venv/bin/python scripts/robustness_meshlab.py --out docs` from "
+                f"Made by `{command}` from "
                 f"`{os.path.relpath(args.sweep, ROOT)}`: the {len(results)} smooth members where auto "
                 f"removed less than {args.floor:g} % of G_ABD. Each cell: G_ABD removed (%) and, in "
                 "brackets, Hausdorff / bounding-box diagonal, both measured by scripts/tradeoff.py's "
