@@ -2,6 +2,7 @@
 the worst, median and best members are ordered and are members' figures, the re-cut members
 have the panels the table says, and the generated members are reproducible from their seeds.
 Timings themselves are not asserted (benchmarks, not timed tests)."""
+import glob
 import json
 import os
 import subprocess
@@ -92,17 +93,32 @@ def test_subdivision_keeps_area_and_patch_ids():
     assert len(V2) == len(V) + len(edges) == len(np.unique(F2))
 
 
+def last_level_cache_bytes() -> int:
+    """The largest cache of the first CPU (sysfs), 0 where it is not known."""
+    units = {"K": 1 << 10, "M": 1 << 20, "G": 1 << 30}
+    sizes = []
+    for path in glob.glob("/sys/devices/system/cpu/cpu0/cache/index*/size"):
+        with open(path) as f:
+            size = f.read().strip()
+        sizes.append(int(size[:-1]) * units[size[-1]] if size[-1] in units else int(size))
+    return max(sizes, default=0)
+
+
 def test_flops_and_bytes_bound_every_member(family):
     _, fam, text = family
     rates = fam["rates"]
     assert rates["dense_gflops"] > 0.1 and rates["memory_gbs"] > 0.1
+    cache = last_level_cache_bytes()
     for r in fam["members"]:
         assert (r["factorization_gflop"] > 0) == (r["factorizations"] > 0)
         assert r["solve_gb"] > 0
         # per thread, a sparse factorisation runs no faster than a dense product, and a solve
-        # reads no faster than a sum streams
+        # whose bytes do not fit in the cache reads no faster than a sum streams (a garment's
+        # solves read 2-4 MB each, from the cache; with another job streaming beside the test
+        # they ran at 2.1 times the memory rate it measured)
         assert r["factorization_gflop"] / (r["ms"]["factorization"] / 1000) < 2 * rates["dense_gflops"]
-        assert r["solve_gb"] / (r["ms"]["solve"] / 1000) < 2 * rates["memory_gbs"]
+        if r["solve_gb"] * 1e9 / r["solves"] > cache:
+            assert r["solve_gb"] / (r["ms"]["solve"] / 1000) < 2 * rates["memory_gbs"]
         floor = bench_family.floor_ms(r, rates)
         assert 0 < floor["flops"] and 0 < floor["memory"] and floor["total"] < r["ms"]["engine"]
     worst = next(r for r in fam["members"] if r["member"] == fam["summary"]["worst"]["member"])
