@@ -115,6 +115,27 @@ TEST(ReportText, ALateCandidateSaysItStartedWhenTheLeaderStopped) {
   EXPECT_EQ(text(false).find("not run"), std::string::npos) << text(false);
 }
 
+// Candidates that never started say how many steps of the first candidate left little.
+TEST(ReportText, CandidatesNotRunSayHowManyStepsOfTheFirstLeftLittle) {
+  PatchReport p;
+  p.developability_reason = TermChoice::AutoMeasured;
+  const auto text = [&](NotRun why) {
+    p.candidates = {{Term::Curve, 9, 99.9, 0.1, true, false},
+                    {Term::Defect, 0, 0.0, 0.0, false, true},
+                    {Term::Both, 0, 0.0, 0.0, false, true}};
+    p.candidates[1].not_run = p.candidates[2].not_run = why;
+    return term_choice_text(p);
+  };
+  EXPECT_NE(text(NotRun::LeftLittle)
+                .find("defect and both not run: the first step of curve left less than δ_ABD"),
+            std::string::npos)
+      << text(NotRun::LeftLittle);
+  EXPECT_NE(text(NotRun::LeftLittleInTwo)
+                .find("defect and both not run: the first two steps of curve left less than δ_ABD"),
+            std::string::npos)
+      << text(NotRun::LeftLittleInTwo);
+}
+
 TEST(ReportText, StopsOfSeveralPassesNameEachPassInOrder) {
   std::vector<PassStop> stops(3);
   stops[0].pass = SolvePass::AllAtOnce;

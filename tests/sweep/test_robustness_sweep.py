@@ -131,6 +131,14 @@ def test_irregular_triangles_on_smooth_bases_lose_their_bumps_without_moving_fur
     assert not further, further
 
 
+def assert_auto_keeps_both(members):
+    """Auto is within 2 points of the best term on every member, and keeps both."""
+    rows = rs.sweep(members, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
+    gaps = {row["member"]: round(gap(row), 1) for row in rows}
+    assert max(gaps.values()) <= 2.0, gaps
+    assert all(row["auto"]["chosen"] == "both" for row in rows), [row["auto"]["chosen"] for row in rows]
+
+
 def test_both_starts_late_where_the_rows_stop_short():
     """An irregular cone with bumps of 2 AE, 0.08 wide, and an irregular lampshade likewise
     (3k faces each): the curve term's first step removes nothing and the angle-defect rows' some,
@@ -140,7 +148,29 @@ def test_both_starts_late_where_the_rows_stop_short():
     same start, and auto keeps it (it lost 13 and 7 points before)."""
     members = [mesh_family.Member("cone", 2, 0.08, 0, 1, 1, 0.24),
                mesh_family.Member("lampshade", 2, 0.08, 0, 1, 1, 0.1)]
-    rows = rs.sweep(members, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
-    gaps = {row["member"]: round(gap(row), 1) for row in rows}
-    assert max(gaps.values()) <= 2.0, gaps
-    assert all(row["auto"]["chosen"] == "both" for row in rows), [row["auto"]["chosen"] for row in rows]
+    assert_auto_keeps_both(members)
+
+
+def test_auto_costs_what_the_curve_term_does_where_its_pace_leaves_little():
+    """The irregular plane with bumps of 1 AE, 0.16 wide (12k faces): the curve term's first step
+    leaves 1.5 % of G_ABD, more than δ_ABD, so the other terms started and cost auto three times
+    the curve term's run. At that step's pace its second leaves less than δ_ABD, so the race now
+    takes that step alone too (term_race.h); it does leave less, the others never start, and auto
+    is the curve term's own run: the same factorisations and G_ABD removed."""
+    member = mesh_family.Member("plane", 1, 0.16, 0, 2, 1, 0.1)
+    row = rs.sweep([member], ("curve", "auto"), os.path.join(BUILD, "bin", "quasidev"), jobs=2)[0]
+    assert row["auto"]["chosen"] == "curve", row["auto"]
+    assert row["auto"]["factorizations"] == row["curve"]["factorizations"], row
+    assert abs(row["auto"]["reduction"] - row["curve"]["reduction"]) < 0.01, row
+
+
+def test_a_rejoining_term_is_judged_by_its_steps_after_it_rejoins():
+    """The irregular cylinder with bumps of 2 AE, 0.08 wide, and the irregular lampshade with bumps
+    of 1 AE, 0.08 wide (3k faces each, cells slid by up to 0.24): both, the rows with the curve
+    targets, is dropped by the trial, and the leader then stops by its own rule short of maxIter.
+    Judged by its pace where it was dropped, both did not rejoin, and auto lost 10 and 6 points to
+    it. It now rejoins, is judged by the steps it takes from there (term_race.h), and auto keeps
+    it."""
+    members = [mesh_family.Member("cylinder", 2, 0.08, 0, 1, 1, 0.24),
+               mesh_family.Member("lampshade", 1, 0.08, 0, 1, 1, 0.24)]
+    assert_auto_keeps_both(members)

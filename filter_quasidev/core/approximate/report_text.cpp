@@ -89,11 +89,11 @@ std::string candidates_text(const PatchReport& p) {
   if (!s.empty()) s.pop_back();
   if (why != NotRun::No)
     s += ";" + not_run + " not run: " +
-         (why == NotRun::LeftLittle
-              ? "the first step of " + std::string(term_name(p.candidates.front().term)) +
-                    " left less than δ_ABD of G_ABD"
-              : std::string("the first step of curve removed nothing, "
-                            "that of defect some"));
+         (why == NotRun::TargetsRemovedNothing
+              ? std::string("the first step of curve removed nothing, that of defect some")
+              : std::string(why == NotRun::LeftLittle ? "the first step" : "the first two steps") +
+                    " of " + term_name(p.candidates.front().term) +
+                    " left less than δ_ABD of G_ABD");
   return s;
 }
 

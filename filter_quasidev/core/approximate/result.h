@@ -67,6 +67,7 @@ struct IterationReport {
 enum class NotRun {
   No,                     // it ran
   LeftLittle,             // the first step before it left less than δ_ABD of the start's G_ABD
+  LeftLittleInTwo,        // so did its second, taken alone at the first one's pace
   TargetsRemovedNothing,  // both: the curve targets' first step removed nothing, the rows' some
 };
 

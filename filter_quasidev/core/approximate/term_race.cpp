@@ -75,8 +75,15 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   std::vector<Deformation> runs;
   runs.push_back(start(terms.front()));
   runs.front().step();
+  // Where the share of G_ABD that step left, left once more, is less than δ_ABD, the candidate
+  // takes its step of round 2 alone too: at that pace the others would never start.
+  const double left = runs.front().best_g_abd() / runs.front().initial_g_abd();
+  const bool ahead = !spent(runs.front()) && runs.front().running() && left * left <= meaningful;
+  if (ahead) runs.front().step();
   size_t stepped = 1;  // the candidates whose step of round 1 is done
-  NotRun never = spent(runs.front()) ? NotRun::LeftLittle : NotRun::No;  // the rest's, if any
+  NotRun never = !spent(runs.front()) ? NotRun::No
+                 : ahead              ? NotRun::LeftLittleInTwo
+                                      : NotRun::LeftLittle;  // the rest's, if any
   const auto removed = [&](size_t k) { return runs[k].initial_g_abd() - runs[k].best_g_abd(); };
   // Whether term t's step of round 1 is done and removed some: 1, 0, or -1 when not yet done.
   const auto first_step_removed = [&](Term t) {
@@ -132,12 +139,13 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     return projected_g_abd(runs[k], max_iter) < projected_g_abd(runs[lead], max_iter);
   };
   // A leader that stopped by its own rule before maxIter with more than δ_ABD of the start's
-  // G_ABD left: the candidates the trial dropped while they still ran, and whose pace would take
-  // them below it by maxIter, rejoin (once), and run on while it still would. Both, if it never
-  // started for the targets' first step, starts then from the same start, and is judged likewise
-  // once its own steps give it a pace.
+  // G_ABD left: the candidates the trial dropped while they still ran, and that had removed some,
+  // rejoin (once), and run on while the steps they take from there give a pace that would take
+  // them below it by maxIter. Both, if it never started for the targets' first step, starts then
+  // from the same start, and is judged likewise.
   std::vector<char> rejoined(runs.size(), 0);
-  std::vector<int> first_round(runs.size(), 1);  // of each candidate's steps (above 1: late)
+  std::vector<char> late(runs.size(), 0);         // started at the rejoin
+  std::vector<int> rejoin_round(runs.size(), 0);  // the round of its first step after it
   // Once: a rejoin that found none ends the race.
   const auto rejoin = [&] {
     if (std::find(rejoined.begin(), rejoined.end(), 1) != rejoined.end()) return false;
@@ -145,15 +153,15 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     if (runs[lead].stop_reason() == PatchStop::MaxIter || spent(runs[lead])) return false;
     bool any = false;
     for (size_t k = 0; k < runs.size(); ++k)
-      if (dropped[k] && runs[k].running() && overtakes(k, lead))
-        dropped[k] = 0, rejoined[k] = 1, any = true;
+      if (dropped[k] && runs[k].running() && removed(k) > 0)
+        dropped[k] = 0, rejoined[k] = 1, rejoin_round[k] = round, any = true;
     // Both, not started for the targets' first step, starts now from the same start.
     if (never == NotRun::TargetsRemovedNothing) {
       never = NotRun::No;
       for (size_t k = runs.size(); k < terms.size(); ++k, any = true) {
         runs.push_back(start(terms[k]));
         dropped.push_back(0), rejoined.push_back(1), spared_until.push_back(0);
-        first_round.push_back(round);
+        late.push_back(1), rejoin_round.push_back(round);
       }
     }
     return any;
@@ -162,7 +170,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     std::vector<size_t> stepping;  // each candidate's step reads only its own run's state
     const size_t first = round == 1 ? stepped : 0;  // round 1's first candidates have stepped
     for (size_t k = first; k < runs.size(); ++k)
-      if (active(k)) stepping.push_back(k);
+      if (active(k) && !(ahead && k == 0 && round == 2)) stepping.push_back(k);
     common::run_with_idle_threads(idle, stepping.size(),
                                   [&](size_t i) { runs[stepping[i]].step(); });
     if (progress) progress(static_cast<double>(most_iterations(runs, dropped)) / max_iter);
@@ -186,9 +194,9 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     } else if (lead_runs && round >= keep_leader_after) {
       for (size_t k = 0; k < runs.size(); ++k)
         if (k != lead && !(active(k) && overtakes(k, lead))) drop(k);
-    } else if (!lead_runs) {  // a late candidate is judged as in the race, by its own steps
+    } else if (!lead_runs) {  // a rejoined candidate is judged by its steps since the rejoin
       for (size_t k = 0; k < runs.size(); ++k) {
-        const int steps = round - first_round[k] + 1;
+        const int steps = round - rejoin_round[k] + 1;
         if (rejoined[k] && active(k) &&
             ((steps >= kNothingRounds && !(removed(k) > 0)) ||
              (steps >= kPlateauIterations && !overtakes(k, lead))))
@@ -205,7 +213,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
       c = candidate_figures(terms[k], runs[k]);
       c.kept = k == lead;
       c.dropped = dropped[k] != 0;  // by the race, whether or not it had stopped
-      c.late = first_round[k] > 1;
+      c.late = late[k] != 0;
     } else {
       c.term = terms[k];
       c.g_abd = runs[lead].initial_g_abd();

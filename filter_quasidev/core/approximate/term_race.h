@@ -5,48 +5,56 @@
 // that step leaves less than δ_ABD of the start's G_ABD, the others could remove no meaningful
 // share more (the last rule below) and never start (on the plane with bumps of 0.5 AE, 12k faces,
 // one angle-defect factorisation of each other term cost more than the curve term's whole run by
-// CG: 152 → 65 ms, the same result). Where that step removed nothing, the angle-defect rows step
-// next, alone too, and both, the rows with the curve targets, does not start where the rows' first
-// step removed some: adding targets that only raised G_ABD to rows that lower it never won on the
-// robustness sweep, and on the draped garments' panels, whose Gauss images fit no curve within
-// 18–27°, its first iteration cost the shared 4-panel tee 14 % of its engine time at 5 iterations.
-// It starts later instead, where the rows stop by their own rule (the late start below).
-// Where neither removed anything, both still runs (on the spot cut into patches, at --defect-weight
-// 0.3, it alone removes 26 %); elsewhere the rows and both step at once, on an idle thread where
-// there is one. While the leader (least G_ABD; ties: least mean displacement) still runs: after
-// kNothingRounds rounds any candidate that has removed nothing stops, once the leader has removed
-// δ_ABD of the start's G_ABD (the curve targets on draped garments: a third round of theirs took
-// the shared 4-panel tee from 99 to 109 ms, medians of 11 runs at the default maxIter, same result;
-// a lead of less than δ_ABD is none: at --defect-weight 3 the angle-defect rows remove nothing in
-// their first two rounds on the tee's front, where both lead with 0.2 %, and then 59 %); after
-// kDropWorstShare of maxIter rounds the candidate with most G_ABD left stops, and from then on so
-// does any that has removed less than kFarBehind of what the leader removed; after kKeepLeaderShare
-// the others stop, but for any whose best G_ABD, falling on at its pace over the last
-// kPlateauIterations iterations, would end below the leader's likewise projected (a term whose
-// re-fitted targets took hold late: on the cylinder with bumps of 2 AE, 0.16 wide, both reaches
-// 87 % against the leader's 79 %, yet trailed it at round 12), and the leader runs to its own stop.
-// Where these rules would drop the curve term after kPlateauIterations rounds or more, its curve is
-// fitted again instead (TargetMode::ReprojectThenRefit, once, where maxIter leaves its new targets
-// kPlateauIterations rounds), and the rules spare it for those rounds (on the plane with bumps of
-// 4 AE, 0.16 wide, its first targets raise G_ABD, and re-fitted they remove 99.6 % against the
-// leader's 71 %; re-fitting both too cost the shirt's re-cuts up to half more time for the same
-// figures). A leader that has stopped by its own rule is final, and the others run on until one
-// overtakes it or they stop: a term that starts slowly is not dropped for being behind a lead that
-// can grow no more. If that leader stopped before maxIter with more than δ_ABD of the start's G_ABD
-// left, the candidates the trial dropped while they still ran rejoin once, where their pace over
-// their last kPlateauIterations iterations would take them below it by maxIter, and run on while it
-// still would (the tangent developable with bumps of 1 AE, 0.16 wide, 12k faces: the angle-defect
-// rows, dropped at round 3 with 37 %, rejoin when both stops at 48 %, and reach 53 %; over the
-// robustness sweep 3 % more factorisations). Both, if it never started, starts then from the same
-// start, and is dropped once kNothingRounds of its steps removed nothing or kPlateauIterations of
-// them give a pace that would not take it below the leader (on irregular triangulations of the
-// sweep's lampshades and cones it removes 17–74 % where the rows stopped at 10–61 %; on the shared
-// garments at the default maxIter, where it never wins, 4–7 % more factorisations). Once the
-// leader has left less than δ_ABD of the start's G_ABD (the share the plateau rule calls
-// meaningful), no other can remove a meaningful share more, and the others stop (on smooth bumps
-// the curve targets remove all but 1 % within a few iterations, while the angle-defect rows,
-// whose factorisation costs several times more, would run on). A candidate that stops by its own
-// rule stays in the comparison where it stopped. On the generated family of
+// CG: 152 → 65 ms, the same result). Where the share it left, left once more, would be less than
+// δ_ABD, it takes its step of round 2 alone too, and where that leaves less than δ_ABD the others
+// never start either (the irregular plane with bumps of 1 AE, 0.16 wide, 12k faces: its first step
+// leaves 1.5 %, its second 0.01 %; 6 → 2 factorisations, 344 → 85 ms, the same result). Where its
+// first step removed nothing, the angle-defect rows step next, alone too, and both, the rows with
+// the curve targets, does not start where the rows' first step removed some: adding targets that
+// only raised G_ABD to rows that lower it never won on the robustness sweep, and on the draped
+// garments' panels, whose Gauss images fit no curve within 18–27°, its first iteration cost the
+// shared 4-panel tee 14 % of its engine time at 5 iterations. It starts later instead, where the
+// rows stop by their own rule (the late start below). Where neither removed anything, both still
+// runs (on the spot cut into patches, at --defect-weight 0.3, it alone removes 26 %); elsewhere the
+// rows and both step at once, on an idle thread where there is one. While the leader (least G_ABD;
+// ties: least mean displacement) still runs: after kNothingRounds rounds any candidate that has
+// removed nothing stops, once the leader has removed δ_ABD of the start's G_ABD (the curve targets
+// on draped garments: a third round of theirs took the shared 4-panel tee from 99 to 109 ms,
+// medians of 11 runs at the default maxIter, same result; a lead of less than δ_ABD is none: at
+// --defect-weight 3 the angle-defect rows remove nothing in their first two rounds on the tee's
+// front, where both lead with 0.2 %, and then 59 %); after kDropWorstShare of maxIter rounds the
+// candidate with most G_ABD left stops, and from then on so does any that has removed less than
+// kFarBehind of what the leader removed; after kKeepLeaderShare the others stop, but for any whose
+// best G_ABD, falling on at its pace over the last kPlateauIterations iterations, would end below
+// the leader's likewise projected (a term whose re-fitted targets took hold late: on the cylinder
+// with bumps of 2 AE, 0.16 wide, both reaches 87 % against the leader's 79 %, yet trailed it at
+// round 12), and the leader runs to its own stop. Where these rules would drop the curve term after
+// kPlateauIterations rounds or more, its curve is fitted again instead
+// (TargetMode::ReprojectThenRefit, once, where maxIter leaves its new targets kPlateauIterations
+// rounds), and the rules spare it for those rounds (on the plane with bumps of 4 AE, 0.16 wide, its
+// first targets raise G_ABD, and re-fitted they remove 99.6 % against the leader's 71 %; re-fitting
+// both too cost the shirt's re-cuts up to half more time for the same figures). A leader that has
+// stopped by its own rule is final, and the others run on until one overtakes it or they stop: a
+// term that starts slowly is not dropped for being behind a lead that can grow no more. If that
+// leader stopped before maxIter with more than δ_ABD of the start's G_ABD left, the candidates the
+// trial dropped while they still ran, and that had removed some, rejoin once, and are judged by the
+// steps they take from there: after kPlateauIterations of them they run on while their pace over
+// those would take them below the leader by maxIter (the tangent developable with bumps of 1 AE,
+// 0.16 wide, 12k faces: the angle-defect rows, dropped at round 3 with 37 %, rejoin when both stops
+// at 48 %, and reach 53 %). Judged by their pace where they were dropped, as before stop 50, those
+// that start slowly again after a re-fit stayed out: on the irregular cylinder with bumps of 2 AE,
+// 0.08 wide, and two irregular lampshades, 3k faces, both now rejoins and removes 86, 80 and 55 %
+// where the leader stopped at 76, 74 and 52 % (over the irregular sweep 2 % more factorisations;
+// the shirt at the default maxIter 5 %, the same result). Both, if it never started, starts then
+// from the same start, and is dropped once kNothingRounds of its steps removed nothing or
+// kPlateauIterations of them give a pace that would not take it below the leader (on irregular
+// triangulations of the sweep's lampshades and cones it removes 17–74 % where the rows stopped at
+// 10–61 %; on the shared garments at the default maxIter, where it never wins, 4–7 % more
+// factorisations). Once the leader has left less than δ_ABD of the start's G_ABD (the share the
+// plateau rule calls meaningful), no other can remove a meaningful share more, and the others stop
+// (on smooth bumps the curve targets remove all but 1 % within a few iterations, while the
+// angle-defect rows, whose factorisation costs several times more, would run on). A candidate that
+// stops by its own rule stays in the comparison where it stopped. On the generated family of
 // scripts/robustness_sweep.py this keeps the term that running every candidate to its end would
 // keep, on all but a few members, at a fraction of the cost (docs/robustness.md has the figures);
 // the round counts are not fitted to any one mesh.
