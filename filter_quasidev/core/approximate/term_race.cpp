@@ -143,25 +143,25 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
   // rejoin (once), and run on while the steps they take from there give a pace that would take
   // them below it by maxIter. Both, if it never started for the targets' first step, starts then
   // from the same start, and is judged likewise.
-  std::vector<char> rejoined(runs.size(), 0);
+  std::vector<int> rejoin_round(runs.size(), 0);  // of its first step after the rejoin; 0: none
   std::vector<char> late(runs.size(), 0);         // started at the rejoin
-  std::vector<int> rejoin_round(runs.size(), 0);  // the round of its first step after it
   // Once: a rejoin that found none ends the race.
   const auto rejoin = [&] {
-    if (std::find(rejoined.begin(), rejoined.end(), 1) != rejoined.end()) return false;
+    if (std::any_of(rejoin_round.begin(), rejoin_round.end(), [](int r) { return r > 0; }))
+      return false;
     const size_t lead = leader(runs, dropped);
     if (runs[lead].stop_reason() == PatchStop::MaxIter || spent(runs[lead])) return false;
     bool any = false;
     for (size_t k = 0; k < runs.size(); ++k)
       if (dropped[k] && runs[k].running() && removed(k) > 0)
-        dropped[k] = 0, rejoined[k] = 1, rejoin_round[k] = round, any = true;
+        dropped[k] = 0, rejoin_round[k] = round, any = true;
     // Both, not started for the targets' first step, starts now from the same start.
     if (never == NotRun::TargetsRemovedNothing) {
       never = NotRun::No;
       for (size_t k = runs.size(); k < terms.size(); ++k, any = true) {
         runs.push_back(start(terms[k]));
-        dropped.push_back(0), rejoined.push_back(1), spared_until.push_back(0);
-        late.push_back(1), rejoin_round.push_back(round);
+        dropped.push_back(0), spared_until.push_back(0);
+        rejoin_round.push_back(round), late.push_back(1);
       }
     }
     return any;
@@ -197,7 +197,7 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     } else if (!lead_runs) {  // a rejoined candidate is judged by its steps since the rejoin
       for (size_t k = 0; k < runs.size(); ++k) {
         const int steps = round - rejoin_round[k] + 1;
-        if (rejoined[k] && active(k) &&
+        if (rejoin_round[k] > 0 && active(k) &&
             ((steps >= kNothingRounds && !(removed(k) > 0)) ||
              (steps >= kPlateauIterations && !overtakes(k, lead))))
           dropped[k] = 1;
