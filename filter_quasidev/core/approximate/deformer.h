@@ -100,6 +100,9 @@ class Deformation {
   const Figures& current() const { return last_; }  // the last accepted iterate's
   // The best G_ABD after each accepted iteration ([0]: the input's).
   const std::vector<double>& best_track() const { return best_track_; }
+  // Accepted iterations since the current phase began (the input, re-fitted targets, moved
+  // anchors): the plateau rule judges a pace only over iterations of one phase.
+  int phase_iterations() const { return static_cast<int>(best_track_.size() - 1 - plateau_from_); }
   // From the next iteration on, fits the curve again and goes on with re-fitted targets to a
   // plateau of their own (above; what a stalled run does), once; false: it cannot (not asked
   // for, already done). behind: asked by auto's race, where these targets fell far behind.
