@@ -134,15 +134,15 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     else
       dropped[k] = 1;
   };
-  // Candidate k, falling on at its pace, would end below the leader, likewise projected.
+  // Candidate k may still overtake the leader: it began a new phase (re-fitted targets, moved
+  // anchors) fewer than kPlateauIterations iterations ago, so a pace over the phase before says
+  // nothing of where this one goes; or, falling on at its pace, it would end below the leader,
+  // likewise projected.
   const auto overtakes = [&](size_t k, size_t lead) {
-    return projected_g_abd(runs[k], max_iter) < projected_g_abd(runs[lead], max_iter);
-  };
-  // Candidate k began a new phase (re-fitted targets, moved anchors) fewer than kPlateauIterations
-  // iterations ago: a pace over the phase before says nothing of where this one goes.
-  const auto new_phase = [&](size_t k) {
     const int in_phase = runs[k].phase_iterations();
-    return runs[k].running() && in_phase < kPlateauIterations && in_phase < runs[k].iterations();
+    const bool new_phase =
+        runs[k].running() && in_phase < kPlateauIterations && in_phase < runs[k].iterations();
+    return new_phase || projected_g_abd(runs[k], max_iter) < projected_g_abd(runs[lead], max_iter);
   };
   // A leader that stopped by its own rule before maxIter with more than δ_ABD of the start's
   // G_ABD left: the candidates the trial dropped while they still ran, and that had removed some,
@@ -199,13 +199,13 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
       for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != lead;
     } else if (lead_runs && round >= keep_leader_after) {
       for (size_t k = 0; k < runs.size(); ++k)
-        if (k != lead && !(active(k) && (new_phase(k) || overtakes(k, lead)))) drop(k);
+        if (k != lead && !(active(k) && overtakes(k, lead))) drop(k);
     } else if (!lead_runs) {  // a rejoined candidate is judged by its steps since the rejoin
       for (size_t k = 0; k < runs.size(); ++k) {
         const int steps = round - rejoin_round[k] + 1;
         if (rejoin_round[k] > 0 && active(k) &&
             ((steps >= kNothingRounds && !(removed(k) > 0)) ||
-             (steps >= kPlateauIterations && !new_phase(k) && !overtakes(k, lead))))
+             (steps >= kPlateauIterations && !overtakes(k, lead))))
           dropped[k] = 1;
       }
     }
