@@ -140,7 +140,7 @@ def _bumps(surface, u: np.ndarray, v: np.ndarray, periodic: bool, sigma: float, 
     return window, h
 
 
-def _jitter(V: np.ndarray, F: np.ndarray, length: float, rng) -> np.ndarray:
+def jitter_vertices(V: np.ndarray, F: np.ndarray, length: float, rng) -> np.ndarray:
     """Each interior vertex moved by a random vector of that length; the boundary stays put."""
     d = rng.normal(size=V.shape)
     d /= np.linalg.norm(d, axis=1, keepdims=True)
@@ -174,7 +174,7 @@ def make(m: Member) -> tuple[np.ndarray, np.ndarray]:
         window, h = _bumps(surface, u, v, periodic, m.wavelength * length, rng)
         V = V + (m.amplitude * ae * window * h)[:, None] * _normals(surface, u, v)
     if m.jitter > 0:
-        V = _jitter(V, F, m.jitter * ae, rng)
+        V = jitter_vertices(V, F, m.jitter * ae, rng)
     return V, F
 
 
@@ -226,7 +226,7 @@ def make_tube(m: Tube) -> tuple[np.ndarray, np.ndarray]:
         window, h = _bumps(m.surface, u, v, m.periodic, m.width, rng, m.bumps)
         V = V + (m.amplitude * window * h)[:, None] * _normals(m.surface, u, v)
     if m.jitter > 0:
-        V = _jitter(V, F, m.jitter * average_edge(V, F), rng)
+        V = jitter_vertices(V, F, m.jitter * average_edge(V, F), rng)
     return V, F
 
 
@@ -264,7 +264,7 @@ def drape(V: np.ndarray, F: np.ndarray, amplitude: float, jitter: float, seed: i
     weights = rng.uniform(-1, 1, folds)
     h = sum(w * np.exp(-np.sum((V - c) ** 2, axis=1) / (2 * sigma ** 2)) for w, c in zip(weights, centres))
     V = V + (amplitude * ae * h / np.max(np.abs(h)))[:, None] * vertex_normals(V, F)
-    return _jitter(V, F, jitter * ae, rng) if jitter > 0 else V
+    return jitter_vertices(V, F, jitter * ae, rng) if jitter > 0 else V
 
 
 def write_ply(path, V: np.ndarray, F: np.ndarray, comment: str = "", quality=None) -> None:

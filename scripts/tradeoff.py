@@ -13,7 +13,10 @@ For each mesh, sweeps
     open boundary by default, MeshLab's filter moves it, and this series compares like with like;
   * MeshLab's own apply_coord_developability_of_mesh (Stein, Grinspun, Crane 2018) in pymeshlab with
     edgeflips=False, edgecollapses=False (topology kept), over `maxfunevals`;
-plus our default run (no options) and MeshLab's defaults without remeshing (maxfunevals 400).
+plus our default run (no options) and MeshLab's defaults without remeshing (maxfunevals 400); and,
+as a reference, the input only scaled up about its bounding box's centre: G_ABD, a sum of |K|,
+falls as 1/s^2 when a mesh grows by s, with no shape changed, so a point no better than that
+scale at its distance has removed no curvature that matters. The verdicts say which are.
 Every output is measured here, identically for both, with scripts/compare_developability.py's
 functions:
   G_ABD reduction (%) = 100 (G0 - G1) / G0, G = sum |K| over interior vertices, K = angle defect /
@@ -69,7 +72,9 @@ SWEEPS = {
     "weight": ([3, 10, 30, 100, 300], [10, 100]),
     "tolerance": ([0.03, 0.1, 0.2, 0.3, 0.5, 1, 3], [0.3, 3]),
     "maxfunevals": ([100, 300, 1000, 2000, 4000, 8000, 16000], [100, 1000]),
+    "scale": ([1.001, 1.003, 1.01, 1.03], [1.003, 1.03]),
 }
+SCALED = "the input scaled up (no shape change)"
 FREE_BOUNDARY = "ours, --free-boundary, total"  # run only on meshes with an open boundary
 # series name -> (filter, marker, colour); a series' default point is drawn as a star.
 STYLE = {
@@ -82,6 +87,7 @@ STYLE = {
     "ours, default": ("ours", "*", "tab:blue"),
     "MeshLab, maxfunevals": ("meshlab", "^", "tab:red"),
     "MeshLab, default (no remeshing)": ("meshlab", "*", "tab:red"),
+    SCALED: ("scaled", "x", "tab:gray"),
 }
 
 
@@ -121,6 +127,7 @@ def plan(options: set[str], quick: bool) -> list[tuple[str, str, list[str] | dic
                    dict(THEIRS_KEEP_TOPOLOGY)))
     points += [("MeshLab, maxfunevals", f"maxfunevals {n}", {"maxfunevals": n, **THEIRS_KEEP_TOPOLOGY})
                for n in pick["maxfunevals"] if n != THEIRS_DEFAULT_EVALS]
+    points += [(SCALED, f"scaled by {x:g}", {"scale": x}) for x in pick["scale"]]
     return points
 
 
@@ -204,6 +211,20 @@ def run_meshlab(path: str, kwargs: dict, before: dict) -> dict:
     return fig
 
 
+def run_scaled(path: str, scale: float, before: dict) -> dict:
+    """The input scaled by `scale` about its bounding box's centre, measured as an output."""
+    import pymeshlab
+    ms = load_pair(path)
+    V, F = ms.mesh(0).vertex_matrix(), ms.mesh(0).face_matrix()
+    centre = (V.max(axis=0) + V.min(axis=0)) / 2
+    ms = pymeshlab.MeshSet()
+    ms.add_mesh(pymeshlab.Mesh(vertex_matrix=V, face_matrix=F))
+    ms.add_mesh(pymeshlab.Mesh(vertex_matrix=centre + scale * (V - centre), face_matrix=F))
+    fig = measure(ms, before)
+    fig.update(time_s=0.0, scale=scale)
+    return fig
+
+
 def sweep(paths: list[str], quasidev: str, quick: bool) -> tuple[list[dict], list[str]]:
     options = quasidev_options(quasidev)
     points = plan(options, quick)
@@ -221,9 +242,12 @@ def sweep(paths: list[str], quasidev: str, quick: bool) -> tuple[list[dict], lis
             for series, setting, how in points:
                 if series == FREE_BOUNDARY and not len(before["boundary"]):
                     continue  # closed: nothing to free
-                ours = STYLE[series][0] == "ours"
-                fig = run_ours(quasidev, path, how, before, tmp) if ours else run_meshlab(path, how, before)
-                row = {"mesh": name, "filter": "ours" if ours else "MeshLab", "series": series,
+                kind = STYLE[series][0]
+                fig = (run_ours(quasidev, path, how, before, tmp) if kind == "ours" else
+                       run_scaled(path, how["scale"], before) if kind == "scaled" else
+                       run_meshlab(path, how, before))
+                row = {"mesh": name, "filter": {"ours": "ours", "meshlab": "MeshLab"}.get(kind, kind),
+                       "series": series,
                        "setting": setting, "g_abd_before": before["g_abd"],
                        "vertices_before": before["vertices"], **fig}
                 rows.append(row)
@@ -271,6 +295,37 @@ def above_below(ours: list[dict], theirs: list[dict]) -> tuple[int, int, list[st
     return above, below, details
 
 
+def scale_reduction(scaled: list[dict], h: float) -> float | None:
+    """What scaling the input up removes at Hausdorff / diag h: the distance grows linearly with
+    s - 1 (fitted on the scaled points), G_ABD falls as 1/s^2."""
+    slopes = [r["hausdorff_rel"] / (r["scale"] - 1) for r in scaled]
+    if not slopes:
+        return None
+    s = 1 + h / float(np.median(slopes))
+    return 100.0 * (1 - 1 / s ** 2)
+
+
+def no_better_than_scale(mesh: str, rows: list[dict]) -> str:
+    """Which MeshLab points, and whether our default, remove no more than a scale at their distance."""
+    good = [r for r in rows if r["mesh"] == mesh and "error" not in r]
+    scaled = [r for r in good if r["filter"] == "scaled"]
+    theirs = [r for r in good if r["filter"] == "MeshLab"]
+    default = next((r for r in good if r["series"] == "ours, default"), None)
+    if not scaled:
+        return ""
+    flat = [t for t in theirs if t["reduction"] <= scale_reduction(scaled, t["hausdorff_rel"])]
+    text = (f"; scaling the input up (no shape change) removes {scale_reduction(scaled, 1e-3):.1f} % "
+            f"at H/diag 1e-3: {len(flat)} of {len(theirs)} MeshLab points remove no more than such a "
+            "scale at their distance" + (" (" + ", ".join(
+                f"{t['kwargs'].get('maxfunevals', THEIRS_DEFAULT_EVALS)}: {t['reduction']:.1f} vs "
+                f"{scale_reduction(scaled, t['hausdorff_rel']):.1f}" for t in flat) + ")" if flat else ""))
+    if default is not None:
+        ref = scale_reduction(scaled, default["hausdorff_rel"])
+        text += (f", and our default {'more' if default['reduction'] > ref else 'no more'} "
+                 f"({default['reduction']:.1f} vs {ref:.1f})")
+    return text
+
+
 def verdict(mesh: str, rows: list[dict]) -> str:
     good = [r for r in rows if r["mesh"] == mesh and "error" not in r]
     ours = [r for r in good if r["filter"] == "ours" and r["series"] != FREE_BOUNDARY]
@@ -301,7 +356,7 @@ def verdict(mesh: str, rows: list[dict]) -> str:
                      + (f"; it moves more than any MeshLab point, whose largest H/diag is {h_max:.1e})"
                         if h > h_max else ")"))
         text += f"; our default ({default['reduction']:.0f} %, H/diag {h:.1e}) is {where}"
-    return text
+    return text + no_better_than_scale(mesh, rows)
 
 
 def plot(rows: list[dict], meshes: list[str], out_png: str) -> None:
@@ -416,7 +471,10 @@ def main() -> int:
                 "sum of |K| (angle defect / mixed Voronoi area) over interior vertices; Hausdorff = "
                 "symmetric, over the input's bounding-box diagonal; mean distance = the larger of the "
                 "two directions' means; max move = max |v' - v| in the input's average edge length "
-                "(AE); time = the filter alone (quasidev's engine time, the pymeshlab call).\n\n")
+                "(AE); time = the filter alone (quasidev's engine time, the pymeshlab call). The grey "
+                "series is a reference: the input only scaled up about its bounding box's centre, "
+                "which changes no shape but lowers G_ABD as 1/s²; the verdicts say which points remove "
+                "no more than that.\n\n")
         f.write(tab + "\n\n## Verdicts\n\n" + "\n".join(f"- {v}" for v in verdicts) + "\n")
     with open(os.path.join(args.out, "tradeoff.json"), "w") as f:
         json.dump({"quick": args.quick, "quasidev": os.path.relpath(args.quasidev, ROOT), "quasidev_version": version,

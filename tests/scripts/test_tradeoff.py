@@ -48,7 +48,7 @@ def test_both_filters_have_defaults_and_two_swept_points(result):
     assert len(series.pop("ours, default")) == 1
     assert len(series.pop("MeshLab, default (no remeshing)")) == 1
     assert series and all(len(v) == 2 for v in series.values())
-    assert {r["filter"] for r in rows} == {"ours", "MeshLab"}
+    assert {r["filter"] for r in rows} == {"ours", "MeshLab", "scaled"}
 
 
 def test_figures_are_sane(result):
@@ -75,3 +75,17 @@ def test_the_free_boundary_series_compares_like_with_like(result):
     assert max(r["boundary_move_ae"] for r in freed) > 0
     assert max(r["boundary_move_ae"] for r in rows if r["filter"] == "MeshLab") > 0
     assert "with it free (--free-boundary), ours above at" in stdout
+
+
+def test_the_scaled_reference_follows_the_scale_law_and_the_verdict_names_it(result):
+    """G_ABD, a sum of |K|, falls as 1/s^2 when the mesh grows by s while no shape changes, and
+    the Hausdorff distance grows with s - 1: the reference a filter's points are judged against."""
+    _, stdout, data = result
+    scaled = sorted((r for r in data["rows"] if r["filter"] == "scaled"), key=lambda r: r["scale"])
+    assert len(scaled) == 2
+    for r in scaled:
+        assert abs(r["reduction"] - 100 * (1 - 1 / r["scale"] ** 2)) < 0.01
+    slopes = [r["hausdorff_rel"] / (r["scale"] - 1) for r in scaled]
+    assert 0 < slopes[0] and abs(slopes[1] / slopes[0] - 1) < 0.1
+    assert "scaling the input up (no shape change) removes" in stdout
+    assert "MeshLab points remove no more than such a scale" in stdout

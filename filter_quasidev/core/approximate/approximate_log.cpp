@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "approximate/deformer.h"
+#include "approximate/patch_fit.h"
 #include "approximate/report_text.h"
 #include "approximate/segment_first.h"
 #include "common/format_text.h"
@@ -109,9 +110,16 @@ std::vector<std::string> advice(const Result& r, const Params& params, double he
 
 std::vector<std::string> approximate_log(const Result& r,
                                          const std::vector<std::vector<int>>& reruns,
-                                         const Params& params, double held_share) {
+                                         const Params& params, double held_share,
+                                         bool all_at_once_skipped) {
   std::vector<std::string> log;
   for (const std::string& w : r.warnings) log.push_back("warning: " + w);
+  if (all_at_once_skipped)
+    log.push_back(format_text(
+        "note: above %ld vertices auto races no term on all patches at once, so that pass is "
+        "skipped: the patches are solved with their seams held, then free, each racing its "
+        "own terms (--developability curve, defect or both runs it)",
+        static_cast<long>(kMaxDefectRaceVertices)));
   for (const PatchJoin& j : r.joins)
     log.push_back("note: patch " + std::to_string(j.patch) + " (" + std::to_string(j.faces) +
                   (j.faces == 1 ? " face" : " faces") + ") has " +

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "approximate/common_names.h"
+#include "approximate/patch_fit.h"
 #include "approximate/solve_rounds.h"
 #include "common/idle_threads.h"
 #include "common/metrics.h"
@@ -160,8 +161,11 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
     }
     passes.back().last = groups.size();
   };
+  const bool all_at_once_skipped = params.seams == SeamMode::Free &&
+                                   params.developability == Developability::Auto &&
+                                   in.input.rows() > kMaxDefectRaceVertices;
   if (params.seams == SeamMode::Free) {
-    add_pass(SolvePass::AllAtOnce, constrained, false);
+    if (!all_at_once_skipped) add_pass(SolvePass::AllAtOnce, constrained, false);
     add_pass(SolvePass::SeamsHeld, held, true);
     add_pass(SolvePass::SeamsFree, constrained, true);
   } else {
@@ -173,6 +177,7 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
   // rounds left. With a total tolerance each pass moves a vertex only by what the earlier
   // passes left of its budget.
   SolveSchedule out;
+  out.all_at_once_skipped = all_at_once_skipped;
   out.V = in.input;
   out.runs.resize(groups.size());
   DecidedTerms decided;  // by the races of the first pass, for the later ones

@@ -4,7 +4,12 @@
 // one group (its one step scale is set by the worst patch; Developability::Auto races one term
 // for all of them), then each solve group with its seams held (where Auto measures each patch's
 // own term, which the last pass keeps), then each again moving its seam vertices (moved by one
-// group, seen by the next, so they stay shared).
+// group, seen by the next, so they stay shared). Under Auto, a mesh above
+// kMaxDefectRaceVertices skips the first: in one group that large Auto races no term and would
+// run the curve term alone, a choice it did not measure, while the later passes race each
+// patch's terms. On generated closed shapes of 80k–100k faces the first pass took 35–80 % of
+// the time and left as much or more G_ABD on 7 of 10, moving vertices up to 10 times as far
+// (docs/performance.md, "Closed meshes").
 #pragma once
 
 #include <vector>
@@ -29,6 +34,7 @@ struct SolveSchedule {
   Positions V;                           // the positions after the last pass
   std::vector<ScheduledRun> runs;        // the groups' last runs, pass by pass
   std::vector<std::vector<int>> reruns;  // the patch ids of each round solved again in turn
+  bool all_at_once_skipped = false;      // free seams, Auto, above kMaxDefectRaceVertices
   std::vector<ScheduledRun> replaced;    // fresh runs of groups that then ran again
   StageTimes replaced_times;             // the work of every run made here that was replaced
 };
