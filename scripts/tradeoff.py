@@ -214,11 +214,10 @@ def run_meshlab(path: str, kwargs: dict, before: dict) -> dict:
 def run_scaled(path: str, scale: float, before: dict) -> dict:
     """The input scaled by `scale` about its bounding box's centre, measured as an output."""
     import pymeshlab
-    ms = load_pair(path)
+    ms = pymeshlab.MeshSet()
+    ms.load_new_mesh(path)
     V, F = ms.mesh(0).vertex_matrix(), ms.mesh(0).face_matrix()
     centre = (V.max(axis=0) + V.min(axis=0)) / 2
-    ms = pymeshlab.MeshSet()
-    ms.add_mesh(pymeshlab.Mesh(vertex_matrix=V, face_matrix=F))
     ms.add_mesh(pymeshlab.Mesh(vertex_matrix=centre + scale * (V - centre), face_matrix=F))
     fig = measure(ms, before)
     fig.update(time_s=0.0, scale=scale)

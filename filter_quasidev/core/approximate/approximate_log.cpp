@@ -7,6 +7,7 @@
 #include "approximate/patch_fit.h"
 #include "approximate/report_text.h"
 #include "approximate/segment_first.h"
+#include "approximate/solve_schedule.h"
 #include "common/format_text.h"
 
 namespace qd::approximate {
@@ -110,11 +111,10 @@ std::vector<std::string> advice(const Result& r, const Params& params, double he
 
 std::vector<std::string> approximate_log(const Result& r,
                                          const std::vector<std::vector<int>>& reruns,
-                                         const Params& params, double held_share,
-                                         bool all_at_once_skipped) {
+                                         const Params& params, double held_share) {
   std::vector<std::string> log;
   for (const std::string& w : r.warnings) log.push_back("warning: " + w);
-  if (all_at_once_skipped)
+  if (skips_all_at_once(params, r.V.rows()))
     log.push_back(format_text(
         "note: above %ld vertices auto races no term on all patches at once, so that pass is "
         "skipped: the patches are solved with their seams held, then free, each racing its "

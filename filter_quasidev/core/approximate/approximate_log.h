@@ -13,12 +13,10 @@ namespace qd::approximate {
 
 // The log of a solve: its warnings, the patches solved in another's group (r.joins), the rounds
 // solved again (solve_schedule.h), a line per patch, the total and, when little was removed,
-// advice. held_share: percent of the input's G_ABD on interior vertices that no group moved;
-// all_at_once_skipped: free seams skipped the pass of all patches at once (solve_schedule.h).
+// advice. held_share: percent of the input's G_ABD on interior vertices that no group moved.
 std::vector<std::string> approximate_log(const Result& r,
                                          const std::vector<std::vector<int>>& reruns,
-                                         const Params& params, double held_share,
-                                         bool all_at_once_skipped);
+                                         const Params& params, double held_share);
 
 // The note of a mesh solved both with the patches that have more of their curvature on their
 // seams than inside joined to a neighbour and with their seams held, and which was kept.

@@ -38,7 +38,6 @@ struct GroupedSolve {
   std::vector<ScheduledRun> fresh;
   std::vector<std::vector<int>> reruns;
   double held_share = 0;
-  bool all_at_once_skipped = false;
 };
 
 // What a solve of the patches in one grouping into solve groups runs from: the topology of the
@@ -109,8 +108,7 @@ GroupedSolve solve_in_groups(const Problem& problem, const GroupedInput& grouped
   const double held_share =
       held_curvature_share(r.k_before, in.interior, grouped.roles.constrained);
   std::vector<std::vector<int>> reruns = schedule.reruns;
-  const bool skipped = schedule.all_at_once_skipped;
-  return {std::move(r), fresh_runs(std::move(schedule)), std::move(reruns), held_share, skipped};
+  return {std::move(r), fresh_runs(std::move(schedule)), std::move(reruns), held_share};
 }
 
 // Joined seams are kept when they remove at least this much more of G_ABD (percentage points,
@@ -198,8 +196,7 @@ Result approximate_patches(const Problem& problem, const Topology& patch_topo,
   Result& r = solve.result;
   r.time_ms = ms_since(t0);
   // Made last, so that its total gives the work of every solve the result took.
-  r.log =
-      approximate_log(r, solve.reruns, problem.params, solve.held_share, solve.all_at_once_skipped);
+  r.log = approximate_log(r, solve.reruns, problem.params, solve.held_share);
   if (r.join_trial) r.log.insert(r.log.begin(), join_trial_note(*r.join_trial));
   if (progress) progress(100, "done");
   return std::move(solve.result);

@@ -143,6 +143,11 @@ std::vector<std::vector<int>> faces_by_group(const std::vector<int>& group) {
 
 }  // namespace
 
+bool skips_all_at_once(const Params& params, Eigen::Index vertices) {
+  return params.seams == SeamMode::Free && params.developability == Developability::Auto &&
+         vertices > kMaxDefectRaceVertices;
+}
+
 SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
                            const std::vector<char>& constrained, const std::vector<char>& held,
                            const std::vector<ScheduledRun>& earlier, const Progress& progress) {
@@ -161,11 +166,9 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
     }
     passes.back().last = groups.size();
   };
-  const bool all_at_once_skipped = params.seams == SeamMode::Free &&
-                                   params.developability == Developability::Auto &&
-                                   in.input.rows() > kMaxDefectRaceVertices;
   if (params.seams == SeamMode::Free) {
-    if (!all_at_once_skipped) add_pass(SolvePass::AllAtOnce, constrained, false);
+    if (!skips_all_at_once(params, in.input.rows()))
+      add_pass(SolvePass::AllAtOnce, constrained, false);
     add_pass(SolvePass::SeamsHeld, held, true);
     add_pass(SolvePass::SeamsFree, constrained, true);
   } else {
@@ -177,7 +180,6 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
   // rounds left. With a total tolerance each pass moves a vertex only by what the earlier
   // passes left of its budget.
   SolveSchedule out;
-  out.all_at_once_skipped = all_at_once_skipped;
   out.V = in.input;
   out.runs.resize(groups.size());
   DecidedTerms decided;  // by the races of the first pass, for the later ones

@@ -34,10 +34,13 @@ struct SolveSchedule {
   Positions V;                           // the positions after the last pass
   std::vector<ScheduledRun> runs;        // the groups' last runs, pass by pass
   std::vector<std::vector<int>> reruns;  // the patch ids of each round solved again in turn
-  bool all_at_once_skipped = false;      // free seams, Auto, above kMaxDefectRaceVertices
   std::vector<ScheduledRun> replaced;    // fresh runs of groups that then ran again
   StageTimes replaced_times;             // the work of every run made here that was replaced
 };
+
+// Free seams skip the pass of all patches at once (above): Auto on a mesh of more than
+// kMaxDefectRaceVertices vertices.
+bool skips_all_at_once(const Params& params, Eigen::Index vertices);
 
 // group: solve group per face (solve_groups.h); constrained: per vertex, held with free seams;
 // held: held with fixed seams; earlier: fresh runs of another solve of the same input (a join
