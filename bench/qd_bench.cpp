@@ -18,6 +18,7 @@
 #include "approximate/quasidev.h"
 #include "bare_solver.h"
 #include "bench_mesh.h"
+#include "blas_kernels.h"
 #include "common/error.h"
 #include "io/atomic_file.h"
 #include "io/mesh_reader.h"
@@ -218,6 +219,7 @@ void run(const Args& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  qd::cli::restart_with_fast_blas_kernels(argv);  // the kernels the command runs on
   try {
     run(parse(argc, argv));
     return 0;

@@ -25,6 +25,7 @@
 #include "approximate/quasidev.h"
 #include "approximate_params.h"
 #include "approximate_report_json.h"
+#include "blas_kernels.h"
 #include "common/format_text.h"
 #include "cut_marker.h"
 #include "flatten/flatten.h"
@@ -292,6 +293,7 @@ int fail(const std::string& reason, int status) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  qd::cli::restart_with_fast_blas_kernels(argv);
   std::signal(SIGPIPE, SIG_IGN);  // a closed stdout must not kill the command by a signal
   if (argc > 1 && std::string(argv[1]) == "batch") return qd::cli::run_python_batch(argc, argv);
   try {

@@ -2,6 +2,7 @@
 
 #include "approximate/report_text.h"
 #include "approximate_params.h"
+#include "common/serial_libraries.h"
 #include "params_json.h"
 #include "report_text.h"
 
@@ -125,6 +126,7 @@ std::string report_json(const approximate::Result& result, const ReportContext& 
                        {"factorizations", result.factorizations},
                        {"time_ms", result.time_ms},
                        {"stage_ms", stage_times(result.times)},
+                       {"blas_kernels", common::loaded_blas_core()},
                        {"patches", patches},
                        {"joins", joins(result)},
                        {"join_trial", join_trial(result.join_trial)},

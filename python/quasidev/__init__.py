@@ -12,12 +12,16 @@ engine of the `quasidev` command and the MeshLab filters.
 
 from importlib.metadata import PackageNotFoundError, version
 
-from ._approximate import ApproximateResult, approximate
-from ._batch import BatchSummary, batch
-from ._files import Mesh, read, write
-from ._flatten import FlattenResult, flatten
-from ._params import DECLARATION
-from ._segment import SegmentResult, segment
+from . import _blas_kernels
+
+_blas_kernels.choose_blas_kernels()  # before the engine below loads OpenBLAS
+
+from ._approximate import ApproximateResult, approximate  # noqa: E402
+from ._batch import BatchSummary, batch  # noqa: E402
+from ._files import Mesh, read, write  # noqa: E402
+from ._flatten import FlattenResult, flatten  # noqa: E402
+from ._params import DECLARATION  # noqa: E402
+from ._segment import SegmentResult, segment  # noqa: E402
 
 try:
     __version__ = version("quasidev")

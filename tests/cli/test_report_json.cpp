@@ -91,6 +91,7 @@ TEST(ReportJson, KeepsTheKeyOrderAndWritesValidUtf8) {
                                              "factorizations",
                                              "time_ms",
                                              "stage_ms",
+                                             "blas_kernels",
                                              "patches",
                                              "joins",
                                              "join_trial",

@@ -16,6 +16,12 @@ Function loaded(const char* name) {
 
 }  // namespace
 
+std::string loaded_blas_core() {
+  const auto core_name = loaded<const char* (*)()>("openblas_get_corename");
+  const char* name = core_name ? core_name() : nullptr;
+  return name ? name : "";
+}
+
 void serial_openmp_in_this_thread() {
   static const auto set_levels = loaded<SetCount>("omp_set_max_active_levels");
   if (set_levels) set_levels(0);

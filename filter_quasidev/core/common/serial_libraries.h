@@ -14,7 +14,14 @@
 // once would each open CHOLMOD's 4-thread regions.
 #pragma once
 
+#include <string>
+
 namespace qd::common {
+
+// The core type whose kernels the OpenBLAS loaded in this process runs ("SkylakeX", "Haswell",
+// "Prescott", ...), or empty where no OpenBLAS is loaded. OpenBLAS picks it by CPU model when it
+// is loaded, or takes OPENBLAS_CORETYPE (cli/blas_kernels.h).
+std::string loaded_blas_core();
 
 // OpenMP regions opened from the calling thread run on it alone (a thread the engine started).
 void serial_openmp_in_this_thread();

@@ -1,0 +1,25 @@
+// The dense kernels under the engine's factorisations. OpenBLAS picks them by CPU model when it
+// is loaded; Debian 12's OpenBLAS 0.3.21 does not know recent Intel models (e.g. Xeon family 6
+// model 207) and falls back to its "Prescott" SSE3 kernels, on which the garments' and the 1M
+// meshes' factorisations ran 1.3–2 times slower than on the AVX-512 or AVX2 kernels the CPU has
+// (docs/performance.md, "BLAS kernels"). OpenBLAS reads OPENBLAS_CORETYPE only when it is loaded,
+// so a process must be started with it: the command (and qd_bench) run themselves again with it
+// set, before doing anything else, where OpenBLAS fell back to Prescott on a CPU with AVX2 and
+// FMA (a true Prescott has neither). A value the user set is kept. Hosts such as MeshLab and
+// Python load OpenBLAS before our code runs: there the user sets the variable (docs/install.md).
+#pragma once
+
+#include <string>
+
+namespace qd::cli {
+
+// The OpenBLAS core type whose kernels this CPU's instructions run: "SkylakeX" (AVX-512 F, BW,
+// DQ and VL), "Haswell" (AVX2 and FMA), or empty.
+std::string blas_core_for_this_cpu();
+
+// Runs this program again (the same arguments) with OPENBLAS_CORETYPE set to
+// blas_core_for_this_cpu() where OpenBLAS fell back to Prescott and the variable is unset;
+// returns, and the program goes on as it is, where that is not so or the new start fails.
+void restart_with_fast_blas_kernels(char** argv);
+
+}  // namespace qd::cli

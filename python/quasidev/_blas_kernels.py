@@ -1,0 +1,50 @@
+"""The dense kernels under the engine's factorisations, chosen before the engine loads OpenBLAS.
+
+Debian 12's OpenBLAS 0.3.21 picks its kernels by CPU model when it is loaded and falls back to its
+Prescott (SSE3) kernels on models it does not know, where the factorisations ran 1.3-2 times
+slower than on the AVX-512 or AVX2 kernels the CPU has (docs/performance.md, "BLAS kernels"). It
+reads OPENBLAS_CORETYPE only when loaded, so, as the command does (cli/blas_kernels.h): where the
+variable is unset and OpenBLAS, loaded in a short-lived probe process, names Prescott on a CPU
+with AVX2 and FMA (a true Prescott has neither), it is set before quasidev._engine loads
+OpenBLAS. A value the user set is kept; a process that loaded OpenBLAS already keeps its kernels.
+"""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+
+_PROBE = ("import ctypes\n"
+          "name = ctypes.CDLL('libopenblas.so.0').openblas_get_corename\n"
+          "name.restype = ctypes.c_char_p\n"
+          "print(name().decode())")
+
+
+def core_for_this_cpu() -> str:
+    """"SkylakeX" (AVX-512 F, BW, DQ and VL), "Haswell" (AVX2 and FMA), or ""."""
+    try:
+        with open("/proc/cpuinfo") as f:
+            flags = next((set(line.split(":", 1)[1].split()) for line in f
+                          if line.startswith("flags")), set())
+    except OSError:
+        return ""
+    if {"avx512f", "avx512bw", "avx512dq", "avx512vl"} <= flags:
+        return "SkylakeX"
+    return "Haswell" if {"avx2", "fma"} <= flags else ""
+
+
+def choose_blas_kernels() -> None:
+    """Sets OPENBLAS_CORETYPE where it is unset and OpenBLAS would fall back to Prescott."""
+    if "OPENBLAS_CORETYPE" in os.environ:
+        return
+    core = core_for_this_cpu()
+    if not core:
+        return
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
+    try:
+        probe = subprocess.run([sys.executable, "-I", "-S", "-c", _PROBE], env=env,
+                               capture_output=True, text=True, timeout=30)
+    except (OSError, subprocess.SubprocessError):
+        return
+    if probe.returncode == 0 and probe.stdout.strip() == "Prescott":
+        os.environ["OPENBLAS_CORETYPE"] = core
