@@ -29,7 +29,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from mesh_family import average_edge, jitter_vertices, write_ply  # noqa: E402
+from mesh_family import average_edge, jitter_vertices, subdivide, write_ply  # noqa: E402
 
 SHAPES = ("ellipsoid", "torus", "capsule", "roundbox", "blob")
 
@@ -56,13 +56,7 @@ def icosphere(level: int) -> tuple[np.ndarray, np.ndarray]:
                   (5, 11, 4), (11, 10, 2), (10, 7, 6), (7, 1, 8), (3, 9, 4), (3, 4, 2), (3, 2, 6),
                   (3, 6, 8), (3, 8, 9), (4, 9, 5), (2, 4, 11), (6, 2, 10), (8, 6, 7), (9, 8, 1)])
     for _ in range(level):
-        E = np.sort(np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]), axis=1)
-        edges, inverse = np.unique(E, axis=0, return_inverse=True)
-        ab, bc, ca = len(V) + inverse.ravel().reshape(3, -1)
-        a, b, c = F.T
-        V = np.vstack([V, (V[edges[:, 0]] + V[edges[:, 1]]) / 2])
-        F = np.concatenate([np.stack(f, axis=1) for f in
-                            ((a, ab, ca), (b, bc, ab), (c, ca, bc), (ab, bc, ca))])
+        V, F = subdivide(V, F, np.zeros(len(F)))[:2]
     return V / np.linalg.norm(V, axis=1, keepdims=True), F
 
 
