@@ -1,12 +1,13 @@
 """The dense kernels under the engine's factorisations, chosen before the engine loads OpenBLAS.
 
 Debian 12's OpenBLAS 0.3.21 picks its kernels by CPU model when it is loaded and falls back to its
-Prescott (SSE3) kernels on models it does not know, where the factorisations ran 1.3-2 times
-slower than on the AVX-512 or AVX2 kernels the CPU has (docs/performance.md, "BLAS kernels"). It
-reads OPENBLAS_CORETYPE only when loaded, so, as the command does (cli/blas_kernels.h): where the
-variable is unset and OpenBLAS, loaded in a short-lived probe process, names Prescott on a CPU
-with AVX2 and FMA (a true Prescott has neither), it is set before quasidev._engine loads
-OpenBLAS. A value the user set is kept; a process that loaded OpenBLAS already keeps its kernels.
+Prescott (SSE3) kernels on models it does not know, where the factorisations ran 1.3-3.4 times
+slower than on the AVX-512 kernels the CPU has, the engine 1.1-1.5 times (docs/performance.md,
+"BLAS kernels"). It reads OPENBLAS_CORETYPE only when loaded, so, as the command does
+(cli/blas_kernels.h): where the variable is unset and OpenBLAS, loaded in a short-lived probe
+process (about 0.05-0.1 s), names Prescott on a CPU with AVX2 and FMA (a true Prescott has
+neither), it is set before quasidev._engine loads OpenBLAS. A value the user set is kept; a
+process that loaded OpenBLAS already keeps its kernels.
 """
 from __future__ import annotations
 
