@@ -3,11 +3,15 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <string>
 
 #include "common/serial_libraries.h"
 
 namespace qd::cli {
+namespace {
 
+// The OpenBLAS core type whose kernels this CPU's instructions run: "SkylakeX" (AVX-512 F, BW,
+// DQ and VL), "Haswell" (AVX2 and FMA), or empty.
 std::string blas_core_for_this_cpu() {
   __builtin_cpu_init();
   if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
@@ -16,6 +20,8 @@ std::string blas_core_for_this_cpu() {
   if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) return "Haswell";
   return "";
 }
+
+}  // namespace
 
 void restart_with_fast_blas_kernels(char** argv) {
   if (std::getenv("OPENBLAS_CORETYPE") || common::loaded_blas_core() != "Prescott") return;

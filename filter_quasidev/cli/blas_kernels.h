@@ -10,16 +10,11 @@
 // plugin, so there the user sets it (docs/install.md).
 #pragma once
 
-#include <string>
-
 namespace qd::cli {
 
-// The OpenBLAS core type whose kernels this CPU's instructions run: "SkylakeX" (AVX-512 F, BW,
-// DQ and VL), "Haswell" (AVX2 and FMA), or empty.
-std::string blas_core_for_this_cpu();
-
-// Runs this program again (the same arguments) with OPENBLAS_CORETYPE set to
-// blas_core_for_this_cpu() where OpenBLAS fell back to Prescott and the variable is unset;
+// Runs this program again (the same arguments) with OPENBLAS_CORETYPE set to the core type whose
+// kernels this CPU's instructions run ("SkylakeX" with AVX-512 F, BW, DQ and VL, else "Haswell"
+// with AVX2 and FMA) where OpenBLAS fell back to Prescott and the variable is unset;
 // returns, and the program goes on as it is, where that is not so or the new start fails.
 void restart_with_fast_blas_kernels(char** argv);
 

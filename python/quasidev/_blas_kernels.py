@@ -5,20 +5,35 @@ Prescott (SSE3) kernels on models it does not know, where the factorisations ran
 slower than on the AVX-512 kernels the CPU has, the engine 1.1-1.5 times (docs/performance.md,
 "BLAS kernels"). It reads OPENBLAS_CORETYPE only when loaded, so, as the command does
 (cli/blas_kernels.h): where the variable is unset and OpenBLAS, loaded in a short-lived probe
-process (about 0.05-0.1 s), names Prescott on a CPU with AVX2 and FMA (a true Prescott has
-neither), it is set before quasidev._engine loads OpenBLAS. A value the user set is kept; a
-process that loaded OpenBLAS already keeps its kernels.
+process (about 0.05 s), names Prescott on a CPU with AVX2 and FMA (a true Prescott has neither),
+it is set before quasidev._engine loads OpenBLAS. The probe loads the extension itself, so it asks
+the OpenBLAS the engine links, whichever file that is: Debian's libopenblas for a source install,
+the copy auditwheel renamed into quasidev.libs for the repaired wheel. A value the user set is
+kept; a process that loaded OpenBLAS already keeps its kernels.
 """
 from __future__ import annotations
 
+import importlib.machinery
 import os
 import subprocess
 import sys
 
-_PROBE = ("import ctypes\n"
-          "name = ctypes.CDLL('libopenblas.so.0').openblas_get_corename\n"
+# Loads the extension (argv[1]) with its libraries into the global scope, then asks OpenBLAS.
+_PROBE = ("import ctypes, os, sys\n"
+          "ctypes.CDLL(sys.argv[1], mode=os.RTLD_GLOBAL)\n"
+          "name = ctypes.CDLL(None).openblas_get_corename\n"
           "name.restype = ctypes.c_char_p\n"
           "print(name().decode())")
+
+
+def _engine_path() -> str:
+    """The file of quasidev._engine, found without importing it."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    for suffix in importlib.machinery.EXTENSION_SUFFIXES:
+        path = os.path.join(here, "_engine" + suffix)
+        if os.path.exists(path):
+            return path
+    return ""
 
 
 def core_for_this_cpu() -> str:
@@ -38,12 +53,12 @@ def choose_blas_kernels() -> None:
     """Sets OPENBLAS_CORETYPE where it is unset and OpenBLAS would fall back to Prescott."""
     if "OPENBLAS_CORETYPE" in os.environ:
         return
-    core = core_for_this_cpu()
-    if not core:
+    core, engine = core_for_this_cpu(), _engine_path()
+    if not core or not engine:
         return
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1")
     try:
-        probe = subprocess.run([sys.executable, "-I", "-S", "-c", _PROBE], env=env,
+        probe = subprocess.run([sys.executable, "-I", "-S", "-c", _PROBE, engine], env=env,
                                capture_output=True, text=True, timeout=30)
     except (OSError, subprocess.SubprocessError):
         return

@@ -1,6 +1,8 @@
 """The repaired wheel's smoke test, run by scripts/test_wheel.sh inside a minimal Debian 12 chroot
 that has neither SuiteSparse nor OpenBLAS: quasidev imports with the libraries auditwheel bundled
-in quasidev.libs, reads a sample mesh, and segment, approximate and flatten give real results.
+in quasidev.libs, reads a sample mesh, and segment, approximate and flatten give real results. On
+a CPU with AVX2 and FMA the bundled OpenBLAS runs the CPU's kernels, not its Prescott fallback
+(quasidev/_blas_kernels.py asks the copy the engine links, whatever auditwheel renamed it to).
 
     python wheel_smoke.py MESH.ply
 """
@@ -11,6 +13,7 @@ import sys
 
 import numpy as np
 import quasidev
+from quasidev._blas_kernels import core_for_this_cpu
 
 SYSTEM_LIB_DIRS = ["/lib", "/lib64", "/usr/lib", "/usr/lib64", "/usr/local/lib"]
 ABSENT = ["libcholmod*", "libopenblas*", "libsuitesparse*", "libblas.so*", "liblapack.so*"]
@@ -49,6 +52,11 @@ def main(mesh_path):
     assert after <= 0.5 * before, (before, after)
     assert r.positions.shape == V.shape and np.isfinite(r.positions).all()
     print(f"approximate: G_ABD {before:.4g} -> {after:.4g}")
+    kernels = r.report["blas_kernels"]
+    assert kernels, "the bundled BLAS is not OpenBLAS"
+    if core_for_this_cpu():  # AVX2 and FMA at least
+        assert kernels != "Prescott", kernels
+    print(f"dense kernels: {kernels}")
 
     flat = quasidev.flatten(r.positions, F, seg.patches)
     assert flat.uv.shape == (len(F), 3, 2) and np.isfinite(flat.uv).all()
