@@ -13,7 +13,7 @@ kept; a process that loaded OpenBLAS already keeps its kernels.
 """
 from __future__ import annotations
 
-import importlib.machinery
+import importlib.util
 import os
 import subprocess
 import sys
@@ -28,12 +28,8 @@ _PROBE = ("import ctypes, os, sys\n"
 
 def _engine_path() -> str:
     """The file of quasidev._engine, found without importing it."""
-    here = os.path.dirname(os.path.abspath(__file__))
-    for suffix in importlib.machinery.EXTENSION_SUFFIXES:
-        path = os.path.join(here, "_engine" + suffix)
-        if os.path.exists(path):
-            return path
-    return ""
+    spec = importlib.util.find_spec(f"{__package__}._engine")
+    return spec.origin if spec and spec.origin else ""
 
 
 def core_for_this_cpu() -> str:
