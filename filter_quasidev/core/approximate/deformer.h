@@ -98,6 +98,10 @@ class Deformation {
   double best_g_abd() const { return best_.g_abd; }
   const Figures& best() const { return best_; }     // the best iterate's figures
   const Figures& current() const { return last_; }  // the last accepted iterate's
+  // Whether the never-worse rule shortened the last accepted step (a full one was refused).
+  bool last_step_shortened() const {
+    return !out_.history.empty() && out_.history.back().step_scale < 1;
+  }
   // The best G_ABD after each accepted iteration ([0]: the input's).
   const std::vector<double>& best_track() const { return best_track_; }
   // Accepted iterations since the current phase began (the input, re-fitted targets, moved

@@ -193,7 +193,10 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
         if (k != lead && behind(k)) drop(k);
     if (lead_runs && round >= drop_worst_after && !worst_dropped) {
       worst_dropped = true;
-      if (std::count(dropped.begin(), dropped.end(), 0) > 2) drop(trailer(runs, dropped));
+      // A trailer whose last step was shortened is ranked by steps it was not allowed to take.
+      const size_t worst = trailer(runs, dropped);
+      if (std::count(dropped.begin(), dropped.end(), 0) > 2 && !runs[worst].last_step_shortened())
+        drop(worst);
     }
     if (spent(runs[lead])) {
       for (size_t k = 0; k < runs.size(); ++k) dropped[k] = k != lead;
