@@ -232,7 +232,7 @@ TEST(AngleDefect, AutoStopsACandidateThatRemovesNothing) {
   p.params.segment_first = SegmentFirst::Never;
   const Result r = approximate::approximate(p);
   const PatchReport& patch = r.patches[0];
-  ASSERT_EQ(patch.candidates.size(), 3u);
+  ASSERT_GE(patch.candidates.size(), 3u);  // and the stronger rows, where they ran
   bool nothing = false;
   for (const CandidateReport& c : patch.candidates) {
     if (c.abd_reduction > 0) continue;
@@ -248,8 +248,9 @@ TEST(AngleDefect, AutoStopsACandidateThatRemovesNothing) {
 // targets' first step removed nothing and the rows' first step removed some: where the rows then
 // run to maxIter it never starts, the log says why, and the patch keeps a run of the others,
 // exactly as that term alone gives it. Where the rows stop short of maxIter it starts then, from
-// the same start, is judged by its own steps (here: it removes nothing, and stops after
-// kNothingRounds), and the log says it started late.
+// the same start, is judged by its own steps, and the log says it started late (here its first
+// kNothingRounds steps remove nothing; the race fits its curve again rather than drop it, as its
+// own stop rule would at that stall, and it ends with less G_ABD than the rows).
 TEST(AngleDefect, AutoStartsBothOnlyWhenTheRowsStopShortWhereTheTargetsFirstStepRemovesNothing) {
   Problem p = wrinkled_sheet(24, 0.08);
   p.params.tolerance = 1.0;
@@ -272,14 +273,24 @@ TEST(AngleDefect, AutoStartsBothOnlyWhenTheRowsStopShortWhereTheTargetsFirstStep
     const Result r = approximate::approximate(q);
     const PatchReport& patch = r.patches[0];
     const bool late = max_iter == p.params.max_iter;  // the rows stop before maxIter
-    ASSERT_EQ(patch.candidates.size(), 3u);  // the rows won: no stronger rows (group_run.h)
-    for (const CandidateReport& c : patch.candidates) {
+    // Where the rows win, no stronger rows run after them (group_run.h).
+    ASSERT_GE(patch.candidates.size(), 3u);
+    if (!late) {
+      ASSERT_EQ(patch.candidates.size(), 3u);
+    }
+    for (size_t k = 0; k < 3; ++k) {
+      const CandidateReport& c = patch.candidates[k];
       EXPECT_EQ(c.started(), late || c.term != Term::Both) << term_name(c.term);
       EXPECT_EQ(c.late, late && c.term == Term::Both) << term_name(c.term);
       if (c.term == Term::Both) {
         EXPECT_EQ(c.not_run, late ? NotRun::No : NotRun::TargetsRemovedNothing);
-        EXPECT_EQ(c.iterations, late ? kNothingRounds : 0);
-        EXPECT_FALSE(c.kept);
+        if (late) {
+          EXPECT_GT(c.iterations, kNothingRounds);
+          EXPECT_GT(c.abd_reduction, patch.candidates[1].abd_reduction);  // beyond the rows
+        } else {
+          EXPECT_EQ(c.iterations, 0);
+          EXPECT_FALSE(c.kept);
+        }
       }
     }
     const std::string text = term_choice_text(patch);
@@ -287,12 +298,14 @@ TEST(AngleDefect, AutoStartsBothOnlyWhenTheRowsStopShortWhereTheTargetsFirstStep
         text.find("both not run: the first step of curve removed nothing") != std::string::npos,
         !late)
         << text;
-    EXPECT_EQ(
-        text.find("(started when the leader stopped; left after the trial)") != std::string::npos,
-        late)
-        << text;
-    EXPECT_EQ(patch.developability, Term::Defect) << text;
-    EXPECT_EQ(r.V, alone(Developability::Defect, max_iter).V);
+    EXPECT_EQ(text.find("(started when the leader stopped") != std::string::npos, late) << text;
+    const Result rows_alone = alone(Developability::Defect, max_iter);
+    if (late) {
+      EXPECT_LT(r.patches[0].after.g_abd, rows_alone.patches[0].after.g_abd) << text;
+    } else {
+      EXPECT_EQ(patch.developability, Term::Defect) << text;
+      EXPECT_EQ(r.V, rows_alone.V);
+    }
   }
 }
 

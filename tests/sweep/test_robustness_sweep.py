@@ -192,3 +192,13 @@ def test_a_trailer_on_a_shortened_step_is_not_dropped_for_its_rank():
     Dropped for its rank at round 3, it left auto 3.7 points behind. A trailer whose last step was
     shortened is not dropped for its rank (term_race.h), and auto keeps both."""
     assert_auto_keeps_both([mesh_family.Member("cone", 2, 0.16, 0, 1, 1)])
+
+
+def test_a_rejoined_term_is_fitted_again_rather_than_dropped_by_its_pace():
+    """The irregular cylinder with bumps of 2 AE, 0.08 wide (3k faces, cells slid by up to 0.1):
+    the curve term stops at a plateau at iteration 27 with 86 %; both, dropped at the keep-leader
+    round, rejoins, and its pace over its next steps (its targets stalling) would not take it
+    below the leader, so it was dropped at 84 %. Alone, its stop rule fits its curve again at
+    that stall and it ends at 89 %. A rejoined candidate with curve targets is now fitted again
+    instead of dropped (term_race.h), and auto keeps both."""
+    assert_auto_keeps_both([mesh_family.Member("cylinder", 2, 0.08, 0, 1, 1, 0.1)])

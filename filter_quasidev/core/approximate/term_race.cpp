@@ -127,6 +127,13 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
     return terms[k] == Term::Curve && round >= kPlateauIterations &&
            round + kPlateauIterations < max_iter && runs[k].refit_targets(true);
   };
+  // A rejoined candidate with curve targets that its steps since the rejoin would drop is fitted
+  // again instead, once, where its own budget leaves the new targets kPlateauIterations
+  // iterations: those steps say nothing of the phase its own stop rule would begin at that stall.
+  const auto refits_rejoined = [&](size_t k) {
+    return terms[k] != Term::Defect && runs[k].iterations() + kPlateauIterations < max_iter &&
+           runs[k].refit_targets(true);
+  };
   const auto drop = [&](size_t k) {
     if (dropped[k] || round < spared_until[k]) return;
     if (refits(k))
@@ -208,7 +215,8 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
         const int steps = round - rejoin_round[k] + 1;
         if (rejoin_round[k] > 0 && active(k) &&
             ((steps >= kNothingRounds && !(removed(k) > 0)) ||
-             (steps >= kPlateauIterations && !overtakes(k, lead))))
+             (steps >= kPlateauIterations && !overtakes(k, lead))) &&
+            !refits_rejoined(k))
           dropped[k] = 1;
       }
     }
