@@ -7,7 +7,9 @@ the best single term gives, but for at most one member in 30, and never loses mo
 points; no term folds a face. On the smooth members of the developable bases (plane, cylinder,
 cone) with bumps up to 1 AE, auto removes at least 90 %; on irregular triangulations of the
 smooth cylinders and cones with bumps 0.16 wide, at least 95 % on all but one member in eight. On
-bumps of 4 AE it keeps the best term on every member. docs/robustness.md gives the whole table,
+bumps of 4 AE it keeps the best term on every member. On 60 members of another seed, at
+amplitudes, widths and a jitter outside the grid, it keeps the best term on every one.
+docs/robustness.md gives the whole table,
 including the members where the 90 % is not reached (the tangent developable)."""
 import os
 import sys
@@ -36,8 +38,29 @@ def gap(row):
     return max(singles) - row["auto"]["reduction"]
 
 
-def test_auto_keeps_what_the_best_term_gives(rows):
+def assert_auto_ran(rows):
     assert all("error" not in row["auto"] for row in rows), [r["member"] for r in rows if "error" in r["auto"]]
+
+
+def assert_no_term_folds_a_face(rows):
+    folded = [(row["member"], t) for row in rows for t in TERMS
+              if "error" not in row[t] and row[t]["flipped"] > 0]
+    assert not folded
+
+
+def assert_smooth_bumps_on_developable_bases_go(rows, largest, members):
+    """Auto removes at least 90 % on the smooth members of the plane, cylinder and cone with
+    bumps up to `largest` AE (`members` of them)."""
+    smooth = [row for row in rows if row["smooth"] and row["base"] in ("plane", "cylinder", "cone")
+              and row["amplitude"] <= largest]
+    assert len(smooth) == members
+    low = [(row["member"], round(row["auto"]["reduction"], 1)) for row in smooth
+           if row["auto"]["reduction"] < 90.0]
+    assert not low
+
+
+def test_auto_keeps_what_the_best_term_gives(rows):
+    assert_auto_ran(rows)
     gaps = {row["member"]: gap(row) for row in rows}
     assert max(gaps.values()) <= 5.0, max(gaps.items(), key=lambda kv: kv[1])
     missed = [m for m, g in gaps.items() if g > 2.0]
@@ -45,18 +68,11 @@ def test_auto_keeps_what_the_best_term_gives(rows):
 
 
 def test_no_term_folds_a_face(rows):
-    folded = [(row["member"], t) for row in rows for t in TERMS
-              if "error" not in row[t] and row[t]["flipped"] > 0]
-    assert not folded
+    assert_no_term_folds_a_face(rows)
 
 
 def test_smooth_bumps_on_developable_bases_go(rows):
-    smooth = [row for row in rows if row["smooth"] and row["base"] in ("plane", "cylinder", "cone")
-              and row["amplitude"] <= 1]
-    assert len(smooth) == 3 * 2 * 2
-    low = [(row["member"], round(row["auto"]["reduction"], 1)) for row in smooth
-           if row["auto"]["reduction"] < 90.0]
-    assert not low
+    assert_smooth_bumps_on_developable_bases_go(rows, 1, 3 * 2 * 2)
 
 
 LARGE_BUMPS = [mesh_family.Member(b, 4, w, 0, 1, 1) for b in mesh_family.BASES for w in (0.08, 0.16)]
@@ -202,3 +218,22 @@ def test_a_rejoined_term_is_fitted_again_rather_than_dropped_by_its_pace():
     that stall and it ends at 89 %. A rejoined candidate with curve targets is now fitted again
     instead of dropped (term_race.h), and auto keeps both."""
     assert_auto_keeps_both([mesh_family.Member("cylinder", 2, 0.08, 0, 1, 1, 0.1)])
+
+
+# Members no rule was tuned on: another seed (other bump centres and jitter), and amplitudes,
+# widths and a jitter that the sweep's grid (and every member named above) does not hold.
+HELD_OUT = [mesh_family.Member(b, a, w, j, 1, 2) for b in mesh_family.BASES for a in (0.75, 1.5, 3)
+            for w in (0.12, 0.2) for j in (0, 0.1)]
+
+
+def test_auto_keeps_the_best_term_on_members_nobody_tuned_on():
+    """60 members of seed 2 at amplitudes, widths and a jitter outside the grid: auto keeps what
+    the best single term gives on every one, with no allowance (on the 120 members of
+    docs/heldout/robustness_sweep.md, 12k-face ones too, it lost at most 0.6 point); no term
+    folds a face; the smooth bumps of up to 1.5 AE on the developable bases go."""
+    rows = rs.sweep(HELD_OUT, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
+    assert_auto_ran(rows)
+    gaps = {row["member"]: round(gap(row), 1) for row in rows}
+    assert max(gaps.values()) <= 2.0, max(gaps.items(), key=lambda kv: kv[1])
+    assert_no_term_folds_a_face(rows)
+    assert_smooth_bumps_on_developable_bases_go(rows, 1.5, 3 * 2 * 2)
