@@ -22,6 +22,7 @@ import mesh_family  # noqa: E402
 import robustness_sweep as rs  # noqa: E402
 
 BUILD = os.environ.get("QD_BUILD_DIR", os.path.join(ROOT, "build"))
+QUASIDEV = os.path.join(BUILD, "bin", "quasidev")
 TERMS = ("curve", "defect", "both", "auto")
 MEMBERS = [mesh_family.Member(b, a, w, j, 1, 1) for b in mesh_family.BASES for a in (0.5, 1, 2)
            for w in (0.08, 0.16) for j in (0, 0.05, 0.2)]
@@ -29,13 +30,24 @@ MEMBERS = [mesh_family.Member(b, a, w, j, 1, 1) for b in mesh_family.BASES for a
 
 @pytest.fixture(scope="module")
 def rows():
-    return rs.sweep(MEMBERS, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
+    return sweep(MEMBERS)
+
+
+def sweep(members):
+    """Every member run with every term and with auto."""
+    return rs.sweep(members, TERMS, QUASIDEV, jobs=2)
 
 
 def gap(row):
     """Best single term's reduction minus auto's, percentage points."""
     singles = [row[t]["reduction"] for t in ("curve", "defect", "both") if "error" not in row[t]]
     return max(singles) - row["auto"]["reduction"]
+
+
+def assert_auto_keeps_the_best_term(rows):
+    """Auto is within 2 points of the best single term on every member."""
+    gaps = {row["member"]: round(gap(row), 1) for row in rows}
+    assert max(gaps.values()) <= 2.0, gaps
 
 
 def assert_auto_ran(rows):
@@ -82,9 +94,8 @@ def test_a_slow_starter_is_not_dropped_behind_a_lead_that_has_stopped():
     """Bumps of 4 AE: here one term often stops within a few iterations (a refused step, a
     plateau) while another starts slowly and removes more later. The race treats a stopped
     leader as final and lets the others run on, so auto keeps the best term on every member."""
-    rows = rs.sweep(LARGE_BUMPS, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
-    gaps = {row["member"]: round(gap(row), 1) for row in rows}
-    assert max(gaps.values()) <= 2.0, gaps
+    rows = sweep(LARGE_BUMPS)
+    assert_auto_keeps_the_best_term(rows)
 
 
 def test_a_term_that_takes_hold_late_is_not_stopped_at_the_keep_leader_round():
@@ -93,7 +104,7 @@ def test_a_term_that_takes_hold_late_is_not_stopped_at_the_keep_leader_round():
     lets a term run on whose pace over its last iterations would take it below the leader by
     the last iteration (term_race.h), so auto keeps both."""
     member = mesh_family.Member("cylinder", 2, 0.16, 0, 1, 1)
-    row = rs.sweep([member], TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)[0]
+    row = sweep([member])[0]
     assert gap(row) <= 2.0, row
     assert row["auto"]["chosen"] == "both", row["auto"]
     assert row["auto"]["iterations"] > 0.4 * 30, row["auto"]
@@ -104,7 +115,7 @@ def test_the_race_fits_the_curve_again_rather_than_drop_it():
     the race would drop it at round 3, far behind the angle-defect rows (71 % in the end). Fitted
     again instead (term_race.h), the curve term removes nearly all; the stop reason says so."""
     member = mesh_family.Member("plane", 4, 0.16, 0, 1, 1)
-    row = rs.sweep([member], ("defect", "auto"), os.path.join(BUILD, "bin", "quasidev"), jobs=1)[0]
+    row = rs.sweep([member], ("defect", "auto"), QUASIDEV, jobs=1)[0]
     assert row["auto"]["chosen"] == "curve", row["auto"]
     assert "where its re-projected targets had fallen far behind another term's" in row["auto"]["stop"]
     assert row["auto"]["reduction"] >= 90.0 and row["defect"]["reduction"] < 80.0, row
@@ -118,9 +129,8 @@ def test_a_term_dropped_at_the_trial_rejoins_when_the_leader_stops_short():
     it (it lost 5 points on each before)."""
     members = [mesh_family.Member("tangent", 1, 0.16, 0, 2, 1),
                mesh_family.Member("lampshade", 2, 0.08, 0, 2, 1)]
-    rows = rs.sweep(members, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
-    gaps = {row["member"]: round(gap(row), 1) for row in rows}
-    assert max(gaps.values()) <= 2.0, gaps
+    rows = sweep(members)
+    assert_auto_keeps_the_best_term(rows)
 
 
 IRREGULAR = [mesh_family.Member(b, a, 0.16, 0, 1, 1, i) for b in ("cylinder", "cone") for a in (0.5, 1)
@@ -135,13 +145,12 @@ def test_irregular_triangles_on_smooth_bases_lose_their_bumps_without_moving_fur
     (group_run.h) it removed 76–93 % of G_ABD here. Those rows, kept only where they leave less and
     move no vertex further, remove at least 95 % on all but one member in eight, and auto never
     moves further on average than the curve term or both."""
-    rows = rs.sweep(IRREGULAR, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
+    rows = sweep(IRREGULAR)
     assert all("error" not in row[t] for row in rows for t in TERMS)
     low = [(row["member"], round(row["auto"]["reduction"], 1)) for row in rows
            if row["auto"]["reduction"] < 95.0]
     assert len(low) <= len(rows) // 8, low
-    gaps = {row["member"]: round(gap(row), 1) for row in rows}
-    assert max(gaps.values()) <= 2.0, gaps
+    assert_auto_keeps_the_best_term(rows)
     further = [row["member"] for row in rows
                if row["auto"]["mean_move_ae"] > min(row["curve"]["mean_move_ae"], row["both"]["mean_move_ae"])]
     assert not further, further
@@ -149,9 +158,8 @@ def test_irregular_triangles_on_smooth_bases_lose_their_bumps_without_moving_fur
 
 def assert_auto_keeps_both(members):
     """Auto is within 2 points of the best term on every member, and keeps both."""
-    rows = rs.sweep(members, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
-    gaps = {row["member"]: round(gap(row), 1) for row in rows}
-    assert max(gaps.values()) <= 2.0, gaps
+    rows = sweep(members)
+    assert_auto_keeps_the_best_term(rows)
     assert all(row["auto"]["chosen"] == "both" for row in rows), [row["auto"]["chosen"] for row in rows]
 
 
@@ -174,7 +182,7 @@ def test_auto_costs_what_the_curve_term_does_where_its_pace_leaves_little():
     takes that step alone too (term_race.h); it does leave less, the others never start, and auto
     is the curve term's own run: the same factorisations and G_ABD removed."""
     member = mesh_family.Member("plane", 1, 0.16, 0, 2, 1, 0.1)
-    row = rs.sweep([member], ("curve", "auto"), os.path.join(BUILD, "bin", "quasidev"), jobs=2)[0]
+    row = rs.sweep([member], ("curve", "auto"), QUASIDEV, jobs=2)[0]
     assert row["auto"]["chosen"] == "curve", row["auto"]
     assert row["auto"]["factorizations"] == row["curve"]["factorizations"], row
     assert abs(row["auto"]["reduction"] - row["curve"]["reduction"]) < 0.01, row
@@ -231,9 +239,8 @@ def test_auto_keeps_the_best_term_on_members_nobody_tuned_on():
     the best single term gives on every one, with no allowance (on the 120 members of
     docs/heldout/robustness_sweep.md, 12k-face ones too, it lost at most 0.6 point); no term
     folds a face; the smooth bumps of up to 1.5 AE on the developable bases go."""
-    rows = rs.sweep(HELD_OUT, TERMS, os.path.join(BUILD, "bin", "quasidev"), jobs=2)
+    rows = sweep(HELD_OUT)
     assert_auto_ran(rows)
-    gaps = {row["member"]: round(gap(row), 1) for row in rows}
-    assert max(gaps.values()) <= 2.0, max(gaps.items(), key=lambda kv: kv[1])
+    assert_auto_keeps_the_best_term(rows)
     assert_no_term_folds_a_face(rows)
     assert_smooth_bumps_on_developable_bases_go(rows, 1.5, 3 * 2 * 2)
