@@ -16,6 +16,8 @@
 #include <memory>
 #include <vector>
 
+#include "common/huge_page_allocator.h"
+
 namespace qd::common {
 
 // The symbolic analysis of a pattern: supernodes, their rows and where each entry goes.
@@ -68,7 +70,7 @@ class QuasiDefiniteLdlt {
   void update_ancestors(int s, const double* W, std::vector<double>& work, std::vector<int>& map);
 
   std::shared_ptr<const SupernodalAnalysis> a_;
-  std::vector<double> values_;  // unit-lower L (diagonal entries hold D)
+  std::vector<double, HugePageAllocator<double>> values_;  // unit-lower L (diagonal entries hold D)
 };
 
 }  // namespace qd::common
