@@ -53,7 +53,10 @@ Json candidate(const approximate::CandidateReport& c) {
           {"kept", c.kept},
           {"dropped", c.dropped},
           {"started", c.started()},
-          {"started_late", c.late}};
+          {"started_late", c.late},
+          {"bounded_by", c.bounded_by == approximate::Term::None
+                             ? Json(nullptr)
+                             : Json(approximate::term_name(c.bounded_by))}};
 }
 
 Json patch(const approximate::PatchReport& p, double average_edge) {

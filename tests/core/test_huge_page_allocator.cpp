@@ -2,8 +2,8 @@
 // what is written to them, and that a vector on it holds the same values as on the heap.
 #include <gtest/gtest.h>
 
-#include <cstdint>
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 

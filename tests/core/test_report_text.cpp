@@ -96,6 +96,35 @@ TEST(ReportText, StrongerRowsSayWhyTheyWereKeptOrStopped) {
   EXPECT_NE(text(20, false, false).find("curve −50.0% in 4 it. (kept)"), std::string::npos);
 }
 
+// After a pick of the rows the stronger rows answer to the candidate whose move bounds them and
+// to half the pick's G_ABD (group_run.h), and say so.
+TEST(ReportText, StrongerRowsAfterThePickOfTheRowsNameTheirBound) {
+  PatchReport p;
+  p.developability_reason = TermChoice::AutoMeasured;
+  const auto text = [&](bool kept, bool dropped, bool further, bool short_pace) {
+    CandidateReport stronger{Term::Defect, 12, 92.0, 0.05, kept, dropped, NotRun::No, 100, further};
+    stronger.fell_short = short_pace;
+    stronger.bounded_by = Term::Both;
+    p.candidates = {{Term::Defect, 20, 60.0, 0.01, !kept, false},
+                    {Term::Both, 9, 40.0, 0.2, false, true},
+                    stronger};
+    return term_choice_text(p);
+  };
+  EXPECT_NE(text(true, false, false, false)
+                .find("(kept: half the pick's G_ABD left or less, moved less than both)"),
+            std::string::npos)
+      << text(true, false, false, false);
+  EXPECT_NE(text(false, true, true, false).find("(stopped: moved further than both)"),
+            std::string::npos);
+  EXPECT_NE(
+      text(false, true, false, true).find("(stopped: its pace would not halve the pick's G_ABD)"),
+      std::string::npos);
+  EXPECT_NE(text(false, true, false, false).find("(stopped: removed nothing)"), std::string::npos);
+  EXPECT_NE(text(false, false, false, false).find("(not kept: left more than half the pick's"),
+            std::string::npos);
+  EXPECT_EQ(text(false, true, true, false).find("than the pick"), std::string::npos);
+}
+
 TEST(ReportText, ALateCandidateSaysItStartedWhenTheLeaderStopped) {
   PatchReport p;
   p.developability_reason = TermChoice::AutoMeasured;

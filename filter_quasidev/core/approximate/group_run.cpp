@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "approximate/common_names.h"
 #include "common/stage_timer.h"
@@ -118,41 +119,82 @@ void curve_then_defect(GroupRun& run, const Params& params, double ae, size_t th
   run.race = {curve, defect};
 }
 
-// Whether an iterate has moved further than `pick`, on average or at most.
-bool moved_further(const Figures& iterate, const Figures& pick) {
-  return iterate.mean_disp > pick.mean_disp || iterate.max_disp > pick.max_disp;
+// Whether an iterate has moved further than `bound`, on average or at most.
+bool moved_further(const Figures& iterate, const Figures& bound) {
+  return iterate.mean_disp > bound.mean_disp || iterate.max_disp > bound.max_disp;
 }
 
-// Auto's stronger angle-defect rows after its pick (kStrongerRowsFactor): kept where they dominate.
-void try_stronger_rows(GroupRun& run, const Params& params, double ae, size_t threads,
-                       const std::function<void(double)>& progress) {
+// What the stronger rows must do to be kept (group_run.h): move no further than `bound`, and
+// leave at most `most_left` of G_ABD; bounded_by: the candidate whose move is the bound (None: the
+// pick's, which they must also leave less than).
+struct StrongerBar {
+  Figures bound;
+  double most_left = 0;
+  Term bounded_by = Term::None;
+};
+
+// The bar for the stronger rows after `pick` (the best iterate of the race's winner), if they are
+// tried: after curve targets, the pick's; after the rows, the move of the raced candidate with
+// curve targets that moved most, where that is further than the pick's.
+std::optional<StrongerBar> stronger_bar(const GroupRun& run, const Figures& pick) {
   const bool targets = std::any_of(run.fits.begin(), run.fits.end(), [](const PatchFit& p) {
     return p.reason == TermReason::Measured && (p.term == Term::Curve || p.term == Term::Both);
   });
-  if (!targets || run.outcome.history.empty()) return;      // (an unmoved pick: nothing moves less)
+  if (targets) return StrongerBar{pick, pick.g_abd, Term::None};
+  const CandidateFigures* furthest = nullptr;
+  for (const CandidateFigures& c : run.race)
+    if ((c.term == Term::Curve || c.term == Term::Both) && c.not_run == NotRun::No &&
+        (!furthest || c.mean_disp > furthest->mean_disp))
+      furthest = &c;
+  if (!furthest || !(furthest->mean_disp > pick.mean_disp)) return std::nullopt;
+  Figures bound = pick;
+  bound.mean_disp = furthest->mean_disp;
+  bound.max_disp = furthest->max_disp;
+  return StrongerBar{bound, kStrongerRowsLeave * pick.g_abd, furthest->term};
+}
+
+// Auto's stronger angle-defect rows after its pick (kStrongerRowsFactor): kept where they pass
+// the bar.
+void try_stronger_rows(GroupRun& run, const Params& params, double ae, size_t threads,
+                       const std::function<void(double)>& progress) {
+  if (run.outcome.history.empty()) return;                  // (an unmoved pick: nothing moves less)
   const Figures pick = run.outcome.history.back().figures;  // its best iterate's
   // Less than δ_ABD of the start's G_ABD left: nothing could remove a meaningful share more.
   if (pick.g_abd <= params.stop_abd / 100 * run.initial_g) return;
+  const std::optional<StrongerBar> bar = stronger_bar(run, pick);
+  if (!bar) return;
+  const bool after_rows = bar->bounded_by != Term::None;
   const GroupMesh& g = run.group;
   Params stronger = params;
   stronger.defect_weight *= kStrongerRowsFactor;
   std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);
   SystemLayouts layouts(g, stronger, ae);
   Deformation d = start_run(g, fits, layouts, stronger, threads);
-  // As in the race (term_race.h), rows that removed nothing in kNothingRounds iterations stop.
+  // As in the race (term_race.h), rows that removed nothing in kNothingRounds iterations stop;
+  // after the rows, so do rows whose pace would not take them to the bar by maxIter.
   const auto removed_nothing = [&] {
     return d.iterations() >= kNothingRounds && d.best_g_abd() >= d.initial_g_abd();
   };
-  while (d.step() && !moved_further(d.current(), pick) && !removed_nothing())
+  const auto falls_short = [&] {
+    return after_rows && d.iterations() >= kPlateauIterations &&
+           projected_g_abd(d, params.max_iter) > bar->most_left;
+  };
+  bool short_pace = false;
+  while (d.step() && !moved_further(d.current(), bar->bound) && !removed_nothing() &&
+         !(short_pace = falls_short()))
     progress(static_cast<double>(d.iterations()) / params.max_iter);
-  const bool dominates = d.best().g_abd < pick.g_abd && !moved_further(d.best(), pick);
+  const bool passes =
+      (after_rows ? d.best().g_abd <= bar->most_left : d.best().g_abd < bar->most_left) &&
+      !moved_further(d.best(), bar->bound);
   CandidateFigures c = candidate_figures(Term::Defect, d);
   c.weight_factor = kStrongerRowsFactor;
-  c.kept = dominates;
-  c.dropped = d.running();  // stopped here: moved further than the pick, or removed nothing
-  c.moved_further = c.dropped && moved_further(d.current(), pick);
+  c.kept = passes;
+  c.dropped = d.running();  // stopped here: moved further, removed nothing or fell short
+  c.moved_further = c.dropped && moved_further(d.current(), bar->bound);
+  c.fell_short = c.dropped && !c.moved_further && short_pace;
+  c.bounded_by = bar->bounded_by;
   DeformOutcome out = d.finish();
-  if (dominates) {
+  if (passes) {
     for (CandidateFigures& other : run.race) other.kept = false;
     out.times += run.outcome.times;
     run.outcome = std::move(out);

@@ -50,11 +50,24 @@ struct GroupRun {
 // or lampshade) no face normal can reach the curve targets, while the rows, which only ask each
 // vertex's angles to sum to 2π, can: on such members of scripts/mesh_family.py
 // (`irregular`) the pick removed 52–99 % where these rows remove 85–100 % and move less. Where the
-// pick is the rows at the given weight they are not tried: a stronger pull removes more by moving
-// further (the anchors' share of the least-squares energy grows with the weight), which is the
-// user's trade-off to make. Not above kMaxDefectRaceVertices, where the rows are not raced for
-// their cost. Measurements behind the factor: docs/robustness.md.
+// pick is the rows at the given weight, a stronger pull removes more by moving further (the
+// anchors' share of the least-squares energy grows with the weight), which is the user's
+// trade-off to make, with one exception: where a raced candidate with curve targets moved further
+// on average than the pick, auto would have accepted that move had the candidate won. There the
+// stronger rows run too, bounded by that candidate's move (the one that moved most, on average
+// and at most) instead of the pick's, and are kept only where they leave at most
+// kStrongerRowsLeave of the pick's G_ABD; they also stop once kPlateauIterations of their
+// iterations give a pace that would not take them there by maxIter (projected_g_abd,
+// term_race.h). Not above kMaxDefectRaceVertices, where the rows are not raced for their cost.
+// Measurements behind the factor and the share: docs/robustness.md.
 constexpr double kStrongerRowsFactor = 100;
+// Where the rows at the given weight creep (the smooth tangent developables of
+// scripts/mesh_family.py, whose rows stop with up to 64 % of G_ABD left), the stronger rows
+// bounded by a curve candidate's move left 0.2–24 % of what the pick left on the 11 grid members
+// where they did most; where they trade distance for curvature (the shirt's panel of 956 faces:
+// 32 → 22 % of its G_ABD, its default then beyond MeshLab's farthest point) 69 %, and 73–100 %
+// on three grid members where they gained 0–3 points. So they must remove at least half.
+constexpr double kStrongerRowsLeave = 0.5;
 
 // The terms decided for each patch id by an earlier pass's race (Developability::Auto).
 using DecidedTerms = std::map<int, Term>;

@@ -58,17 +58,26 @@ namespace {
 
 // How a candidate ended, for candidates_text: " (kept)", " (left after the trial)" or nothing,
 // after when it started if it started late (term_race.h); for auto's stronger rows (group_run.h)
-// why they were kept, stopped or not kept.
+// why they were kept, stopped or not kept, against the pick or against the candidate whose move
+// bounds them after a pick of the rows.
 std::string outcome_text(const CandidateReport& c) {
   if (c.weight_factor == 1) {
     std::string what = c.kept ? "kept" : c.dropped ? "left after the trial" : "";
     if (c.late) what = "started when the leader stopped" + (what.empty() ? "" : "; " + what);
     return what.empty() ? "" : " (" + what + ")";
   }
-  if (c.kept) return " (kept: less G_ABD left, moved less)";
-  if (!c.dropped) return " (not kept: left more G_ABD than the pick)";
-  return c.moved_further ? " (stopped: moved further than the pick)"
-                         : " (stopped: removed nothing)";
+  if (c.bounded_by == Term::None) {
+    if (c.kept) return " (kept: less G_ABD left, moved less)";
+    if (!c.dropped) return " (not kept: left more G_ABD than the pick)";
+    return c.moved_further ? " (stopped: moved further than the pick)"
+                           : " (stopped: removed nothing)";
+  }
+  const std::string bound = term_name(c.bounded_by);
+  if (c.kept) return " (kept: half the pick's G_ABD left or less, moved less than " + bound + ")";
+  if (!c.dropped) return " (not kept: left more than half the pick's G_ABD)";
+  if (c.moved_further) return " (stopped: moved further than " + bound + ")";
+  return c.fell_short ? " (stopped: its pace would not halve the pick's G_ABD)"
+                      : " (stopped: removed nothing)";
 }
 
 // " curve −0.0% in 1 it. (left after the trial), defect …" for a patch's candidates.

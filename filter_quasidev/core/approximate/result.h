@@ -74,15 +74,18 @@ enum class NotRun {
 // One candidate of Developability::Auto's race (term_race.h).
 struct CandidateReport {
   Term term = Term::None;
-  int iterations = 0;           // accepted iterations it ran
-  double abd_reduction = 0;     // of its best iterate, percent
-  double mean_disp = 0;         // of its best iterate, model units
-  bool kept = false;            // the one whose result the patch keeps
-  bool dropped = false;         // stopped after the trial, not by its own stop rule
-  NotRun not_run = NotRun::No;  // why it never ran (term_race.h), if it did not
-  double weight_factor = 1;     // of the defect weight (auto's stronger rows: group_run.h)
-  bool moved_further = false;   // the stronger rows: dropped having moved further than the pick
-  bool late = false;            // started once the leader had stopped (both, term_race.h)
+  int iterations = 0;            // accepted iterations it ran
+  double abd_reduction = 0;      // of its best iterate, percent
+  double mean_disp = 0;          // of its best iterate, model units
+  bool kept = false;             // the one whose result the patch keeps
+  bool dropped = false;          // stopped after the trial, not by its own stop rule
+  NotRun not_run = NotRun::No;   // why it never ran (term_race.h), if it did not
+  double weight_factor = 1;      // of the defect weight (auto's stronger rows: group_run.h)
+  bool moved_further = false;    // the stronger rows: dropped having moved further than the bound
+  bool late = false;             // started once the leader had stopped (both, term_race.h)
+  bool fell_short = false;       // the stronger rows: dropped, their pace would not reach the bar
+  Term bounded_by = Term::None;  // the stronger rows after a pick of the rows: whose move bounds
+                                 // them (group_run.h); None: the pick's
   bool started() const { return not_run == NotRun::No; }
 };
 

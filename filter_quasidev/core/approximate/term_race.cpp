@@ -37,8 +37,8 @@ int most_iterations(const std::vector<Deformation>& runs, const std::vector<char
   return most;
 }
 
-// The best G_ABD at max_iter if it falls on at its pace over the last kPlateauIterations
-// iterations; a run that has stopped ends where it is.
+}  // namespace
+
 double projected_g_abd(const Deformation& run, int max_iter) {
   const std::vector<double>& best = run.best_track();
   const auto n = static_cast<int>(best.size()) - 1;  // accepted iterations
@@ -47,14 +47,13 @@ double projected_g_abd(const Deformation& run, int max_iter) {
   return best[n] - pace * std::max(0, max_iter - n);
 }
 
-}  // namespace
-
 CandidateFigures candidate_figures(Term term, const Deformation& run) {
   CandidateFigures c;
   c.term = term;
   c.iterations = run.iterations();
   c.g_abd = run.best_g_abd();
   c.mean_disp = run.best().mean_disp;
+  c.max_disp = run.best().max_disp;
   return c;
 }
 

@@ -98,13 +98,21 @@ struct CandidateFigures {
   int iterations = 0;    // accepted iterations it ran
   double g_abd = 0;      // its best G_ABD
   double mean_disp = 0;  // of its best iterate
+  double max_disp = 0;   // of its best iterate
   bool kept = false;
-  bool dropped = false;         // stopped by the trial, not by its own stop rule
-  NotRun not_run = NotRun::No;  // why it never started, if it did not
-  double weight_factor = 1;     // of the defect weight (auto's stronger rows: group_run.h)
-  bool moved_further = false;   // the stronger rows: dropped having moved further than the pick
-  bool late = false;            // started once the leader had stopped (both, term_race.h)
+  bool dropped = false;          // stopped by the trial, not by its own stop rule
+  NotRun not_run = NotRun::No;   // why it never started, if it did not
+  double weight_factor = 1;      // of the defect weight (auto's stronger rows: group_run.h)
+  bool moved_further = false;    // the stronger rows: dropped having moved further than the bound
+  bool fell_short = false;       // the stronger rows: dropped, their pace would not reach the bar
+  Term bounded_by = Term::None;  // the stronger rows after a pick of the rows: whose move bounds
+                                 // them (group_run.h); None: the pick's
+  bool late = false;             // started once the leader had stopped (both, term_race.h)
 };
+
+// The best G_ABD at max_iter if it falls on at its pace over the last kPlateauIterations
+// iterations; a run that has stopped ends where it is.
+double projected_g_abd(const Deformation& run, int max_iter);
 
 // A run's figures as a candidate (kept, dropped and started left to the caller).
 CandidateFigures candidate_figures(Term term, const Deformation& run);
