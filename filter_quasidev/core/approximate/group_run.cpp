@@ -191,7 +191,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, double ae, size_t th
   c.kept = passes;
   c.dropped = d.running();  // stopped here: moved further, removed nothing or fell short
   c.moved_further = c.dropped && moved_further(d.current(), bar->bound);
-  c.fell_short = c.dropped && !c.moved_further && short_pace;
+  c.fell_short = short_pace;  // the loop's last test: it ended there, still running
   c.bounded_by = bar->bounded_by;
   DeformOutcome out = d.finish();
   if (passes) {
