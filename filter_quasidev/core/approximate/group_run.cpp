@@ -119,9 +119,13 @@ void curve_then_defect(GroupRun& run, const Params& params, double ae, size_t th
   run.race = {curve, defect};
 }
 
-// Whether an iterate has moved further than `bound`, on average or at most.
+// Whether an iterate has moved further than `bound`, on average or at most, by more than
+// kMoveRounding of it: two moves both scaled to the tolerance (the stronger rows' first step and
+// the bounding candidate's best iterate) are equal but for their last digits, and those digits,
+// which depend on how the input was read, must not decide whether the rows run on.
 bool moved_further(const Figures& iterate, const Figures& bound) {
-  return iterate.mean_disp > bound.mean_disp || iterate.max_disp > bound.max_disp;
+  return iterate.mean_disp > bound.mean_disp * (1 + kMoveRounding) ||
+         iterate.max_disp > bound.max_disp * (1 + kMoveRounding);
 }
 
 // What the stronger rows must do to be kept (group_run.h): move no further than `bound`, and

@@ -68,6 +68,8 @@ constexpr double kStrongerRowsFactor = 100;
 // 32 → 22 % of its G_ABD, its default then beyond MeshLab's farthest point) 69 %, and 73–100 %
 // on three grid members where they gained 0–3 points. So they must remove at least half.
 constexpr double kStrongerRowsLeave = 0.5;
+// Moves closer than this share are the same move (rounding; group_run.cpp's moved_further).
+constexpr double kMoveRounding = 1e-9;
 
 // The terms decided for each patch id by an earlier pass's race (Developability::Auto).
 using DecidedTerms = std::map<int, Term>;
