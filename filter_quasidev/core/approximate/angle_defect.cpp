@@ -44,9 +44,17 @@ DefectStars defect_stars(const GroupMesh& g, const VertexFaces& incident,
     }
     s.vertex.push_back(static_cast<int>(v));
     s.start.push_back(static_cast<int>(s.star.size()));
-    s.weight.push_back(weight * (area / std::max(faces, 1)) / std::sqrt(voronoi[v]));
+    s.patch_area.push_back(area / std::max(faces, 1));
+    s.root_area.push_back(std::sqrt(voronoi[v]));
   }
+  s.weigh(weight);
   return s;
+}
+
+void DefectStars::weigh(double developability_weight) {
+  w_d = developability_weight;
+  weight.resize(vertex.size());
+  for (size_t r = 0; r < vertex.size(); ++r) weight[r] = w_d * patch_area[r] / root_area[r];
 }
 
 DefectLinearisation linearise_defects(const DefectStars& rows, const GroupMesh& g,

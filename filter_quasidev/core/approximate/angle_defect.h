@@ -29,12 +29,17 @@ namespace qd::approximate {
 
 // The rows of a group, fixed while it is solved: row r linearises the angle defect of local
 // vertex vertex[r]; its star (that vertex first, then its neighbours) is
-// star[start[r] .. start[r+1]), and its weight is s_r.
+// star[start[r] .. start[r+1]), and its weight is s_r = w_d · patch_area[r] / root_area[r].
 struct DefectStars {
   std::vector<int> vertex;
   std::vector<int> start{0};
   std::vector<int> star;
-  std::vector<double> weight;
+  std::vector<double> patch_area;  // A_P
+  std::vector<double> root_area;   // √A_v
+  std::vector<double> weight;      // s_r
+  double w_d = 0;                  // the developability weight of s_r
+  // Sets s_r for another w_d (a run sharing the rows at another weight, group_run.h).
+  void weigh(double developability_weight);
   bool empty() const { return vertex.empty(); }
 };
 

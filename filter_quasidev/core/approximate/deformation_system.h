@@ -48,7 +48,8 @@ class DeformationSystem {
   // it gets an angle-defect row (angle_defect.h; empty = none).
   DeformationSystem(const GroupMesh& group, const Params& params, double ae,
                     const std::vector<char>& defect_rows = {});
-  // On a layout of the group's (SystemLayouts::get), for the same params.
+  // On a layout of the group's (SystemLayouts::get), for the same params but w_d: the rows'
+  // weights are scaled to params.defect_weight where the layout's were made for another.
   DeformationSystem(const GroupMesh& group, const Params& params, SystemLayout layout);
 
   // Assembles M (Eq. 17) for one target normal per group face (a zero vector: no

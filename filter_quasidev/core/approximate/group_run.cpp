@@ -62,15 +62,16 @@ Deformation start_run(const GroupMesh& g, const std::vector<PatchFit>& fits, Sys
 }
 
 // Step 2 as a race of the candidate terms; the run keeps the winner's fits and outcome.
+// layouts: the group's, which the candidates share (the order and the analyses);
 // threads: the group's share, for each candidate's own work; idle: the round's idle threads,
 // which step candidates at once.
-void race(GroupRun& run, const std::vector<Term>& candidates, const Params& params, double ae,
-          size_t threads, common::IdleThreads& idle, const std::function<void(double)>& progress) {
+void race(GroupRun& run, const std::vector<Term>& candidates, const Params& params,
+          SystemLayouts& layouts, size_t threads, common::IdleThreads& idle,
+          const std::function<void(double)>& progress) {
   const GroupMesh& g = run.group;
   // Each candidate's fits outlive its run: the re-projection keeps a reference to them.
   std::map<Term, std::vector<PatchFit>> fits_of;
   for (Term t : candidates) fits_of[t] = with_term(run.fits, t);
-  SystemLayouts layouts(g, params, ae);  // the candidates share the order and the analyses
   const auto start = [&](Term t) { return start_run(g, fits_of.at(t), layouts, params, threads); };
   RaceOutcome raced =
       race_terms(candidates, start, params.max_iter, params.stop_abd / 100, idle, progress);
@@ -158,8 +159,9 @@ std::optional<StrongerBar> stronger_bar(const GroupRun& run, const Figures& pick
 }
 
 // Auto's stronger angle-defect rows after its pick (kStrongerRowsFactor): kept where they pass
-// the bar.
-void try_stronger_rows(GroupRun& run, const Params& params, double ae, size_t threads,
+// the bar. layouts: the race's, whose order and analyses they share (their system scales the
+// rows' weights, deformation_system.h).
+void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layouts, size_t threads,
                        const std::function<void(double)>& progress) {
   if (run.outcome.history.empty()) return;                  // (an unmoved pick: nothing moves less)
   const Figures pick = run.outcome.history.back().figures;  // its best iterate's
@@ -172,7 +174,6 @@ void try_stronger_rows(GroupRun& run, const Params& params, double ae, size_t th
   Params stronger = params;
   stronger.defect_weight *= kStrongerRowsFactor;
   std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);
-  SystemLayouts layouts(g, stronger, ae);
   Deformation d = start_run(g, fits, layouts, stronger, threads);
   // As in the race (term_race.h), rows that removed nothing in kNothingRounds iterations stop;
   // after the rows, so do rows whose pace would not take them to the bar by maxIter.
@@ -250,8 +251,9 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
     run.outcome.stop_detail = run.fits.front().skipped;
     run.outcome.stop = run.outcome.stop_detail.empty() ? PatchStop::Planar : PatchStop::Unfitted;
   } else if (candidates.size() > 1) {
-    race(run, candidates, params, in.ae, threads, idle, forward);
-    try_stronger_rows(run, params, in.ae, threads, forward);
+    SystemLayouts layouts(g, params, in.ae);  // the race's and the stronger rows'
+    race(run, candidates, params, layouts, threads, idle, forward);
+    try_stronger_rows(run, params, layouts, threads, forward);
   } else if (candidates == std::vector<Term>{Term::Curve}) {  // by kMaxDefectRaceVertices
     curve_then_defect(run, params, in.ae, threads, progress);
   } else {
