@@ -51,8 +51,7 @@ DefectStars defect_stars(const GroupMesh& g, const VertexFaces& incident,
   return s;
 }
 
-void DefectStars::weigh(double developability_weight) {
-  w_d = developability_weight;
+void DefectStars::weigh(double w_d) {
   weight.resize(vertex.size());
   for (size_t r = 0; r < vertex.size(); ++r) weight[r] = w_d * patch_area[r] / root_area[r];
 }

@@ -37,9 +37,8 @@ struct DefectStars {
   std::vector<double> patch_area;  // A_P
   std::vector<double> root_area;   // √A_v
   std::vector<double> weight;      // s_r
-  double w_d = 0;                  // the developability weight of s_r
-  // Sets s_r for another w_d (a run sharing the rows at another weight, group_run.h).
-  void weigh(double developability_weight);
+  // Sets s_r for this w_d (each system weighs the rows it shares for its own, group_run.h).
+  void weigh(double w_d);
   bool empty() const { return vertex.empty(); }
 };
 

@@ -42,15 +42,12 @@ DeformationSystem::DeformationSystem(const GroupMesh& group, const Params& param
       K_(layout_.augmented ? layout_.augmented->K : Eigen::SparseMatrix<double>()) {
   strategy_.emplace(params, 3L * m_.blocks, layout_.augmented != nullptr, m_.pattern, times_,
                     layout_.augmented ? layout_.augmented->analysis : nullptr);
-  // A layout shared with runs at another w_d (auto's stronger rows, group_run.h).
-  if (!defects_.empty() && params.defect_weight != defects_.w_d)
-    defects_.weigh(params.defect_weight);
+  defects_.weigh(params.defect_weight);  // the layout may be shared at another w_d (group_run.h)
 }
 
 void DeformationSystem::scale_developability(double factor) {
   w_ *= factor;
   for (double& s : defects_.weight) s *= factor;
-  defects_.w_d *= factor;
   strategy_->weights_changed();
 }
 

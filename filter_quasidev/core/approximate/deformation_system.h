@@ -48,8 +48,8 @@ class DeformationSystem {
   // it gets an angle-defect row (angle_defect.h; empty = none).
   DeformationSystem(const GroupMesh& group, const Params& params, double ae,
                     const std::vector<char>& defect_rows = {});
-  // On a layout of the group's (SystemLayouts::get), for the same params but w_d: the rows'
-  // weights are scaled to params.defect_weight where the layout's were made for another.
+  // On a layout of the group's (SystemLayouts::get), for the same params but w_d: the rows are
+  // weighed for params.defect_weight whatever weight the layout's were made for.
   DeformationSystem(const GroupMesh& group, const Params& params, SystemLayout layout);
 
   // Assembles M (Eq. 17) for one target normal per group face (a zero vector: no

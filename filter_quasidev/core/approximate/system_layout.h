@@ -73,7 +73,7 @@ struct SystemLayout {
 // in every CG iteration.
 class SystemLayouts {
  public:
-  // params: α (Eq. 15), w_d (a system at another w_d scales the rows' weights) and the threads;
+  // params: α (Eq. 15), w_d (a system at another w_d weighs the rows again) and the threads;
   // ae: the average edge length.
   SystemLayouts(const GroupMesh& g, const Params& params, double ae);
   // The layout for these defect rows (per local vertex, 1 = a row; empty = none).
