@@ -65,13 +65,15 @@ def run(quasidev: str, mesh: str, term: str, extra: list[str], tmp: str, V, F) -
     r = json.load(open(rep, encoding="utf-8"))
     p = r["patches"][0]
     chosen = p["developability"]  # "defect ×100" where auto kept its stronger rows (group_run.h)
-    factor = next((c.get("defect_weight_factor", 1) for c in p.get("candidates", []) if c["kept"]), 1)
+    kept = next((c for c in p.get("candidates", []) if c["kept"]), {})
+    factor = kept.get("defect_weight_factor", 1)
     if factor != 1:
         chosen += f" ×{factor:g}"
     return {"reduction": r["abd_reduction"], "iterations": p["iterations"],
             "stop": p["stop_reason"], "max_move_ae": r["total_after"]["max_disp"] / r["average_edge"],
             "mean_move_ae": r["total_after"]["mean_disp"] / r["average_edge"],
             "chosen": chosen, "stronger_weight": r["parameters"]["defect_weight"] * factor,
+            "bounded_by": kept.get("bounded_by"),
             "time_ms": r["time_ms"],
             "factorizations": r["factorizations"],
             "flipped": flipped_faces(V, positions(out), F)}

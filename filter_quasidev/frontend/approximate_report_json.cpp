@@ -54,7 +54,8 @@ Json candidate(const approximate::CandidateReport& c) {
           {"dropped", c.dropped},
           {"started", c.started()},
           {"started_late", c.late},
-          {"bounded_by", c.bounded_by == approximate::Term::None
+          {"bounded_by", c.after_plateau ? Json("tolerance")
+                         : c.bounded_by == approximate::Term::None
                              ? Json(nullptr)
                              : Json(approximate::term_name(c.bounded_by))}};
 }

@@ -125,6 +125,36 @@ TEST(ReportText, StrongerRowsAfterThePickOfTheRowsNameTheirBound) {
   EXPECT_EQ(text(false, true, true, false).find("than the pick"), std::string::npos);
 }
 
+// After the rows' plateau only the tolerance bounds the stronger rows and no pace stops them
+// (group_run.h): the log names the plateau or the tolerance, never a candidate or a pace.
+TEST(ReportText, StrongerRowsAfterTheRowsPlateauSaySo) {
+  PatchReport p;
+  p.developability_reason = TermChoice::AutoMeasured;
+  const auto text = [&](bool kept, bool dropped, bool further = false) {
+    CandidateReport stronger{Term::Defect, 30, 98.8, 0.01, kept, dropped, NotRun::No, 100, further};
+    stronger.after_plateau = true;
+    p.candidates = {{Term::Curve, 2, 0.0, 0.0, false, true},
+                    {Term::Defect, 27, 27.5, 0.001, !kept, false},
+                    stronger};
+    return term_choice_text(p);
+  };
+  EXPECT_NE(text(true, false)
+                .find("defect ×100 weight −98.8% in 30 it. (kept: half the pick's "
+                      "G_ABD left or less, after its plateau)"),
+            std::string::npos)
+      << text(true, false);
+  EXPECT_NE(text(false, false).find("(not kept: left more than half the pick's G_ABD)"),
+            std::string::npos);
+  EXPECT_NE(text(false, true).find("(stopped: removed nothing)"), std::string::npos);
+  EXPECT_NE(text(false, true, true).find("(stopped: moved further than the tolerance)"),
+            std::string::npos);
+  for (const std::string& t : {text(true, false), text(false, false), text(false, true)}) {
+    EXPECT_EQ(t.find("moved further"), std::string::npos) << t;
+    EXPECT_EQ(t.find("moved less"), std::string::npos) << t;
+    EXPECT_EQ(t.find("pace"), std::string::npos) << t;
+  }
+}
+
 TEST(ReportText, ALateCandidateSaysItStartedWhenTheLeaderStopped) {
   PatchReport p;
   p.developability_reason = TermChoice::AutoMeasured;

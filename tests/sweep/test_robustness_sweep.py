@@ -172,6 +172,22 @@ def test_creeping_rows_get_a_stronger_pull_within_a_curve_candidates_move():
     assert row["auto"]["mean_move_ae"] <= max(row["curve"]["mean_move_ae"], row["both"]["mean_move_ae"]), row
 
 
+def test_rows_stopped_at_their_plateau_get_a_stronger_pull_within_the_tolerance():
+    """The irregular tangent developable with bumps of 1 AE, 0.16 wide (3k faces, cells slid by up
+    to 0.1): the race picks the angle-defect rows, which stop at their plateau with 61 % removed,
+    while the curve term's and both's steps remove nothing, so neither moved further and none
+    bounded the stronger rows, which were not tried. Where the pick stopped at its plateau before
+    maxIter, the stronger rows now run bounded by the tolerance alone and are kept where they leave
+    at most half of what the pick left (group_run.h): auto removes at least 90 %, folding no face."""
+    member = mesh_family.Member("tangent", 1, 0.16, 0, 1, 1, 0.1)
+    row = rs.sweep([member], ("defect", "auto"), QUASIDEV, jobs=1)[0]
+    assert row["defect"]["reduction"] < 90.0 and row["auto"]["reduction"] >= 90.0, row
+    assert row["auto"]["chosen"] == "defect ×100", row["auto"]
+    assert row["auto"]["bounded_by"] == "tolerance", row["auto"]
+    assert row["auto"]["reduction"] >= 100 - 0.5 * (100 - row["defect"]["reduction"]), row
+    assert row["auto"]["flipped"] == 0, row["auto"]
+
+
 def assert_auto_keeps_both(members):
     """Auto is within 2 points of the best term on every member, and keeps both."""
     rows = sweep(members)

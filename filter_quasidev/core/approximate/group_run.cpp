@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <optional>
 
 #include "approximate/common_names.h"
@@ -129,23 +130,36 @@ bool moved_further(const Figures& iterate, const Figures& bound) {
          iterate.max_disp > bound.max_disp * (1 + kMoveRounding);
 }
 
-// What the stronger rows must do to be kept (group_run.h): move no further than `bound`, and
-// leave at most `most_left` of G_ABD; bounded_by: the candidate whose move is the bound (None: the
-// pick's, which they must also leave less than).
+// What the stronger rows must do to be kept (group_run.h): leave at most `most_left` of G_ABD
+// and move no further than `bound`; bounded_by: the candidate whose move is the bound after a
+// pick of the rows (None: the pick's, which they must also leave less than, or, after the rows'
+// plateau, the tolerance's).
 struct StrongerBar {
   Figures bound;
   double most_left = 0;
   Term bounded_by = Term::None;
+  bool after_rows = false;
+  bool after_plateau = false;
 };
 
 // The bar for the stronger rows after `pick` (the best iterate of the race's winner), if they are
-// tried: after curve targets, the pick's; after the rows, the move of the raced candidate with
-// curve targets that moved most, where that is further than the pick's.
+// tried: after curve targets, the pick's; after the rows, where they stopped at their plateau
+// before maxIter, no vertex further from the start than the group's tolerance lets any vertex
+// move in one iteration; else the move of the raced candidate with curve targets that moved most,
+// where that is further than the pick's.
 std::optional<StrongerBar> stronger_bar(const GroupRun& run, const Figures& pick) {
   const bool targets = std::any_of(run.fits.begin(), run.fits.end(), [](const PatchFit& p) {
     return p.reason == TermReason::Measured && (p.term == Term::Curve || p.term == Term::Both);
   });
-  if (targets) return StrongerBar{pick, pick.g_abd, Term::None};
+  if (targets) return StrongerBar{pick, pick.g_abd, Term::None, false, false};
+  const double most_left = kStrongerRowsLeave * pick.g_abd;
+  if (run.outcome.stop != PatchStop::MaxIter) {
+    const std::vector<double>& tolerance = run.group.tolerance;
+    Figures bound = pick;
+    bound.mean_disp = std::numeric_limits<double>::infinity();
+    bound.max_disp = *std::max_element(tolerance.begin(), tolerance.end());
+    return StrongerBar{bound, most_left, Term::None, true, true};
+  }
   const CandidateFigures* furthest = nullptr;
   for (const CandidateFigures& c : run.race)
     if ((c.term == Term::Curve || c.term == Term::Both) && c.not_run == NotRun::No &&
@@ -155,7 +169,7 @@ std::optional<StrongerBar> stronger_bar(const GroupRun& run, const Figures& pick
   Figures bound = pick;
   bound.mean_disp = furthest->mean_disp;
   bound.max_disp = furthest->max_disp;
-  return StrongerBar{bound, kStrongerRowsLeave * pick.g_abd, furthest->term};
+  return StrongerBar{bound, most_left, furthest->term, true, false};
 }
 
 // Auto's stronger angle-defect rows after its pick (kStrongerRowsFactor): kept where they pass
@@ -169,19 +183,21 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   if (pick.g_abd <= params.stop_abd / 100 * run.initial_g) return;
   const std::optional<StrongerBar> bar = stronger_bar(run, pick);
   if (!bar) return;
-  const bool after_rows = bar->bounded_by != Term::None;
   const GroupMesh& g = run.group;
   Params stronger = params;
   stronger.defect_weight *= kStrongerRowsFactor;
   std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);
   Deformation d = start_run(g, fits, layouts, stronger, threads);
   // As in the race (term_race.h), rows that removed nothing in kNothingRounds iterations stop;
-  // after the rows, so do rows whose pace would not take them to the bar by maxIter.
+  // bounded by a candidate's move, so do rows whose pace would not take them to the bar by
+  // maxIter. After the rows' plateau the pace does not judge them: they start slowly and gather
+  // pace (the irregular tangent with bumps of 0.5 AE, 0.16 wide, 12k faces: 28 % after six
+  // iterations, 99 % after thirty), and the pick has spent fewer iterations than maxIter.
   const auto removed_nothing = [&] {
     return d.iterations() >= kNothingRounds && d.best_g_abd() >= d.initial_g_abd();
   };
   const auto falls_short = [&] {
-    return after_rows && d.iterations() >= kPlateauIterations &&
+    return bar->after_rows && !bar->after_plateau && d.iterations() >= kPlateauIterations &&
            projected_g_abd(d, params.max_iter) > bar->most_left;
   };
   bool short_pace = false;
@@ -189,7 +205,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
          !(short_pace = falls_short()))
     progress(static_cast<double>(d.iterations()) / params.max_iter);
   const bool passes =
-      (after_rows ? d.best().g_abd <= bar->most_left : d.best().g_abd < bar->most_left) &&
+      (bar->after_rows ? d.best().g_abd <= bar->most_left : d.best().g_abd < bar->most_left) &&
       !moved_further(d.best(), bar->bound);
   CandidateFigures c = candidate_figures(Term::Defect, d);
   c.weight_factor = kStrongerRowsFactor;
@@ -198,6 +214,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   c.moved_further = c.dropped && moved_further(d.current(), bar->bound);
   c.fell_short = short_pace;  // the loop's last test: it ended there, still running
   c.bounded_by = bar->bounded_by;
+  c.after_plateau = bar->after_plateau;
   DeformOutcome out = d.finish();
   if (passes) {
     for (CandidateFigures& other : run.race) other.kept = false;

@@ -52,13 +52,21 @@ struct GroupRun {
 // (`irregular`) the pick removed 52–99 % where these rows remove 85–100 % and move less. Where the
 // pick is the rows at the given weight, a stronger pull removes more by moving further (the
 // anchors' share of the least-squares energy grows with the weight), which is the user's
-// trade-off to make, with one exception: where a raced candidate with curve targets moved further
-// on average than the pick, auto would have accepted that move had the candidate won. There the
+// trade-off to make, with two exceptions. Where the pick ran to maxIter and a raced candidate with
+// curve targets moved further on average, auto would have accepted that move had it won. There the
 // stronger rows run too, bounded by that candidate's move (the one that moved most, on average
 // and at most) instead of the pick's, and are kept only where they leave at most
 // kStrongerRowsLeave of the pick's G_ABD; they also stop once kPlateauIterations of their
 // iterations give a pace that would not take them there by maxIter (projected_g_abd,
-// term_race.h). Not above kMaxDefectRaceVertices, where the rows are not raced for their cost.
+// term_race.h). And where the pick stopped at its plateau before maxIter (its own stop rule:
+// more iterations at that weight remove no meaningful share), a stronger pull is the only way on,
+// and no candidate's move is a fit bound for it (on the irregular tangent developables of the
+// sweep the curve steps remove nothing and move least, and the stronger rows start slowly): there
+// they run, without the pace test, until a vertex has moved further from the start than the
+// tolerance lets it move in one iteration, and are kept only where they leave at most
+// kStrongerRowsLeave of the pick's G_ABD. (Bounded by the tolerance of each iteration alone, they
+// took a smooth torus from 0.6 % to 95 % by moving it 7.4 AE, a trade only the user can make.)
+// Not above kMaxDefectRaceVertices, where the rows are not raced for their cost.
 // Measurements behind the factor and the share: docs/robustness.md.
 constexpr double kStrongerRowsFactor = 100;
 // Where the rows at the given weight creep (the smooth tangent developables of

@@ -58,13 +58,19 @@ namespace {
 
 // How a candidate ended, for candidates_text: " (kept)", " (left after the trial)" or nothing,
 // after when it started if it started late (term_race.h); for auto's stronger rows (group_run.h)
-// why they were kept, stopped or not kept, against the pick or against the candidate whose move
-// bounds them after a pick of the rows.
+// why they were kept, stopped or not kept, against the pick, against the candidate whose move
+// bounds them after a pick of the rows, or after the rows' plateau.
 std::string outcome_text(const CandidateReport& c) {
   if (c.weight_factor == 1) {
     std::string what = c.kept ? "kept" : c.dropped ? "left after the trial" : "";
     if (c.late) what = "started when the leader stopped" + (what.empty() ? "" : "; " + what);
     return what.empty() ? "" : " (" + what + ")";
+  }
+  if (c.after_plateau) {  // bounded by the tolerance, and no pace stops them
+    if (c.kept) return " (kept: half the pick's G_ABD left or less, after its plateau)";
+    if (!c.dropped) return " (not kept: left more than half the pick's G_ABD)";
+    return c.moved_further ? " (stopped: moved further than the tolerance)"
+                           : " (stopped: removed nothing)";
   }
   if (c.bounded_by == Term::None) {
     if (c.kept) return " (kept: less G_ABD left, moved less)";

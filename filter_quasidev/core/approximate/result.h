@@ -85,7 +85,9 @@ struct CandidateReport {
   bool late = false;             // started once the leader had stopped (both, term_race.h)
   bool fell_short = false;       // the stronger rows: dropped, their pace would not reach the bar
   Term bounded_by = Term::None;  // the stronger rows after a pick of the rows: whose move bounds
-                                 // them (group_run.h); None: the pick's
+                                 // them (group_run.h); None: the pick's, or none (after_plateau)
+  bool after_plateau = false;    // the stronger rows after the rows' plateau: the tolerance alone
+                                 // bounds them (group_run.h)
   bool started() const { return not_run == NotRun::No; }
 };
 
