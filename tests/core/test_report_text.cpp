@@ -130,9 +130,10 @@ TEST(ReportText, StrongerRowsAfterThePickOfTheRowsNameTheirBound) {
 TEST(ReportText, StrongerRowsAfterTheRowsPlateauSaySo) {
   PatchReport p;
   p.developability_reason = TermChoice::AutoMeasured;
-  const auto text = [&](bool kept, bool dropped, bool further = false) {
+  const auto text = [&](bool kept, bool dropped, bool further = false, bool stalled = false) {
     CandidateReport stronger{Term::Defect, 30, 98.8, 0.01, kept, dropped, NotRun::No, 100, further};
     stronger.after_plateau = true;
+    stronger.fell_short = stalled;
     p.candidates = {{Term::Curve, 2, 0.0, 0.0, false, true},
                     {Term::Defect, 27, 27.5, 0.001, !kept, false},
                     stronger};
@@ -148,7 +149,11 @@ TEST(ReportText, StrongerRowsAfterTheRowsPlateauSaySo) {
   EXPECT_NE(text(false, true).find("(stopped: removed nothing)"), std::string::npos);
   EXPECT_NE(text(false, true, true).find("(stopped: moved further than the tolerance)"),
             std::string::npos);
-  for (const std::string& t : {text(true, false), text(false, false), text(false, true)}) {
+  EXPECT_NE(text(false, true, false, true)
+                .find("(stopped: more than half the pick's G_ABD left at their plateau)"),
+            std::string::npos);
+  for (const std::string& t :
+       {text(true, false), text(false, false), text(false, true), text(false, true, false, true)}) {
     EXPECT_EQ(t.find("moved further"), std::string::npos) << t;
     EXPECT_EQ(t.find("moved less"), std::string::npos) << t;
     EXPECT_EQ(t.find("pace"), std::string::npos) << t;

@@ -107,6 +107,8 @@ class Deformation {
   // Accepted iterations since the current phase began (the input, re-fitted targets, moved
   // anchors): the plateau rule judges a pace only over iterations of one phase.
   int phase_iterations() const { return static_cast<int>(best_track_.size() - 1 - plateau_from_); }
+  // Whether the anchors moved at a plateau of the run's angle-defect rows (move_anchors below).
+  bool anchors_moved() const { return out_.anchors_moved_after >= 0; }
   // From the next iteration on, fits the curve again and goes on with re-fitted targets to a
   // plateau of their own (above; what a stalled run does), once; false: it cannot (not asked
   // for, already done). behind: asked by auto's race, where these targets fell far behind.

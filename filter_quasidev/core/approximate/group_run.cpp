@@ -200,9 +200,15 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
     return bar->after_rows && !bar->after_plateau && d.iterations() >= kPlateauIterations &&
            projected_g_abd(d, params.max_iter) > bar->most_left;
   };
+  // After the rows' plateau their own first plateau judges them instead: where it finds them
+  // above the bar, they stop there rather than move their anchors for a second phase (on the
+  // sweeps none reached the bar in one; on the garments the second phases were half their cost).
+  const auto stalled_short = [&] {
+    return bar->after_plateau && d.anchors_moved() && d.best_g_abd() > bar->most_left;
+  };
   bool short_pace = false;
   while (d.step() && !moved_further(d.current(), bar->bound) && !removed_nothing() &&
-         !(short_pace = falls_short()))
+         !(short_pace = falls_short() || stalled_short()))
     progress(static_cast<double>(d.iterations()) / params.max_iter);
   const bool passes =
       (bar->after_rows ? d.best().g_abd <= bar->most_left : d.best().g_abd < bar->most_left) &&
@@ -212,7 +218,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   c.kept = passes;
   c.dropped = d.running();  // stopped here: moved further, removed nothing or fell short
   c.moved_further = c.dropped && moved_further(d.current(), bar->bound);
-  c.fell_short = short_pace;  // the loop's last test: it ended there, still running
+  c.fell_short = short_pace;  // the loop's last tests: it ended there, still running
   c.bounded_by = bar->bounded_by;
   c.after_plateau = bar->after_plateau;
   DeformOutcome out = d.finish();

@@ -63,11 +63,11 @@ struct GroupRun {
 // and no candidate's move is a fit bound for it (on the irregular tangent developables of the
 // sweep the curve steps remove nothing and move least, and the stronger rows start slowly): there
 // they run, without the pace test, until a vertex has moved further from the start than the
-// tolerance lets it move in one iteration, and are kept only where they leave at most
-// kStrongerRowsLeave of the pick's G_ABD. (Bounded by the tolerance of each iteration alone, they
-// took a smooth torus from 0.6 % to 95 % by moving it 7.4 AE, a trade only the user can make.)
-// Not above kMaxDefectRaceVertices, where the rows are not raced for their cost.
-// Measurements behind the factor and the share: docs/robustness.md.
+// tolerance lets it move in one iteration or their own first plateau finds them short, and are
+// kept only where they leave at most kStrongerRowsLeave of the pick's G_ABD. (Bounded by the
+// tolerance of each iteration alone, they took a smooth torus from 0.6 % to 95 % by moving it 7.4
+// AE, a trade only the user can make.) Not above kMaxDefectRaceVertices, where the rows are not
+// raced for their cost. Measurements behind the factor and the share: docs/robustness.md.
 constexpr double kStrongerRowsFactor = 100;
 // Where the rows at the given weight creep (the smooth tangent developables of
 // scripts/mesh_family.py, whose rows stop with up to 64 % of G_ABD left), the stronger rows

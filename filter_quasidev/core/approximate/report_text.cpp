@@ -69,8 +69,9 @@ std::string outcome_text(const CandidateReport& c) {
   if (c.after_plateau) {  // bounded by the tolerance, and no pace stops them
     if (c.kept) return " (kept: half the pick's G_ABD left or less, after its plateau)";
     if (!c.dropped) return " (not kept: left more than half the pick's G_ABD)";
-    return c.moved_further ? " (stopped: moved further than the tolerance)"
-                           : " (stopped: removed nothing)";
+    if (c.moved_further) return " (stopped: moved further than the tolerance)";
+    return c.fell_short ? " (stopped: more than half the pick's G_ABD left at their plateau)"
+                        : " (stopped: removed nothing)";
   }
   if (c.bounded_by == Term::None) {
     if (c.kept) return " (kept: less G_ABD left, moved less)";

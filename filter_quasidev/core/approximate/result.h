@@ -83,7 +83,8 @@ struct CandidateReport {
   double weight_factor = 1;      // of the defect weight (auto's stronger rows: group_run.h)
   bool moved_further = false;    // the stronger rows: dropped having moved further than the bound
   bool late = false;             // started once the leader had stopped (both, term_race.h)
-  bool fell_short = false;       // the stronger rows: dropped, their pace would not reach the bar
+  bool fell_short = false;       // the stronger rows: dropped short of the bar by their pace, or
+                                 // after the rows' plateau by their own first plateau
   Term bounded_by = Term::None;  // the stronger rows after a pick of the rows: whose move bounds
                                  // them (group_run.h); None: the pick's, or none (after_plateau)
   bool after_plateau = false;    // the stronger rows after the rows' plateau: the tolerance alone
