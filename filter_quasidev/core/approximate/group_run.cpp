@@ -130,16 +130,19 @@ bool moved_further(const Figures& iterate, const Figures& bound) {
          iterate.max_disp > bound.max_disp * (1 + kMoveRounding);
 }
 
-// What the stronger rows must do to be kept (group_run.h): leave at most `most_left` of G_ABD
-// and move no further than `bound`; bounded_by: the candidate whose move is the bound after a
-// pick of the rows (None: the pick's, which they must also leave less than, or, after the rows'
-// plateau, the tolerance's).
+// Whose move bounds the stronger rows (group_run.h): the pick's after curve targets (they must
+// also leave less than it); after a pick of the rows, a raced candidate's, or the tolerance's
+// where the rows stopped at their plateau.
+enum class StrongerBound { Pick, Candidate, Tolerance };
+
+// What the stronger rows must do to be kept: leave at most `most_left` of G_ABD and move no
+// further than `bound`; bounded_by: the candidate whose move is the bound
+// (StrongerBound::Candidate).
 struct StrongerBar {
   Figures bound;
   double most_left = 0;
+  StrongerBound kind = StrongerBound::Pick;
   Term bounded_by = Term::None;
-  bool after_rows = false;
-  bool after_plateau = false;
 };
 
 // The bar for the stronger rows after `pick` (the best iterate of the race's winner), if they are
@@ -151,14 +154,14 @@ std::optional<StrongerBar> stronger_bar(const GroupRun& run, const Figures& pick
   const bool targets = std::any_of(run.fits.begin(), run.fits.end(), [](const PatchFit& p) {
     return p.reason == TermReason::Measured && (p.term == Term::Curve || p.term == Term::Both);
   });
-  if (targets) return StrongerBar{pick, pick.g_abd, Term::None, false, false};
+  if (targets) return StrongerBar{pick, pick.g_abd, StrongerBound::Pick, Term::None};
   const double most_left = kStrongerRowsLeave * pick.g_abd;
   if (run.outcome.stop != PatchStop::MaxIter) {
     const std::vector<double>& tolerance = run.group.tolerance;
     Figures bound = pick;
     bound.mean_disp = std::numeric_limits<double>::infinity();
     bound.max_disp = *std::max_element(tolerance.begin(), tolerance.end());
-    return StrongerBar{bound, most_left, Term::None, true, true};
+    return StrongerBar{bound, most_left, StrongerBound::Tolerance, Term::None};
   }
   const CandidateFigures* furthest = nullptr;
   for (const CandidateFigures& c : run.race)
@@ -169,7 +172,7 @@ std::optional<StrongerBar> stronger_bar(const GroupRun& run, const Figures& pick
   Figures bound = pick;
   bound.mean_disp = furthest->mean_disp;
   bound.max_disp = furthest->max_disp;
-  return StrongerBar{bound, most_left, furthest->term, true, false};
+  return StrongerBar{bound, most_left, StrongerBound::Candidate, furthest->term};
 }
 
 // Auto's stronger angle-defect rows after its pick (kStrongerRowsFactor): kept where they pass
@@ -197,21 +200,23 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
     return d.iterations() >= kNothingRounds && d.best_g_abd() >= d.initial_g_abd();
   };
   const auto falls_short = [&] {
-    return bar->after_rows && !bar->after_plateau && d.iterations() >= kPlateauIterations &&
+    return bar->kind == StrongerBound::Candidate && d.iterations() >= kPlateauIterations &&
            projected_g_abd(d, params.max_iter) > bar->most_left;
   };
   // After the rows' plateau their own first plateau judges them instead: where it finds them
   // above the bar, they stop there rather than move their anchors for a second phase (on the
   // sweeps none reached the bar in one; on the garments the second phases were half their cost).
   const auto stalled_short = [&] {
-    return bar->after_plateau && d.anchors_moved() && d.best_g_abd() > bar->most_left;
+    return bar->kind == StrongerBound::Tolerance && d.anchors_moved() &&
+           d.best_g_abd() > bar->most_left;
   };
   bool short_pace = false;
   while (d.step() && !moved_further(d.current(), bar->bound) && !removed_nothing() &&
          !(short_pace = falls_short() || stalled_short()))
     progress(static_cast<double>(d.iterations()) / params.max_iter);
+  const bool after_rows = bar->kind != StrongerBound::Pick;
   const bool passes =
-      (bar->after_rows ? d.best().g_abd <= bar->most_left : d.best().g_abd < bar->most_left) &&
+      (after_rows ? d.best().g_abd <= bar->most_left : d.best().g_abd < bar->most_left) &&
       !moved_further(d.best(), bar->bound);
   CandidateFigures c = candidate_figures(Term::Defect, d);
   c.weight_factor = kStrongerRowsFactor;
@@ -220,7 +225,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   c.moved_further = c.dropped && moved_further(d.current(), bar->bound);
   c.fell_short = short_pace;  // the loop's last tests: it ended there, still running
   c.bounded_by = bar->bounded_by;
-  c.after_plateau = bar->after_plateau;
+  c.after_plateau = bar->kind == StrongerBound::Tolerance;
   DeformOutcome out = d.finish();
   if (passes) {
     for (CandidateFigures& other : run.race) other.kept = false;
