@@ -41,6 +41,7 @@ Json stage_times(const approximate::StageTimes& t) {
           {"solve_bytes", t.solve_bytes},
           {"solves", t.solves},
           {"cg_iterations", t.cg_iterations},
+          {"cg_truncated", t.cg_truncated},
           {"substituted", t.substituted}};
 }
 

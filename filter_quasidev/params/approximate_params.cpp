@@ -25,9 +25,10 @@ std::string solver_help() {
 std::string method_help() {
   return common::format_text(
       "direct: factorise each patch's coupled system; iterative: conjugate gradients with two "
-      "scalar factors, to a relative error of %g; auto: iterative from %ld unknowns per patch. "
+      "scalar factors, to a relative error of %g, or, where they converge too slowly for that "
+      "within %d iterations, as far as they got; auto: iterative from %ld unknowns per patch. "
       "Patches with angle-defect rows are always factorised.",
-      approximate::kCgTolerance, approximate::kIterativeFromUnknowns);
+      approximate::kCgTolerance, approximate::kCgIterations, approximate::kIterativeFromUnknowns);
 }
 
 std::vector<Param<S>> declare() {

@@ -105,13 +105,14 @@ struct StageTimes {
   double solve_bytes = 0;          // the least the solves read: L per pass, M per CG product
   int solves = 0;                  // linear solves, one per iteration
   int cg_iterations = 0;           // conjugate-gradient iterations of the iterative solves
+  int cg_truncated = 0;            // iterative solves CG gave up on (solve_strategy.h)
   int substituted = 0;             // systems factorised by another back end than the one asked for
   StageTimes& operator+=(const StageTimes& o) {
     setup += o.setup, step1 += o.step1, assembly += o.assembly, factorization += o.factorization;
     solve += o.solve, metrics += o.metrics;
     factorizations += o.factorizations, factorization_flops += o.factorization_flops;
     solve_bytes += o.solve_bytes;
-    solves += o.solves, cg_iterations += o.cg_iterations;
+    solves += o.solves, cg_iterations += o.cg_iterations, cg_truncated += o.cg_truncated;
     substituted += o.substituted;
     return *this;
   }

@@ -1,5 +1,5 @@
 // How one group's linear system (Eq. 17, paper §5.4) is solved: by a factorisation, or by
-// conjugate gradients (issue 5), falling back to the factorisation when CG gives up.
+// conjugate gradients (issue 5).
 //
 // Direct: M is factorised once per set of targets and every iteration is one back substitution
 // (Algorithm 1, steps 2.3–2.4); changed values are factorised again numerically, the analysis
@@ -10,9 +10,14 @@
 // preconditioned by the frame split of frame_preconditioner.h, built once and kept while the
 // targets move. Each solve stops when the correction's error in M's energy norm is below
 // kCgTolerance of the correction, and starts from the solve before's solution when that is
-// closer. A solve that CG gives up on (conjugate_gradients.h) factorises M instead, and so do
-// the group's later solves; M, in the order CG wants (system_layout.h), is then permuted to the
-// kLeastFillFromBlocks order for its factor. Measurements behind the constants: docs/solvers.md.
+// closer. Where CG gives up (conjugate_gradients.h: its pace would not reach the tolerance
+// within kCgIterations), its iterate is the step all the same, a truncated solve: the point of
+// least error in M's energy norm over the directions CG has searched, which the step limit and
+// the never-worse rule then judge as every step (on two panels of the upsampled 4-panel tee,
+// whose curve targets fit 17–22° off, factorising M instead cost 740 GFlop for less G_ABD
+// removed: docs/solvers.md). M solved directly (SolveMethod::Direct) in the order CG wants
+// (system_layout.h: from kLeastFillFromBlocks free vertices) is permuted to a LeastFill order
+// for its factor. Measurements behind the constants: docs/solvers.md.
 #pragma once
 
 #include <Eigen/SparseCore>
@@ -78,7 +83,7 @@ class SolveStrategy {
 
   SolverKind solver_;
   int threads_;
-  bool iterative_;
+  const bool iterative_;
   const BlockPattern& pattern_;
   StageTimes& times_;
   PositiveDefiniteFactor positive_;                      // M's
