@@ -433,6 +433,24 @@ def test_report_says_which_developability_term_each_patch_used(tmp_path):
     assert "(auto, measured: curve −" in r.stdout
 
 
+def test_stronger_rows_whose_first_pace_falls_short_stop_at_once(tmp_path):
+    """The draped panels at --max-iter 5: where the race picks the angle-defect rows, auto's rows
+    at a hundred times the weight run after it, bounded by a raced candidate's move, and stop as
+    soon as the pace of their iterations so far would not halve the pick's G_ABD by maxIter
+    (group_run.cpp), before the three iterations a pace is otherwise judged over; the pick is
+    kept."""
+    r = run(REPO / "sample_meshes" / "draped_panels.ply", tmp_path / "out.ply", "--max-iter", 5,
+            "--report", tmp_path / "r.json")
+    assert r.returncode == 0, r.stderr
+    short = re.findall(r"defect ×100 weight −[\d.]+% in (\d+) it\. "
+                       r"\(stopped: its pace would not halve the pick's G_ABD\)", r.stdout)
+    assert short and min(int(n) for n in short) < 3, r.stdout
+    report = json.loads((tmp_path / "r.json").read_text())
+    stronger = [c for p in report["patches"] for c in p["candidates"]
+                if c["defect_weight_factor"] != 1]
+    assert stronger and not any(c["kept"] for c in stronger), stronger
+
+
 def test_a_substituted_solver_is_reported_and_gives_the_same_result(tmp_path):
     """eigen-llt cannot factorise the quasi-definite systems of the angle-defect rows: the
     engine factorises them by LDLᵀ, says so in the log and the report, and the positions agree

@@ -56,8 +56,8 @@ struct GroupRun {
 // curve targets moved further on average, auto would have accepted that move had it won. There the
 // stronger rows run too, bounded by that candidate's move (the one that moved most, on average
 // and at most) instead of the pick's, and are kept only where they leave at most
-// kStrongerRowsLeave of the pick's G_ABD; they also stop once kPlateauIterations of their
-// iterations give a pace that would not take them there by maxIter (projected_g_abd,
+// kStrongerRowsLeave of the pick's G_ABD; they also stop once the pace of their iterations so
+// far (up to the last kPlateauIterations) would not take them there by maxIter (projected_g_abd,
 // term_race.h). And where the pick stopped at its plateau before maxIter (its own stop rule:
 // more iterations at that weight remove no meaningful share), a stronger pull is the only way on,
 // and no candidate's move is a fit bound for it (on the irregular tangent developables of the
