@@ -108,6 +108,15 @@ Params params(double w, double alpha, SolverKind solver, SolveMethod method) {
   return p;
 }
 
+// The free vertices' positions X as the system's unknown vector (its order, 3 coordinates each).
+Eigen::VectorXd unknown_vector(const DeformationSystem& sys, const Positions& X) {
+  Eigen::VectorXd x(sys.matrix().rows());
+  for (size_t v = 0; v < sys.unknown().size(); ++v)
+    if (sys.unknown()[v] >= 0)
+      x.segment<3>(3 * sys.unknown()[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
+  return x;
+}
+
 struct Both {
   Fixture s;
   DeformationSystem sys;
@@ -165,13 +174,7 @@ struct Both {
     }
   }
   // Unknown vector of positions X, in the system's order.
-  Eigen::VectorXd free_vector(const Positions& X) const {
-    Eigen::VectorXd x(A.cols());
-    for (size_t v = 0; v < sys.unknown().size(); ++v)
-      if (sys.unknown()[v] >= 0)
-        x.segment<3>(3 * sys.unknown()[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
-    return x;
-  }
+  Eigen::VectorXd free_vector(const Positions& X) const { return unknown_vector(sys, X); }
 };
 
 TEST(DeformationSystem, SparseEqualsDenseAssembly) {
@@ -247,15 +250,9 @@ TEST_P(EverySolver, IterativeSolveKeepsCgsIterateWhereCgStalls) {
   DeformationSystem direct(s.g, params(1000.0, 10.0, GetParam(), SolveMethod::Direct), 0.4);
   iterative.set_rows(s.targets);
   direct.set_rows(s.targets);
-  const auto unknowns = [&](const Positions& X) {  // in the iterative system's order
-    Eigen::VectorXd x(iterative.matrix().rows());
-    for (size_t v = 0; v < iterative.unknown().size(); ++v)
-      if (iterative.unknown()[v] >= 0)
-        x.segment<3>(3 * iterative.unknown()[v]) = X.row(static_cast<Eigen::Index>(v)).transpose();
-    return x;
-  };
-  const Eigen::VectorXd exact = unknowns(direct.solve(s.ref)), start = unknowns(s.ref);
-  const Eigen::VectorXd x = unknowns(iterative.solve(s.ref));
+  const Eigen::VectorXd exact = unknown_vector(iterative, direct.solve(s.ref));
+  const Eigen::VectorXd start = unknown_vector(iterative, s.ref);
+  const Eigen::VectorXd x = unknown_vector(iterative, iterative.solve(s.ref));
   const Eigen::SparseMatrix<double> M = iterative.matrix().selfadjointView<Eigen::Lower>();
   const auto energy = [&](const Eigen::VectorXd& e) { return std::sqrt(e.dot(M * e)); };
   const int tried = iterative.times().cg_iterations;

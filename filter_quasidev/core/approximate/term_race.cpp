@@ -42,7 +42,7 @@ int most_iterations(const std::vector<Deformation>& runs, const std::vector<char
 double projected_g_abd(const Deformation& run, int max_iter, int window) {
   const std::vector<double>& best = run.best_track();
   const auto n = static_cast<int>(best.size()) - 1;  // accepted iterations
-  if (n < window || window < 1 || !run.running()) return run.best_g_abd();
+  if (n < window || !run.running()) return run.best_g_abd();
   const double pace = (best[n - window] - best[n]) / window;
   return best[n] - pace * std::max(0, max_iter - n);
 }

@@ -113,7 +113,7 @@ struct CandidateFigures {
   bool late = false;             // started once the leader had stopped (both, term_race.h)
 };
 
-// The best G_ABD at max_iter if it falls on at its pace over the last `window` accepted
+// The best G_ABD at max_iter if it falls on at its pace over the last `window` (≥ 1) accepted
 // iterations (a run with fewer: where it is); a run that has stopped ends where it is.
 double projected_g_abd(const Deformation& run, int max_iter, int window = kPlateauIterations);
 
