@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "common/error.h"
+#include "common/format_text.h"
 
 namespace qd::io {
 
@@ -32,7 +33,7 @@ void check_face(const PlyProperty& indices, const std::vector<double>& corners, 
                           ", which is not a whole number");
     if (v < 0 || v >= static_cast<double>(vertex_count))
       throw common::Error("face " + std::to_string(f) + " uses vertex index " +
-                          std::to_string(static_cast<long long>(v)) +
+                          common::format_text("%.0f", v) +  // any whole double, 2^63 and up too
                           ", out of range (the file has " + std::to_string(vertex_count) +
                           " vertices)");
   }

@@ -96,6 +96,9 @@ TEST(OffReader, Errors) {
       {"OFF\n1000000000 1 0\n0 0 0\n",
        "declares 1000000000 vertices and 1 faces, but only 1 data lines"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n", "face 0 uses vertex index 5, out of range"},
+      // An index of 2^63 or more is read as a double no long long holds (found by the fuzzer).
+      {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9223372036854775807\n",
+       "face 0 uses vertex index 9223372036854775808, out of range"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n",
        "OFF line 6: the face lists 3 indices but says it has 4"},
       {"OFF\n3 1 0\n0 0 0\n1 inf 0\n0 1 0\n3 0 1 2\n", "OFF line 4: vertex coordinate 'inf'"},
