@@ -14,7 +14,7 @@ std::vector<char> selected_faces(const io::MeshDocument& mesh) {
     std::vector<char> selected(mesh.triangles.size(), 0);
     bool any = false;
     for (std::size_t f = 0; f < selected.size(); ++f)
-      any |= (selected[f] = (static_cast<long long>(p.values[f]) & io::kSelectedFlag) != 0) != 0;
+      any |= (selected[f] = io::has_selected_flag(p.values[f])) != 0;
     if (any) return selected;
   }
   return {};

@@ -48,7 +48,7 @@ void read_vertices(PlyElement& vertex, MeshDocument& mesh) {
     std::vector<char> selected(vertex.count, 0);
     bool any = false;
     for (std::size_t i = 0; i < vertex.count; ++i) {
-      selected[i] = (static_cast<long long>(values[i]) & kSelectedFlag) != 0;
+      selected[i] = has_selected_flag(values[i]);
       any = any || selected[i];
     }
     if (any) mesh.constrained = std::move(selected);
@@ -110,6 +110,11 @@ std::map<int, std::string> patch_names(const std::vector<std::string>& comments)
 }
 
 }  // namespace
+
+bool has_selected_flag(double flags) {
+  if (!(std::fabs(flags) < 0x1p58)) return false;
+  return (static_cast<long long>(flags) & kSelectedFlag) != 0;
+}
 
 MeshDocument parse_ply(std::string_view bytes) {
   PlyTables ply = parse_ply_tables(bytes);

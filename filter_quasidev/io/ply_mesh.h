@@ -17,6 +17,10 @@ namespace qd::io {
 // vcg's selection bit in the PLY vertex `flags` property.
 constexpr int kSelectedFlag = 0x20;
 
+// Whether a `flags` value, read as a double from any PLY type, has the selection bit. NaN and
+// magnitudes of 2^58 or more have none: doubles there are multiples of 64.
+bool has_selected_flag(double flags);
+
 MeshDocument parse_ply(std::string_view bytes);
 
 }  // namespace qd::io

@@ -124,6 +124,18 @@ TEST(PlyMesh, IntegerPatchPropertyIsUsedWithoutQuality) {
   EXPECT_TRUE(mesh.notes.empty());
 }
 
+TEST(PlyMesh, FloatFlagsOfAnyValueReadWithoutOverflow) {
+  // 32.5 truncates to the selection bit; 1e300, -1e19 and nan cannot hold it (and would overflow
+  // a cast to an integer).
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+      "property float z\nproperty double flags\nelement face 1\n"
+      "property list uchar int vertex_indices\nend_header\n"
+      "0 0 0 32.5\n1 0 0 1e300\n0 1 0 -1e19\n1 1 0 nan\n2 2 0 -32\n3 0 1 2\n";
+  const MeshDocument mesh = mesh_of(text);
+  EXPECT_EQ(mesh.constrained, (std::vector<char>{1, 0, 0, 0, 1}));
+}
+
 TEST(PlyReader, AcceptsCrLfHeadersSignsAndSkipsBlankHeaderLines) {
   const std::string text =
       "ply\r\nformat ascii 1.0\r\ncomment  two  spaces\r\n\r\nelement vertex 3\r\nproperty double "
