@@ -225,7 +225,7 @@ bool Deformation::step() {
   report.weight_scale = weight_scale_;
   out_.history.push_back(report);
   ++out_.iterations_run;
-  if (last_.g_abd < best_.g_abd) {
+  if (last_.g_abd < best_.g_abd && (!within_ || within_(last_))) {
     best_ = last_;
     best_V_ = V_;
     best_iterations_ = out_.history.size();

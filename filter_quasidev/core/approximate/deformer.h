@@ -113,6 +113,9 @@ class Deformation {
   // plateau of their own (above; what a stalled run does), once; false: it cannot (not asked
   // for, already done). behind: asked by auto's race, where these targets fell far behind.
   bool refit_targets(bool behind = false);
+  // From now on an iterate becomes the best only where `within` holds for its figures (auto's
+  // stronger rows, bounded by a move: group_run.h).
+  void keep_best_within(std::function<bool(const Figures&)> within) { within_ = std::move(within); }
   // The result (call once, after the last step).
   DeformOutcome finish();
 
@@ -148,6 +151,7 @@ class Deformation {
   Figures last_;         // figures of V_
   Figures best_;         // figures of the best iterate
   Positions best_V_;
+  std::function<bool(const Figures&)> within_;  // empty: any iterate may be the best
   std::vector<double> best_track_;  // best G_ABD after each accepted iteration (0: the input)
   size_t best_iterations_ = 0;      // accepted iterations up to the best iterate
   double initial_g_ = 0;

@@ -191,6 +191,9 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   stronger.defect_weight *= kStrongerRowsFactor;
   std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);
   Deformation d = start_run(g, fits, layouts, stronger, threads);
+  // They stop at their first iterate beyond the bound, and are judged by their best one within
+  // it: dominating the pick, it is kept though a later one moved further.
+  d.keep_best_within([&](const Figures& f) { return !moved_further(f, bar->bound); });
   // As in the race (term_race.h), rows that removed nothing in kNothingRounds iterations stop;
   // bounded by a candidate's move, so do rows whose pace would not take them to the bar by
   // maxIter, judged from their first accepted iteration on (their pace over their iterations so
@@ -233,6 +236,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   c.bounded_by = bar->bounded_by;
   c.after_plateau = bar->kind == StrongerBound::Tolerance;
   DeformOutcome out = d.finish();
+  if (passes && c.moved_further) out.stop = PatchStop::MoveBound;
   if (passes) {
     for (CandidateFigures& other : run.race) other.kept = false;
     out.times += run.outcome.times;

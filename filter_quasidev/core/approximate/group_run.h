@@ -45,7 +45,9 @@ struct GroupRun {
 // and the group keeps them only where they dominate the pick: less G_ABD left, and the vertices
 // moved no further, on average or at most. No trade-off is made for the user (--defect-weight
 // moves along the curve); the run stops as soon as an iterate has moved further than the pick's
-// result, or, as a candidate of the race does, once kNothingRounds iterations removed nothing.
+// result, or, as a candidate of the race does, once kNothingRounds iterations removed nothing, and
+// is judged by its best iterate within that move (the irregular lampshade with bumps of 0.3 AE of
+// seed 3: both's 62 % against the rows' 76 % within its move and 92 % a step beyond it).
 // Where triangles do not follow the rulings (an irregular triangulation of a smooth cylinder, cone
 // or lampshade) no face normal can reach the curve targets, while the rows, which only ask each
 // vertex's angles to sum to 2π, can: on such members of scripts/mesh_family.py

@@ -165,6 +165,9 @@ std::string pass_stop_text(const PassStop& s) {
     case PatchStop::RatioObd:
       t = "ratio_OBD below δ_OBD";
       break;
+    case PatchStop::MoveBound:
+      t = "move bound: the next iterate moved further than the move that bounds these rows";
+      break;
     case PatchStop::NoStep:
       t = "never-worse rule: iteration " + std::to_string(s.iterations_run + 1) + " refused (" +
           s.detail + ")";

@@ -38,7 +38,9 @@ enum class SolvePass { Only, AllAtOnce, SeamsHeld, SeamsFree };
 
 // Why a patch's run in one pass stopped: the deformer's stop rules (deformer.h), or nothing to
 // do (Planar, or Unfitted: Step 1 found no model).
-enum class PatchStop { MaxIter, Plateau, RatioAbd, RatioObd, NoStep, Planar, Unfitted };
+// MoveBound: auto's stronger rows, kept, stopped where an iterate moved further than their bound
+// (group_run.h).
+enum class PatchStop { MaxIter, Plateau, RatioAbd, RatioObd, NoStep, Planar, Unfitted, MoveBound };
 
 struct PassStop {
   SolvePass pass = SolvePass::Only;
