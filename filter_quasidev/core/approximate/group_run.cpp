@@ -224,9 +224,9 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
          !(short_pace = falls_short() || stalled_short()))
     progress(static_cast<double>(d.iterations()) / params.max_iter);
   const bool after_rows = bar->kind != StrongerBound::Pick;
+  // (Their best iterate is within the bound: keep_best_within above.)
   const bool passes =
-      (after_rows ? d.best().g_abd <= bar->most_left : d.best().g_abd < bar->most_left) &&
-      !moved_further(d.best(), bar->bound);
+      after_rows ? d.best().g_abd <= bar->most_left : d.best().g_abd < bar->most_left;
   CandidateFigures c = candidate_figures(Term::Defect, d);
   c.weight_factor = kStrongerRowsFactor;
   c.kept = passes;
@@ -236,8 +236,8 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   c.bounded_by = bar->bounded_by;
   c.after_plateau = bar->kind == StrongerBound::Tolerance;
   DeformOutcome out = d.finish();
-  if (passes && c.moved_further) out.stop = PatchStop::MoveBound;
   if (passes) {
+    if (c.moved_further) out.stop = PatchStop::MoveBound;
     for (CandidateFigures& other : run.race) other.kept = false;
     out.times += run.outcome.times;
     run.outcome = std::move(out);
