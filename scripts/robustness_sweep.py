@@ -64,7 +64,7 @@ def run(quasidev: str, mesh: str, term: str, extra: list[str], tmp: str, V, F) -
         return {"error": proc.stderr.strip()}
     r = json.load(open(rep, encoding="utf-8"))
     p = r["patches"][0]
-    chosen = p["developability"]  # "defect ×100" where auto kept its stronger rows (group_run.h)
+    chosen = p["developability"]  # "defect ×30" where auto kept its stronger rows (group_run.h)
     kept = next((c for c in p.get("candidates", []) if c["kept"]), {})
     factor = kept.get("defect_weight_factor", 1)
     if factor != 1:

@@ -51,6 +51,8 @@ Json candidate(const approximate::CandidateReport& c) {
           {"abd_reduction", c.abd_reduction},
           {"mean_disp", c.mean_disp},
           {"defect_weight_factor", c.weight_factor},
+          {"outdone_by_weight_factor", c.outdone_by > 0 ? Json(c.outdone_by) : Json(nullptr)},
+          {"outpaced", c.outpaced},
           {"kept", c.kept},
           {"dropped", c.dropped},
           {"started", c.started()},

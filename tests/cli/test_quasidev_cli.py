@@ -435,7 +435,7 @@ def test_report_says_which_developability_term_each_patch_used(tmp_path):
 
 def test_stronger_rows_whose_first_pace_falls_short_stop_at_once(tmp_path):
     """The draped panels at --max-iter 5: where the race picks the angle-defect rows, auto's rows
-    at a hundred times the weight run after it, bounded by a raced candidate's move, and stop as
+    at a hundred times the weight (the first of the stronger weights) run after it, bounded by a raced candidate's move, and stop as
     soon as the pace of their iterations so far would not halve the pick's G_ABD by maxIter
     (group_run.cpp), before the three iterations a pace is otherwise judged over; the pick is
     kept."""

@@ -94,6 +94,16 @@ TEST(ReportText, StrongerRowsSayWhyTheyWereKeptOrStopped) {
   EXPECT_NE(text(20, false, false).find("(not kept: left more G_ABD than the pick)"),
             std::string::npos);
   EXPECT_NE(text(20, false, false).find("curve −50.0% in 4 it. (kept)"), std::string::npos);
+  // Passed the bar, but another weight left less and was kept.
+  p.candidates = {{Term::Curve, 4, 50.0, 0.1, false, false},
+                  {Term::Defect, 3, 80.0, 0.05, false, false, NotRun::No, 100, false},
+                  {Term::Defect, 9, 95.0, 0.04, true, false, NotRun::No, 30, false}};
+  p.candidates[1].outdone_by = 30;
+  const std::string ladder = term_choice_text(p);
+  EXPECT_NE(ladder.find("defect ×100 weight −80.0% in 3 it. (passed, but defect ×30 weight left "
+                        "less), defect ×30 weight −95.0% in 9 it. (kept: less G_ABD left"),
+            std::string::npos)
+      << ladder;
 }
 
 // After a pick of the rows the stronger rows answer to the candidate whose move bounds them and

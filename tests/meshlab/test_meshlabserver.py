@@ -130,7 +130,7 @@ def test_log_has_a_line_per_patch_and_a_total(job):
 def test_log_names_the_developability_term(job):
     """auto measures: every patch line names the term it ran; where candidates were raced, the
     line gives each one's figures and the kept one removed the most of the raced terms (the
-    angle-defect rows at a stronger weight, named `defect ×100 weight`, where they beat the race's
+    angle-defect rows at a stronger weight, named `defect ×100 weight` (or ×30, ×10), where they beat the race's
     pick; where they are not kept, the line says which bound stopped them, and they may have
     removed more). On the draped sample the angle-defect rows are raced."""
     lines = re.findall(r"^LOG: \d+ patch -?\d+: .*$", job.log, re.M)

@@ -11,7 +11,9 @@ bumps of 4 AE it keeps the best term on every member. On 60 members of another s
 amplitudes, widths and a jitter outside the grid, it keeps the best term on every one.
 docs/robustness.md gives the whole table,
 including the members where the 90 % is not reached (the tangent developable)."""
+import json
 import os
+import subprocess
 import sys
 
 import pytest
@@ -160,14 +162,14 @@ def test_creeping_rows_get_a_stronger_pull_within_a_curve_candidates_move():
     """The smooth tangent developable of seed 2 with bumps of 0.75 AE, 0.12 wide (3k faces, a
     member of the held-out family that no rule was measured on): the race picks the angle-defect
     rows, which creep to a plateau at 84 %, while the curve term and both, which moved further,
-    remove less. The rows at a hundred times the weight then run too, bounded by the move of the
+    remove less. The rows at stronger weights then run too, bounded by the move of the
     candidate with curve targets that moved most, and are kept where they leave at most half of
     what the pick left (group_run.h): auto removes at least 90 %, and moves no further on average
     than the curve term or both run alone."""
     member = mesh_family.Member("tangent", 0.75, 0.12, 0, 1, 2)
     row = sweep([member])[0]
     assert row["defect"]["reduction"] < 90.0 and row["auto"]["reduction"] >= 90.0, row
-    assert row["auto"]["chosen"] == "defect ×100", row["auto"]
+    assert row["auto"]["chosen"].startswith("defect ×"), row["auto"]
     assert row["auto"]["reduction"] >= 100 - 0.5 * (100 - row["defect"]["reduction"]), row
     assert row["auto"]["mean_move_ae"] <= max(row["curve"]["mean_move_ae"], row["both"]["mean_move_ae"]), row
 
@@ -182,20 +184,36 @@ def test_rows_stopped_at_their_plateau_get_a_stronger_pull_within_the_tolerance(
     member = mesh_family.Member("tangent", 1, 0.16, 0, 1, 1, 0.1)
     row = rs.sweep([member], ("defect", "auto"), QUASIDEV, jobs=1)[0]
     assert row["defect"]["reduction"] < 90.0 and row["auto"]["reduction"] >= 90.0, row
-    assert row["auto"]["chosen"] == "defect ×100", row["auto"]
+    assert row["auto"]["chosen"].startswith("defect ×"), row["auto"]
     assert row["auto"]["bounded_by"] == "tolerance", row["auto"]
     assert row["auto"]["reduction"] >= 100 - 0.5 * (100 - row["defect"]["reduction"]), row
     assert row["auto"]["flipped"] == 0, row["auto"]
 
 
-def assert_auto_keeps_both(members):
-    """Auto is within 2 points of the best term on every member, and keeps both."""
+def candidates(member, tmp_path):
+    """Auto's candidates on the member, from its report."""
+    mesh, report = tmp_path / f"{member.name}.ply", tmp_path / f"{member.name}.json"
+    mesh_family.write_ply(str(mesh), *mesh_family.make(member))
+    subprocess.run([QUASIDEV, "approximate", str(mesh), str(tmp_path / "out.ply"), "--quiet",
+                    "--report", str(report)], check=True)
+    return json.loads(report.read_text())["patches"][0]["candidates"]
+
+
+def assert_auto_keeps_both(members, tmp_path):
+    """Auto is within 2 points of the best term on every member, and its race keeps both (which
+    the stronger rows may then beat: group_run.h)."""
     rows = sweep(members)
     assert_auto_keeps_the_best_term(rows)
-    assert all(row["auto"]["chosen"] == "both" for row in rows), [row["auto"]["chosen"] for row in rows]
+    for member in members:
+        cands = candidates(member, tmp_path)
+        kept = next(c for c in cands if c["kept"])
+        raced = [c for c in cands if c["defect_weight_factor"] == 1 and c["started"]]
+        best = max(raced, key=lambda c: c["abd_reduction"])
+        assert best["term"] == "both", (member.name, cands)
+        assert kept is best or kept["defect_weight_factor"] != 1, (member.name, cands)
 
 
-def test_both_starts_late_where_the_rows_stop_short():
+def test_both_starts_late_where_the_rows_stop_short(tmp_path):
     """An irregular cone with bumps of 2 AE, 0.08 wide, and an irregular lampshade likewise
     (3k faces each): the curve term's first step removes nothing and the angle-defect rows' some,
     so both, the rows with the curve targets, does not start with them (its first steps cost the
@@ -204,7 +222,7 @@ def test_both_starts_late_where_the_rows_stop_short():
     same start, and auto keeps it (it lost 13 and 7 points before)."""
     members = [mesh_family.Member("cone", 2, 0.08, 0, 1, 1, 0.24),
                mesh_family.Member("lampshade", 2, 0.08, 0, 1, 1, 0.1)]
-    assert_auto_keeps_both(members)
+    assert_auto_keeps_both(members, tmp_path)
 
 
 def test_auto_costs_what_the_curve_term_does_where_its_pace_leaves_little():
@@ -220,7 +238,7 @@ def test_auto_costs_what_the_curve_term_does_where_its_pace_leaves_little():
     assert abs(row["auto"]["reduction"] - row["curve"]["reduction"]) < 0.01, row
 
 
-def test_a_rejoining_term_is_judged_by_its_steps_after_it_rejoins():
+def test_a_rejoining_term_is_judged_by_its_steps_after_it_rejoins(tmp_path):
     """The irregular cylinder with bumps of 2 AE, 0.08 wide, and the irregular lampshade with bumps
     of 1 AE, 0.08 wide (3k faces each, cells slid by up to 0.24): both, the rows with the curve
     targets, is dropped by the trial, and the leader then stops by its own rule short of maxIter.
@@ -229,35 +247,35 @@ def test_a_rejoining_term_is_judged_by_its_steps_after_it_rejoins():
     it."""
     members = [mesh_family.Member("cylinder", 2, 0.08, 0, 1, 1, 0.24),
                mesh_family.Member("lampshade", 1, 0.08, 0, 1, 1, 0.24)]
-    assert_auto_keeps_both(members)
+    assert_auto_keeps_both(members, tmp_path)
 
 
-def test_a_pace_is_judged_within_one_phase_of_a_run():
+def test_a_pace_is_judged_within_one_phase_of_a_run(tmp_path):
     """The lampshade with bumps of 2 AE, 0.16 wide (12k faces): both's targets are re-fitted after
     its 13th iteration and its anchors move after its 16th, and the steps between raise G_ABD. Judged
     by its pace over those steps, both was dropped, and auto kept the curve term's 89 % where both
     alone reaches 97 %. A pace is now judged only within one phase of a run (term_race.h), as the
     plateau rule judges it, and auto keeps both."""
-    assert_auto_keeps_both([mesh_family.Member("lampshade", 2, 0.16, 0, 2, 1)])
+    assert_auto_keeps_both([mesh_family.Member("lampshade", 2, 0.16, 0, 2, 1)], tmp_path)
 
 
-def test_a_trailer_on_a_shortened_step_is_not_dropped_for_its_rank():
+def test_a_trailer_on_a_shortened_step_is_not_dropped_for_its_rank(tmp_path):
     """The cone with bumps of 2 AE, 0.16 wide (3k faces): at round 3, a tenth of maxIter, both
     trails (57 % against the curve term's 65 %) because the never-worse rule has halved its step;
     it backs off its weights at iteration 7 and ends at 93 %, where the curve term ends at 89 %.
     Dropped for its rank at round 3, it left auto 3.7 points behind. A trailer whose last step was
     shortened is not dropped for its rank (term_race.h), and auto keeps both."""
-    assert_auto_keeps_both([mesh_family.Member("cone", 2, 0.16, 0, 1, 1)])
+    assert_auto_keeps_both([mesh_family.Member("cone", 2, 0.16, 0, 1, 1)], tmp_path)
 
 
-def test_a_rejoined_term_is_fitted_again_rather_than_dropped_by_its_pace():
+def test_a_rejoined_term_is_fitted_again_rather_than_dropped_by_its_pace(tmp_path):
     """The irregular cylinder with bumps of 2 AE, 0.08 wide (3k faces, cells slid by up to 0.1):
     the curve term stops at a plateau at iteration 27 with 86 %; both, dropped at the keep-leader
     round, rejoins, and its pace over its next steps (its targets stalling) would not take it
     below the leader, so it was dropped at 84 %. Alone, its stop rule fits its curve again at
     that stall and it ends at 89 %. A rejoined candidate with curve targets is now fitted again
     instead of dropped (term_race.h), and auto keeps both."""
-    assert_auto_keeps_both([mesh_family.Member("cylinder", 2, 0.08, 0, 1, 1, 0.1)])
+    assert_auto_keeps_both([mesh_family.Member("cylinder", 2, 0.08, 0, 1, 1, 0.1)], tmp_path)
 
 
 # Members no rule was tuned on: another seed (other bump centres and jitter), and amplitudes,
@@ -290,7 +308,39 @@ def test_stronger_rows_stopped_by_their_bound_keep_their_best_iterate_within_it(
     member = mesh_family.Member("lampshade", 0.3, 0.1, 0, 1, 3, 0.15)
     row = rs.sweep([member], ("both", "auto"), QUASIDEV, jobs=1)[0]
     assert row["both"]["reduction"] < 65.0 and row["auto"]["reduction"] >= 70.0, row
-    assert row["auto"]["chosen"] == "defect ×100", row["auto"]
+    assert row["auto"]["chosen"].startswith("defect ×"), row["auto"]
     assert row["auto"]["max_move_ae"] <= row["both"]["max_move_ae"], row
     assert row["auto"]["stop"].startswith("move bound"), row["auto"]
     assert row["auto"]["flipped"] == 0, row["auto"]
+
+
+def test_the_stronger_rows_keep_the_weight_that_goes_furthest_within_their_bound(tmp_path):
+    """The smooth tangent developable with bumps of 0.5 AE, 0.16 wide (3k faces): the race picks
+    the curve term, 59 %, after which every step raises G_ABD. The angle-defect rows at a hundred
+    times the weight move further than that pick within a few iterations and remove less; at a
+    tenth and a third of that pull they go on within its move. Auto runs every stronger weight
+    against the same bar and keeps the one that leaves least (group_run.h): at least 90 %, no
+    vertex moved further than the curve term run alone moved one, and the log names each weight
+    and why it was or was not kept (a weight after the kept one stops once its pace would not
+    beat it)."""
+    member = mesh_family.Member("tangent", 0.5, 0.16, 0, 1, 1)
+    row = rs.sweep([member], ("curve", "auto"), QUASIDEV, jobs=1)[0]
+    assert row["curve"]["reduction"] < 70.0 and row["auto"]["reduction"] >= 90.0, row
+    assert row["auto"]["chosen"] in ("defect ×30", "defect ×10"), row["auto"]
+    assert row["auto"]["max_move_ae"] <= row["curve"]["max_move_ae"], row
+    assert row["auto"]["flipped"] == 0, row["auto"]
+    mesh, report = tmp_path / "tangent.ply", tmp_path / "r.json"
+    mesh_family.write_ply(str(mesh), *mesh_family.make(member))
+    r = subprocess.run([QUASIDEV, "approximate", str(mesh), str(tmp_path / "out.ply"), "--report",
+                        str(report)], capture_output=True, text=True, check=True)
+    stronger = [c for c in json.loads(report.read_text())["patches"][0]["candidates"]
+                if c["defect_weight_factor"] != 1]
+    assert sorted(c["defect_weight_factor"] for c in stronger) == [10, 30, 100], stronger
+    kept = [c for c in stronger if c["kept"]]
+    assert len(kept) == 1 and all(c["abd_reduction"] <= kept[0]["abd_reduction"] for c in stronger)
+    assert "defect ×100 weight" in r.stdout and "(stopped: moved further than the pick)" in r.stdout
+    outdone = [c for c in stronger if c["outdone_by_weight_factor"] is not None]
+    assert outdone, stronger
+    for c in outdone:
+        why = ("(stopped: its pace would not beat" if c["outpaced"] else "(passed, but")
+        assert f"{why} defect ×{c['outdone_by_weight_factor']:g} weight" in r.stdout, r.stdout

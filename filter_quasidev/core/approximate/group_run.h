@@ -41,16 +41,16 @@ struct GroupRun {
 
 // Developability::Auto, where the race picked curve targets (curve or both) for a patch of the
 // group and left more than δ_ABD of the start's G_ABD (less, and nothing could remove a meaningful
-// share more): the angle-defect rows alone at this many times the defect weight run from the start,
-// and the group keeps them only where they dominate the pick: less G_ABD left, and the vertices
-// moved no further, on average or at most. No trade-off is made for the user (--defect-weight
-// moves along the curve); the run stops as soon as an iterate has moved further than the pick's
-// result, or, as a candidate of the race does, once kNothingRounds iterations removed nothing, and
-// is judged by its best iterate within that move (the irregular lampshade with bumps of 0.3 AE of
-// seed 3: both's 62 % against the rows' 76 % within its move and 92 % a step beyond it).
-// Where triangles do not follow the rulings (an irregular triangulation of a smooth cylinder, cone
-// or lampshade) no face normal can reach the curve targets, while the rows, which only ask each
-// vertex's angles to sum to 2π, can: on such members of scripts/mesh_family.py
+// share more): the angle-defect rows alone at each of the stronger weights below run from the
+// start, and the group keeps the best of them only where it dominates the pick: less G_ABD left,
+// and the vertices moved no further, on average or at most. No trade-off is made for the user
+// (--defect-weight moves along the curve); the run stops as soon as an iterate has moved further
+// than the pick's result, or, as a candidate of the race does, once kNothingRounds iterations
+// removed nothing, and is judged by its best iterate within that move (the irregular lampshade with
+// bumps of 0.3 AE of seed 3: both's 62 % against the rows' 76 % within its move and 92 % a step
+// beyond it). Where triangles do not follow the rulings (an irregular triangulation of a smooth
+// cylinder, cone or lampshade) no face normal can reach the curve targets, while the rows, which
+// only ask each vertex's angles to sum to 2π, can: on such members of scripts/mesh_family.py
 // (`irregular`) the pick removed 52–99 % where these rows remove 85–100 % and move less. Where the
 // pick is the rows at the given weight, a stronger pull removes more by moving further (the
 // anchors' share of the least-squares energy grows with the weight), which is the user's
@@ -69,8 +69,15 @@ struct GroupRun {
 // kept only where they leave at most kStrongerRowsLeave of the pick's G_ABD. (Bounded by the
 // tolerance of each iteration alone, they took a smooth torus from 0.6 % to 95 % by moving it 7.4
 // AE, a trade only the user can make.) Not above kMaxDefectRaceVertices, where the rows are not
-// raced for their cost. Measurements behind the factor and the share: docs/robustness.md.
-constexpr double kStrongerRowsFactor = 100;
+// raced for their cost. Measurements behind the weights and the share: docs/robustness.md.
+//
+// The stronger rows' weights, as factors of the defect weight: each runs from the start against
+// the same bar, and the one that passes it and leaves least G_ABD is kept. A stronger pull
+// removes more per iteration but reaches the move bound sooner; which of them goes furthest
+// within the bound differs from mesh to mesh, so auto measures them all (stop 62: of the 86
+// members of four sweeps where ×30 or ×10 alone did better than ×100 alone, 38 did best at ×30
+// and 48 at ×10; ×3 and ×300 made no further member pass: docs/robustness.md).
+constexpr double kStrongerRowsFactors[] = {100, 30, 10};
 // Where the rows at the given weight creep (the smooth tangent developables of
 // scripts/mesh_family.py, whose rows stop with up to 64 % of G_ABD left), the stronger rows
 // bounded by a curve candidate's move left 0.2–24 % of what the pick left on the 11 grid members

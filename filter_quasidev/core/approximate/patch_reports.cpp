@@ -15,7 +15,7 @@ std::vector<CandidateReport> candidate_reports(const std::vector<CandidateFigure
     out.push_back({c.term, c.iterations,
                    initial_g > 0 ? 100.0 * (initial_g - c.g_abd) / initial_g : 0.0, c.mean_disp,
                    c.kept, c.dropped, c.not_run, c.weight_factor, c.moved_further, c.late,
-                   c.fell_short, c.bounded_by, c.after_plateau});
+                   c.fell_short, c.bounded_by, c.after_plateau, c.outdone_by, c.outpaced});
   return out;
 }
 

@@ -58,14 +58,18 @@ namespace {
 
 // How a candidate ended, for candidates_text: " (kept)", " (left after the trial)" or nothing,
 // after when it started if it started late (term_race.h); for auto's stronger rows (group_run.h)
-// why they were kept, stopped or not kept, against the pick, against the candidate whose move
-// bounds them after a pick of the rows, or after the rows' plateau.
+// why they were kept, stopped or not kept (or outdone by another weight), against the pick, against
+// the candidate whose move bounds them after a pick of the rows, or after the rows' plateau.
 std::string outcome_text(const CandidateReport& c) {
   if (c.weight_factor == 1) {
     std::string what = c.kept ? "kept" : c.dropped ? "left after the trial" : "";
     if (c.late) what = "started when the leader stopped" + (what.empty() ? "" : "; " + what);
     return what.empty() ? "" : " (" + what + ")";
   }
+  if (c.outpaced && !c.kept)
+    return format_text(" (stopped: its pace would not beat defect ×%g weight)", c.outdone_by);
+  if (c.outdone_by > 0)
+    return format_text(" (passed, but defect ×%g weight left less)", c.outdone_by);
   if (c.after_plateau) {  // bounded by the tolerance, and no pace stops them
     if (c.kept) return " (kept: half the pick's G_ABD left or less, after its plateau)";
     if (!c.dropped) return " (not kept: left more than half the pick's G_ABD)";

@@ -91,6 +91,10 @@ struct CandidateReport {
                                  // them (group_run.h); None: the pick's, or none (after_plateau)
   bool after_plateau = false;    // the stronger rows after the rows' plateau: the tolerance alone
                                  // bounds them (group_run.h)
+  double outdone_by = 0;         // the stronger rows: the weight factor of rows that left less
+                                 // where these passed their bar, or outpaced these (0: neither)
+  bool outpaced = false;         // the stronger rows: stopped where their pace would not beat the
+                                 // rows kept so far
   bool started() const { return not_run == NotRun::No; }
 };
 

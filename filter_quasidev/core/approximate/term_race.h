@@ -111,6 +111,10 @@ struct CandidateFigures {
   bool after_plateau = false;    // the stronger rows after the rows' plateau: the tolerance alone
                                  // bounds them (group_run.h)
   bool late = false;             // started once the leader had stopped (both, term_race.h)
+  double outdone_by = 0;         // the stronger rows: the weight factor of rows that left less
+                                 // where these passed their bar, or outpaced these (0: neither)
+  bool outpaced = false;         // the stronger rows: stopped where their pace would not beat the
+                                 // rows kept so far
 };
 
 // The best G_ABD at max_iter if it falls on at its pace over the last `window` (≥ 1) accepted
