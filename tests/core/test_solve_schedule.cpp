@@ -68,8 +68,11 @@ TEST(SolveSchedule, ASecondGroupingSolvesOnlyTheGroupsItChanges) {
   std::vector<int> joined = p.patch;  // patches 0 and 1 in one group, the others as they were
   for (int& g : joined) g = g == 1 ? 0 : g;
 
-  std::vector<ScheduledRun> held = fresh_runs(schedule(p, p.patch, {}));
-  ASSERT_EQ(held.size(), 6u);  // each group's first run started from the input
+  SolveSchedule first = schedule(p, p.patch, {});
+  size_t ran_again = 0;  // groups the never-worse rule ran again: they race again, so are fresh
+  for (const std::vector<int>& round : first.reruns) ran_again += round.size() - 1;
+  std::vector<ScheduledRun> held = fresh_runs(std::move(first));
+  ASSERT_EQ(held.size(), 6u + ran_again);  // each group's first run, from the input, and reruns
   for (const ScheduledRun& r : held) EXPECT_TRUE(r.fresh && !r.reused);
 
   const SolveSchedule again = schedule(p, joined, held);
@@ -97,6 +100,32 @@ TEST(SolveSchedule, RunsFromAnotherStartAreNotTaken) {
   for (const auto* runs : {&second.runs, &second.replaced})
     for (const ScheduledRun& r : *runs)  // patch 3's start differs, by however little
       EXPECT_FALSE(r.reused && r.run.fits.front().id == 3);
+}
+
+// A group the never-worse rule runs again races its terms again from where its neighbours left
+// it: its term is that of the run that stands, and so are the candidates it reports (before,
+// it took the term its replaced run had raced, and reported no race or an earlier pass's).
+TEST(SolveSchedule, AGroupRunAgainRacesAgain) {
+  Problem p = test::bumpy_cylinder(48, 24, 0.08, 0.0, 6);
+  p.params.max_iter = 4;
+  p.params.tolerance = 0.2;
+  validate(p);
+  const SolveSchedule s = schedule(p, p.patch, {});
+  ASSERT_FALSE(s.reruns.empty());
+  size_t checked = 0;
+  for (const std::vector<int>& round : s.reruns)
+    for (size_t k = 1; k < round.size(); ++k)  // the first group's result stands
+      for (const ScheduledRun& r : s.runs) {
+        const PatchFit& fit = r.run.fits.front();
+        if (fit.id != round[k] || fit.reason != TermReason::Measured) continue;
+        ASSERT_FALSE(r.run.race.empty()) << "patch " << fit.id;
+        const auto kept = std::find_if(r.run.race.begin(), r.run.race.end(),
+                                       [](const CandidateFigures& c) { return c.kept; });
+        ASSERT_NE(kept, r.run.race.end()) << "patch " << fit.id;
+        EXPECT_EQ(kept->term, fit.term) << "patch " << fit.id;
+        ++checked;
+      }
+  EXPECT_GT(checked, 0u);
 }
 
 // Both groupings of a join trial are solved from runs made at once, each group two groupings

@@ -1,5 +1,7 @@
 // The schedule of a solve: its passes, the rounds of each pass (solve_rounds.h) and the re-runs
-// the never-worse rule asks for (§5.4). One pass with fixed seams (the paper). Free seams take
+// the never-worse rule asks for (§5.4; a group run again races its terms again, from where its
+// neighbours left it, so its term and its reported candidates come from the run that stands).
+// One pass with fixed seams (the paper). Free seams take
 // three, each starting where the one before ended, so none can undo another: all patches in
 // one group (its one step scale is set by the worst patch; Developability::Auto races one term
 // for all of them), then each solve group with its seams held (where Auto measures each patch's
