@@ -210,11 +210,16 @@ StrongerRun run_stronger_rows(const GroupRun& run, const StrongerBar& bar, doubl
   const auto removed_nothing = [&] {
     return d.iterations() >= kNothingRounds && d.best_g_abd() >= d.initial_g_abd();
   };
-  const auto falls_short = [&] {
+  // Where their pace over their accepted iterations so far (up to kPlateauIterations) would take
+  // them by maxIter; none before the first.
+  const auto projected = [&] {
     const int accepted = static_cast<int>(d.best_track().size()) - 1;
-    return bar.kind == StrongerBound::Candidate && accepted >= 1 &&
-           projected_g_abd(d, params.max_iter, std::min(accepted, kPlateauIterations)) >
-               bar.most_left;
+    return accepted >= 1
+               ? projected_g_abd(d, params.max_iter, std::min(accepted, kPlateauIterations))
+               : -std::numeric_limits<double>::infinity();
+  };
+  const auto falls_short = [&] {
+    return bar.kind == StrongerBound::Candidate && projected() > bar.most_left;
   };
   // After the rows' plateau their own first plateau judges them instead: where it finds them
   // above the bar, they stop there rather than move their anchors for a second phase (on the
@@ -227,11 +232,7 @@ StrongerRun run_stronger_rows(const GroupRun& run, const StrongerBar& bar, doubl
   // (to_beat: its G_ABD; infinite before any is kept): on the four sweeps of docs/robustness.md
   // this cut auto's factorisations by 6–16 %, and 11 of the 86 members the rungs improve gained
   // less (by up to 20 points; none fell below the rows at one weight).
-  const auto outpaced = [&] {
-    const int accepted = static_cast<int>(d.best_track().size()) - 1;
-    return accepted >= 1 &&
-           projected_g_abd(d, params.max_iter, std::min(accepted, kPlateauIterations)) > to_beat;
-  };
+  const auto outpaced = [&] { return projected() > to_beat; };
   bool short_pace = false, beaten = false;
   while (d.step() && !moved_further(d.current(), bar.bound) && !removed_nothing() &&
          !(short_pace = falls_short() || stalled_short()) && !(beaten = outpaced()))

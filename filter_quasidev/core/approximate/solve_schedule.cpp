@@ -225,13 +225,6 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
       ++done;
     });
   };
-  // The per-patch races of a group whose result stands decide for the later passes (not those
-  // of a run about to be made again: its rerun races from where its neighbours left it).
-  const auto decide = [&](size_t gi, const Pass& p) {
-    if (p.per_group)
-      for (const PatchFit& fit : out.runs[gi].run.fits)
-        if (fit.reason == TermReason::Measured) decided[fit.id] = fit.term;
-  };
   const auto keep = [&](size_t gi) {  // a group's result into out.V
     const GroupRun& run = out.runs[gi].run;
     for (size_t l = 0; l < run.group.global_vertex.size(); ++l)
@@ -249,27 +242,28 @@ SolveSchedule run_schedule(const SolveInput& in, const std::vector<int>& group,
           together ? round_figures(out.V, F, in.interior, groups, round) : RoundFigures();
       run_round(round, p);
       for (size_t gi : round) keep(gi);
-      if (!together ||
-          !round_made_worse(before, round_figures(out.V, F, in.interior, groups, round), round,
-                            out.runs)) {
-        for (size_t gi : round) decide(gi, p);
-        continue;
+      if (together && round_made_worse(before, round_figures(out.V, F, in.interior, groups, round),
+                                       round, out.runs)) {
+        // Never worse (§5.4): each group's step was checked with its neighbours where they
+        // started, and together they raised the curvature where they meet. The first group's
+        // result stands; the others run again, each from the one before, as they used to.
+        std::vector<int> ids;
+        for (size_t gi : round)
+          for (const PatchFit& fit : out.runs[gi].run.fits) ids.push_back(fit.id);
+        out.reruns.push_back(ids);
+        out.V = start;
+        keep(round.front());
+        for (size_t k = 1; k < round.size(); ++k) {
+          run_round({round[k]}, p);
+          keep(round[k]);
+        }
       }
-      // Never worse (§5.4): each group's step was checked with its neighbours where they
-      // started, and together they raised the curvature where they meet. The first group's
-      // result stands; the others run again, each from the one before, as they used to.
-      std::vector<int> ids;
-      for (size_t gi : round)
-        for (const PatchFit& fit : out.runs[gi].run.fits) ids.push_back(fit.id);
-      out.reruns.push_back(ids);
-      out.V = start;
-      keep(round.front());
-      decide(round.front(), p);
-      for (size_t k = 1; k < round.size(); ++k) {
-        run_round({round[k]}, p);
-        keep(round[k]);
-        decide(round[k], p);
-      }
+      // The per-patch races of the runs that stand decide for the later passes (a run made
+      // again raced again from where its neighbours left it; no group reads another's terms).
+      if (p.per_group)
+        for (size_t gi : round)
+          for (const PatchFit& fit : out.runs[gi].run.fits)
+            if (fit.reason == TermReason::Measured) decided[fit.id] = fit.term;
     }
   }
   return out;
