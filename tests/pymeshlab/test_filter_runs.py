@@ -82,7 +82,13 @@ def test_vertex_quality_is_k_after_and_colour_is_a_ramp(meshset):
     K1 = measures.gaussian_curvature(m.vertex_matrix(), F0)
     q = m.vertex_scalar_array()
     interior = measures.interior_vertices(len(V0), F0)
-    np.testing.assert_allclose(q[interior], K1[interior], rtol=1e-6, atol=1e-9 * np.abs(K1).max())
+    # K = (2π − Σθ) / A: the angle sum's rounding (some 1e-15 rad, here and in the plugin) is an
+    # absolute error of the defect, so each vertex is allowed 1e-12 rad over its own area; a
+    # tolerance scaled by the largest |K| failed once the output was nearly developable.
+    V1 = m.vertex_matrix()
+    area = measures.mixed_areas(V1, F0, measures.corner_angles(V1, F0))
+    np.testing.assert_array_less(np.abs(q - K1)[interior],
+                                 (1e-6 * np.abs(K1) + 1e-12 / area)[interior])
     assert fig["max_abs_k_after"] == pytest.approx(np.abs(K1).max(), rel=1e-6)
     assert m.has_vertex_color()
     colours = m.vertex_color_matrix()

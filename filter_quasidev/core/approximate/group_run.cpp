@@ -175,112 +175,172 @@ std::optional<StrongerBar> stronger_bar(const GroupRun& run, const Figures& pick
   return StrongerBar{bound, most_left, StrongerBound::Candidate, furthest->term};
 }
 
-// One rung of auto's stronger rows (kStrongerRowsFactors): the rows at `factor` times the
-// defect weight from the start, judged against `bar`; to_beat: the G_ABD of the rung kept so far.
+// What a rung of auto's stronger rows gives.
 struct StrongerRun {
   CandidateFigures figures;
   DeformOutcome outcome;
-  std::vector<PatchFit> fits;  // (the run that referenced them has finished)
   bool passes = false;
 };
 
-// layouts: the race's, whose order and analyses the rows share (their system scales the rows'
-// weights, deformation_system.h).
-StrongerRun run_stronger_rows(const GroupRun& run, const StrongerBar& bar, double factor,
-                              double to_beat, const Params& params, SystemLayouts& layouts,
-                              size_t threads, const std::function<void(double)>& progress) {
-  const GroupMesh& g = run.group;
-  Params stronger = params;
-  stronger.defect_weight *= factor;
-  StrongerRun r;
-  r.fits = with_term(run.fits, Term::Defect);
-  Deformation d = start_run(g, r.fits, layouts, stronger, threads);
-  // They stop at their first iterate beyond the bound, and are judged by their best one within
-  // it: dominating the pick, it is kept though a later one moved further.
-  d.keep_best_within([&](const Figures& f) { return !moved_further(f, bar.bound); });
-  // As in the race (term_race.h), rows that removed nothing in kNothingRounds iterations stop;
-  // bounded by a candidate's move, so do rows whose pace would not take them to the bar by
-  // maxIter, judged from their first accepted iteration on (their pace over their iterations so
-  // far, up to kPlateauIterations): these rows take their largest steps first, so the pace of
-  // their first ones is the most they can hope for (on the garments at --max-iter 5, where none
-  // passes, they stop 54 of their 131 iterations sooner; on the sweeps none they kept stops).
-  // After the rows' plateau the pace does not judge them: they start slowly and gather pace (the
-  // irregular tangent with bumps of 0.5 AE, 0.16 wide, 12k faces: 28 % after six iterations,
-  // 99 % after thirty), and the pick has spent fewer iterations than maxIter.
-  const auto removed_nothing = [&] {
-    return d.iterations() >= kNothingRounds && d.best_g_abd() >= d.initial_g_abd();
-  };
+// One rung of auto's stronger rows (kStrongerRowsFactors): the rows at `factor` times the
+// defect weight from the start, judged against the bar. The rungs step in turn, each reading only
+// its own run, so their steps of one round go at once on idle threads.
+class StrongerRung {
+ public:
+  // layouts: the race's, whose order and analyses the rows share (their system scales the rows'
+  // weights, deformation_system.h); fits: the group's with the rows, outliving the run.
+  StrongerRung(const GroupRun& run, const StrongerBar& bar, double factor,
+               const std::vector<PatchFit>& fits, const Params& params, SystemLayouts& layouts,
+               size_t threads)
+      : bar_(bar),
+        factor_(factor),
+        max_iter_(params.max_iter),
+        d_(start_run(run.group, fits, layouts, with_factor(params, factor), threads)) {
+    // They stop at their first iterate beyond the bound, and are judged by their best one
+    // within it: dominating the pick, it is kept though a later one moved further.
+    d_.keep_best_within([bound = bar.bound](const Figures& f) { return !moved_further(f, bound); });
+  }
+
+  // One iteration; false once the rung has stopped, by its own stop rule or by the tests below.
+  bool step() {
+    if (!going_) return false;
+    going_ = d_.step() && !moved_further(d_.current(), bar_.bound) && !removed_nothing() &&
+             !(short_pace_ = falls_short() || stalled_short());
+    return going_;
+  }
+  bool going() const { return going_; }
+  int iterations() const { return d_.iterations(); }
+  double factor() const { return factor_; }
+  double best_g_abd() const { return d_.best_g_abd(); }
+  // Whether its best iterate so far passes the bar.
+  bool passes() const {
+    return bar_.kind != StrongerBound::Pick ? d_.best().g_abd <= bar_.most_left
+                                            : d_.best().g_abd < bar_.most_left;
+  }
+  // Stops it where its pace would not take it below `to_beat` by maxIter (the G_ABD of a rung
+  // that stopped passing, whose weight factor is `by`).
+  void stop_if_outpaced(double to_beat, double by) {
+    if (going_ && projected() > to_beat) going_ = false, outpaced_by_ = by;
+  }
+
+  // Its figures and outcome (call once, after the last step).
+  StrongerRun finish() {
+    StrongerRun r;
+    r.passes = passes();  // (its best iterate is within the bound: keep_best_within above)
+    r.figures = candidate_figures(Term::Defect, d_);
+    r.figures.weight_factor = factor_;
+    r.figures.dropped = d_.running();  // stopped here: moved further, removed nothing, fell short
+                                       // or was outpaced
+    r.figures.moved_further = r.figures.dropped && moved_further(d_.current(), bar_.bound);
+    r.figures.fell_short = short_pace_;  // the step's last tests: it ended there, still running
+    r.figures.outpaced = outpaced_by_ > 0;
+    r.figures.outdone_by = outpaced_by_;
+    r.figures.bounded_by = bar_.bounded_by;
+    r.figures.after_plateau = bar_.kind == StrongerBound::Tolerance;
+    r.outcome = d_.finish();
+    if (r.passes && r.figures.moved_further) r.outcome.stop = PatchStop::MoveBound;
+    return r;
+  }
+
+ private:
+  static Params with_factor(Params params, double factor) {
+    params.defect_weight *= factor;
+    return params;
+  }
+  // As in the race (term_race.h), rows that removed nothing in kNothingRounds iterations stop.
+  bool removed_nothing() const {
+    return d_.iterations() >= kNothingRounds && d_.best_g_abd() >= d_.initial_g_abd();
+  }
+  // Bounded by a candidate's move, rows stop whose pace over their accepted iterations so far (up
+  // to kPlateauIterations) would not take them to the bar by maxIter (projected_g_abd,
+  // term_race.h): these rows take their largest steps first, so the pace of their first ones is
+  // the most they can hope for (on the garments at --max-iter 5, where none passes, they stop 54
+  // of their 131 iterations sooner; on the sweeps none they kept stops). After the rows' plateau
+  // the pace does not judge them: they start slowly and gather pace (the irregular tangent with
+  // bumps of 0.5 AE, 0.16 wide, 12k faces: 28 % after six iterations, 99 % after thirty), and
+  // the pick has spent fewer iterations than maxIter.
+  bool falls_short() const {
+    return bar_.kind == StrongerBound::Candidate && projected() > bar_.most_left;
+  }
   // Where their pace over their accepted iterations so far (up to kPlateauIterations) would take
   // them by maxIter; none before the first.
-  const auto projected = [&] {
-    const int accepted = static_cast<int>(d.best_track().size()) - 1;
-    return accepted >= 1
-               ? projected_g_abd(d, params.max_iter, std::min(accepted, kPlateauIterations))
-               : -std::numeric_limits<double>::infinity();
-  };
-  const auto falls_short = [&] {
-    return bar.kind == StrongerBound::Candidate && projected() > bar.most_left;
-  };
+  double projected() const {
+    const int accepted = static_cast<int>(d_.best_track().size()) - 1;
+    return accepted >= 1 ? projected_g_abd(d_, max_iter_, std::min(accepted, kPlateauIterations))
+                         : -std::numeric_limits<double>::infinity();
+  }
   // After the rows' plateau their own first plateau judges them instead: where it finds them
   // above the bar, they stop there rather than move their anchors for a second phase (on the
   // sweeps none reached the bar in one; on the garments the second phases were half their cost).
-  const auto stalled_short = [&] {
-    return bar.kind == StrongerBound::Tolerance && d.anchors_moved() &&
-           d.best_g_abd() > bar.most_left;
-  };
-  // A rung after a kept one stops once its pace would not take it below that one by maxIter
-  // (to_beat: its G_ABD; infinite before any is kept): on the four sweeps of docs/robustness.md
-  // this cut auto's factorisations by 6–16 %, and 11 of the 86 members the rungs improve gained
-  // less (by up to 20 points; none fell below the rows at one weight).
-  const auto outpaced = [&] { return projected() > to_beat; };
-  bool short_pace = false, beaten = false;
-  while (d.step() && !moved_further(d.current(), bar.bound) && !removed_nothing() &&
-         !(short_pace = falls_short() || stalled_short()) && !(beaten = outpaced()))
-    progress(static_cast<double>(d.iterations()) / params.max_iter);
-  // (Their best iterate is within the bound: keep_best_within above.)
-  r.passes = bar.kind != StrongerBound::Pick ? d.best().g_abd <= bar.most_left
-                                             : d.best().g_abd < bar.most_left;
-  r.figures = candidate_figures(Term::Defect, d);
-  r.figures.weight_factor = factor;
-  r.figures.dropped = d.running();  // stopped here: moved further, removed nothing, fell short or
-                                    // was outpaced
-  r.figures.moved_further = r.figures.dropped && moved_further(d.current(), bar.bound);
-  r.figures.fell_short = short_pace;  // the loop's last tests: it ended there, still running
-  r.figures.outpaced = beaten;
-  r.figures.bounded_by = bar.bounded_by;
-  r.figures.after_plateau = bar.kind == StrongerBound::Tolerance;
-  r.outcome = d.finish();
-  if (r.passes && r.figures.moved_further) r.outcome.stop = PatchStop::MoveBound;
-  return r;
-}
+  bool stalled_short() const {
+    return bar_.kind == StrongerBound::Tolerance && d_.anchors_moved() &&
+           d_.best_g_abd() > bar_.most_left;
+  }
 
-// Auto's stronger angle-defect rows after its pick: every rung of kStrongerRowsFactors runs
-// against the same bar, and the group keeps the rung that passes it and leaves least G_ABD (on a
-// tie the stronger pull, tried first), else the pick.
+  const StrongerBar& bar_;
+  double factor_;
+  int max_iter_;
+  Deformation d_;
+  bool going_ = true;
+  bool short_pace_ = false;
+  double outpaced_by_ = 0;  // the weight factor of the rung that outpaced it (0: none)
+};
+
+// Auto's stronger angle-defect rows after its pick: every rung of kStrongerRowsFactors runs from
+// the start against the same bar, one iteration each in turn, the steps of a round at once on
+// idle threads, and the group keeps the rung that passes it and leaves least G_ABD (on a tie the
+// stronger pull), else the pick. At the end of each round, a rung stops once its pace would not
+// take it below a stronger rung that has stopped and passes (the one that leaves least of
+// those). Each step reads only its own rung and the rule the round's end, so neither the outcome
+// nor the figures depend on the threads. Run one after the other (stop 62), a weaker rung was
+// judged from its first iteration on by a stronger one kept before it started; now it is judged
+// only once that one has stopped, so it mostly runs further: over the four sweeps of
+// docs/robustness.md 27 members leave less G_ABD and none more, for 5–16 % more factorisations and
+// 1–5 % less engine time on two threads ("The rungs at once" there).
 void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layouts, size_t threads,
-                       const std::function<void(double)>& progress) {
+                       common::IdleThreads& idle, const std::function<void(double)>& progress) {
   if (run.outcome.history.empty()) return;                  // (an unmoved pick: nothing moves less)
   const Figures pick = run.outcome.history.back().figures;  // its best iterate's
   // Less than δ_ABD of the start's G_ABD left: nothing could remove a meaningful share more.
   if (pick.g_abd <= params.stop_abd / 100 * run.initial_g) return;
   const std::optional<StrongerBar> bar = stronger_bar(run, pick);
   if (!bar) return;
+  const std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);  // outlives the rungs
+  std::vector<StrongerRung> rungs;
+  rungs.reserve(std::size(kStrongerRowsFactors));
+  for (const double factor : kStrongerRowsFactors)
+    rungs.emplace_back(run, *bar, factor, fits, params, layouts, threads);
+  for (;;) {
+    std::vector<size_t> stepping;
+    for (size_t k = 0; k < rungs.size(); ++k)
+      if (rungs[k].going()) stepping.push_back(k);
+    if (stepping.empty()) break;
+    common::run_with_idle_threads(idle, stepping.size(),
+                                  [&](size_t i) { rungs[stepping[i]].step(); });
+    double to_beat = std::numeric_limits<double>::infinity(), by = 0;
+    for (StrongerRung& r : rungs) {  // the stronger pull first
+      r.stop_if_outpaced(to_beat, by);
+      if (!r.going() && r.passes() && r.best_g_abd() < to_beat)
+        to_beat = r.best_g_abd(), by = r.factor();
+    }
+    int most = 0;
+    for (const StrongerRung& r : rungs) most = std::max(most, r.iterations());
+    progress(static_cast<double>(most) / params.max_iter);
+  }
   std::optional<StrongerRun> kept;
-  size_t kept_index = 0;  // of its figures in run.race
-  StageTimes spent;       // by every rung but the kept one
-  for (const double factor : kStrongerRowsFactors) {
-    const double to_beat = kept ? kept->figures.g_abd : std::numeric_limits<double>::infinity();
-    StrongerRun r =
-        run_stronger_rows(run, *bar, factor, to_beat, params, layouts, threads, progress);
+  size_t kept_index = 0;              // of its figures in run.race
+  StageTimes spent;                   // by every rung but the kept one
+  for (StrongerRung& rung : rungs) {  // the stronger pull first
+    StrongerRun r = rung.finish();
     if (!r.passes || (kept && !(r.figures.g_abd < kept->figures.g_abd))) {
-      if (r.passes || r.figures.outpaced) r.figures.outdone_by = kept->figures.weight_factor;
+      if (r.passes) r.figures.outdone_by = kept->figures.weight_factor;
       spent += r.outcome.times;
       run.race.push_back(r.figures);
       continue;
     }
     if (kept) {
       run.race[kept_index].kept = false;
-      run.race[kept_index].outdone_by = factor;
+      run.race[kept_index].outdone_by = r.figures.weight_factor;
       spent += kept->outcome.times;
     }
     r.figures.kept = true;
@@ -296,7 +356,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   kept->outcome.times += run.outcome.times;
   kept->outcome.times += spent;
   run.outcome = std::move(kept->outcome);
-  run.fits = std::move(kept->fits);
+  run.fits = fits;
   run.targets = group_targets(run.group, run.fits);
 }
 
@@ -342,7 +402,7 @@ GroupRun run_group(const SolveInput& in, const Positions& V, const std::vector<i
   } else if (candidates.size() > 1) {
     SystemLayouts layouts(g, params, in.ae);  // the race's and the stronger rows'
     race(run, candidates, params, layouts, threads, idle, forward);
-    try_stronger_rows(run, params, layouts, threads, forward);
+    try_stronger_rows(run, params, layouts, threads, idle, forward);
   } else if (candidates == std::vector<Term>{Term::Curve}) {  // by kMaxDefectRaceVertices
     curve_then_defect(run, params, in.ae, threads, progress);
   } else {
