@@ -201,12 +201,10 @@ class StrongerRung {
     d_.keep_best_within([bound = bar.bound](const Figures& f) { return !moved_further(f, bound); });
   }
 
-  // One iteration; false once the rung has stopped, by its own stop rule or by the tests below.
-  bool step() {
-    if (!going_) return false;
+  // One iteration of a rung still going; it stops by its own stop rule or by the tests below.
+  void step() {
     going_ = d_.step() && !moved_further(d_.current(), bar_.bound) && !removed_nothing() &&
              !(short_pace_ = falls_short() || stalled_short());
-    return going_;
   }
   bool going() const { return going_; }
   int iterations() const { return d_.iterations(); }
@@ -305,7 +303,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   if (pick.g_abd <= params.stop_abd / 100 * run.initial_g) return;
   const std::optional<StrongerBar> bar = stronger_bar(run, pick);
   if (!bar) return;
-  const std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);  // outlives the rungs
+  std::vector<PatchFit> fits = with_term(run.fits, Term::Defect);  // outlives the rungs' steps
   std::vector<StrongerRung> rungs;
   rungs.reserve(std::size(kStrongerRowsFactors));
   for (const double factor : kStrongerRowsFactors)
@@ -356,7 +354,7 @@ void try_stronger_rows(GroupRun& run, const Params& params, SystemLayouts& layou
   kept->outcome.times += run.outcome.times;
   kept->outcome.times += spent;
   run.outcome = std::move(kept->outcome);
-  run.fits = fits;
+  run.fits = std::move(fits);  // (every rung has finished)
   run.targets = group_targets(run.group, run.fits);
 }
 
