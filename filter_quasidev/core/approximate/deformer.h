@@ -98,9 +98,13 @@ class Deformation {
   double best_g_abd() const { return best_.g_abd; }
   const Figures& best() const { return best_; }     // the best iterate's figures
   const Figures& current() const { return last_; }  // the last accepted iterate's
-  // Whether the never-worse rule shortened the last accepted step (a full one was refused).
-  bool last_step_shortened() const {
-    return !out_.history.empty() && out_.history.back().step_scale < 1;
+  // Whether the never-worse rule refused the last iteration's full step at the weights it began
+  // with: the accepted step was shortened, or solved again with weaker developability weights.
+  bool last_full_step_refused() const {
+    const size_t n = out_.history.size();
+    if (n == 0) return false;
+    const double weights_before = n > 1 ? out_.history[n - 2].weight_scale : 1;
+    return out_.history.back().step_scale < 1 || out_.history.back().weight_scale < weights_before;
   }
   // The best G_ABD after each accepted iteration ([0]: the input's).
   const std::vector<double>& best_track() const { return best_track_; }

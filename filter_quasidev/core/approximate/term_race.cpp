@@ -199,9 +199,10 @@ RaceOutcome race_terms(const std::vector<Term>& terms,
         if (k != lead && behind(k)) drop(k);
     if (lead_runs && round >= drop_worst_after && !worst_dropped) {
       worst_dropped = true;
-      // A trailer whose last step was shortened is ranked by steps it was not allowed to take.
+      // A trailer whose last full step was refused is ranked by steps it was not allowed to take.
       const size_t worst = trailer(runs, dropped);
-      if (std::count(dropped.begin(), dropped.end(), 0) > 2 && !runs[worst].last_step_shortened())
+      if (std::count(dropped.begin(), dropped.end(), 0) > 2 &&
+          !runs[worst].last_full_step_refused())
         drop(worst);
     }
     if (spent(runs[lead])) {
