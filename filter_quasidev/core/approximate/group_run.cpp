@@ -203,8 +203,10 @@ class StrongerRung {
 
   // One iteration of a rung still going; it stops by its own stop rule or by the tests below.
   void step() {
-    going_ = d_.step() && !moved_further(d_.current(), bar_.bound) && !removed_nothing() &&
-             !(short_pace_ = falls_short() || stalled_short());
+    going_ = d_.step() && !moved_further(d_.current(), bar_.bound) && !removed_nothing();
+    if (!going_) return;
+    short_pace_ = falls_short() || stalled_short();
+    going_ = !short_pace_;
   }
   bool going() const { return going_; }
   int iterations() const { return d_.iterations(); }
@@ -212,8 +214,8 @@ class StrongerRung {
   double best_g_abd() const { return d_.best_g_abd(); }
   // Whether its best iterate so far passes the bar.
   bool passes() const {
-    return bar_.kind != StrongerBound::Pick ? d_.best().g_abd <= bar_.most_left
-                                            : d_.best().g_abd < bar_.most_left;
+    return bar_.kind != StrongerBound::Pick ? d_.best_g_abd() <= bar_.most_left
+                                            : d_.best_g_abd() < bar_.most_left;
   }
   // Stops it where its pace would not take it below `to_beat` by maxIter (the G_ABD of a rung
   // that stopped passing, whose weight factor is `by`).
@@ -227,10 +229,10 @@ class StrongerRung {
     r.passes = passes();  // (its best iterate is within the bound: keep_best_within above)
     r.figures = candidate_figures(Term::Defect, d_);
     r.figures.weight_factor = factor_;
-    r.figures.dropped = d_.running();  // stopped here: moved further, removed nothing, fell short
-                                       // or was outpaced
+    // Stopped here, not by its own rule: moved further, removed nothing, fell short or outpaced.
+    r.figures.dropped = d_.running();
     r.figures.moved_further = r.figures.dropped && moved_further(d_.current(), bar_.bound);
-    r.figures.fell_short = short_pace_;  // the step's last tests: it ended there, still running
+    r.figures.fell_short = short_pace_;
     r.figures.outpaced = outpaced_by_ > 0;
     r.figures.outdone_by = outpaced_by_;
     r.figures.bounded_by = bar_.bounded_by;
@@ -280,8 +282,8 @@ class StrongerRung {
   int max_iter_;
   Deformation d_;
   bool going_ = true;
-  bool short_pace_ = false;
-  double outpaced_by_ = 0;  // the weight factor of the rung that outpaced it (0: none)
+  bool short_pace_ = false;  // its last step fell short of the bar (falls_short, stalled_short)
+  double outpaced_by_ = 0;   // the weight factor of the rung that outpaced it (0: none)
 };
 
 // Auto's stronger angle-defect rows after its pick: every rung of kStrongerRowsFactors runs from
