@@ -76,12 +76,18 @@ Eigen::VectorXd FramePreconditioner::apply(const Eigen::VectorXd& r) const {
   const Eigen::Index n = static_cast<Eigen::Index>(frame_.size());
   Eigen::VectorXd normal(n);
   Eigen::MatrixXd tangent(n, 2);
-  for (Eigen::Index k = 0; k < n; ++k) {
+  const auto each_block = [&](const auto& work) {
+    parallel_ranges(static_cast<size_t>(n), threads_, kRangeChunk, [&](size_t first, size_t last) {
+      for (auto k = static_cast<Eigen::Index>(first); k < static_cast<Eigen::Index>(last); ++k)
+        work(k);
+    });
+  };
+  each_block([&](Eigen::Index k) {
     const Vec3 c = frame_[static_cast<size_t>(k)] * r.segment<3>(3 * k);
     normal[k] = c[0];
     tangent(k, 0) = c[1];
     tangent(k, 1) = c[2];
-  }
+  });
   Eigen::VectorXd zn;
   Eigen::MatrixXd zt;
   parallel_for(2, threads_, [&](size_t i) {
@@ -91,9 +97,10 @@ Eigen::VectorXd FramePreconditioner::apply(const Eigen::VectorXd& r) const {
       zt = tangent_.solve(tangent);
   });
   Eigen::VectorXd z(r.size());
-  for (Eigen::Index k = 0; k < n; ++k)
+  each_block([&](Eigen::Index k) {
     z.segment<3>(3 * k) =
         frame_[static_cast<size_t>(k)].transpose() * Vec3(zn[k], zt(k, 0), zt(k, 1));
+  });
   return z;
 }
 

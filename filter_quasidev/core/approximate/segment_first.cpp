@@ -20,7 +20,7 @@ bool one_curve_fits(const Problem& p) {
     areas.push_back(face_area(p.V, p.F, static_cast<int>(f)));
   }
   try {
-    fit_targets(normals, areas, static_cast<size_t>(std::max(p.params.threads, 1)));
+    fit_model(normals, areas);  // the targets' projection (Step 1.5) would tell no more
     return true;
   } catch (const Error&) {
     return false;

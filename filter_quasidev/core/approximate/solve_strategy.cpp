@@ -3,6 +3,7 @@
 #include "approximate/common_names.h"
 #include "common/conjugate_gradients.h"
 #include "common/stage_timer.h"
+#include "common/symmetric_product.h"
 #include "common/vertex_order.h"
 
 namespace qd::approximate {
@@ -92,7 +93,7 @@ Eigen::VectorXd SolveStrategy::solve_iteratively(
   Eigen::VectorXd x = start();  // the correction starts at zero
   const auto multiply = [&](const Eigen::VectorXd& p) -> Eigen::VectorXd {
     times_.solve_bytes += kValueBytes * static_cast<double>(M.nonZeros());
-    return M.selfadjointView<Eigen::Lower>() * p;
+    return common::symmetric_product(M, p, threads_);
   };
   const auto precondition = [this](const Eigen::VectorXd& r) {
     times_.solve_bytes += pass_bytes(preconditioner_->entries());

@@ -272,14 +272,16 @@ std::vector<Vec3> project_normals(const GaussModel& model, const std::vector<Vec
   return targets;
 }
 
-TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas,
-                      size_t threads) {
-  const GaussMoments moments = gauss_moments(normals, areas);  // Step 1.1 (throws on bad input)
+namespace {
+
+// Steps 1.2–1.4 from the samples' moments (Step 1.1): c_3D, or the plane's normal.
+std::shared_ptr<const GaussModel> fitted_model(const std::vector<Vec3>& normals,
+                                               const std::vector<double>& areas,
+                                               const GaussMoments& moments) {
   if (fills_sphere(moments))
     throw Error(
         "patch normals fill the sphere: it is far from developable; split it into "
         "smaller, nearly developable patches");
-  TargetFit fit;
   std::unique_ptr<BSpline2> spline;
   Eigen::Matrix3d R;
   if (!is_point_like(normals, areas, moments)) {
@@ -303,11 +305,23 @@ TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double
           "no skeleton curve could be traced in the Gauss image of a patch: it is far "
           "from developable; split it into smaller, nearly developable patches");
   }
-  if (spline)
-    fit.model = std::make_shared<CurveModel>(R, std::move(*spline));
-  else  // Step 1 for a planar patch: the Gauss image is a point
-    fit.model = std::make_shared<PlaneModel>(moments.resultant.normalized());
+  if (spline) return std::make_shared<CurveModel>(R, std::move(*spline));
+  // Step 1 for a planar patch: the Gauss image is a point
+  return std::make_shared<PlaneModel>(moments.resultant.normalized());
+}
 
+}  // namespace
+
+std::shared_ptr<const GaussModel> fit_model(const std::vector<Vec3>& normals,
+                                            const std::vector<double>& areas) {
+  return fitted_model(normals, areas, gauss_moments(normals, areas));
+}
+
+TargetFit fit_targets(const std::vector<Vec3>& normals, const std::vector<double>& areas,
+                      size_t threads) {
+  const GaussMoments moments = gauss_moments(normals, areas);  // Step 1.1 (throws on bad input)
+  TargetFit fit;
+  fit.model = fitted_model(normals, areas, moments);
   // Steps 1.5–1.6: nearest point of c_3D and the area-weighted mean residual angle.
   fit.targets = project_normals(*fit.model, normals, threads);
   double weighted = 0;

@@ -41,6 +41,11 @@ struct TargetFit {
 std::vector<Vec3> project_normals(const GaussModel& model, const std::vector<Vec3>& normals,
                                   size_t threads);
 
+// Steps 1.1–1.4 alone: the model fitted to the samples (normals[i] unit, areas[i] >= 0), no
+// target projected. Throws as fit_targets does.
+std::shared_ptr<const GaussModel> fit_model(const std::vector<Vec3>& normals,
+                                            const std::vector<double>& areas);
+
 // Fits the model to the samples (normals[i] unit, areas[i] >= 0) and projects every sample
 // (on up to `threads` threads). Throws qd::common::Error when the samples fill the sphere (far from
 // developable) or are too few.
