@@ -52,6 +52,18 @@ TEST(SymmetricProduct, SplitProductIsTheSymmetricProductOnAnyThreadCount) {
   EXPECT_EQ((one - two).cwiseAbs().maxCoeff(), 0.0);
 }
 
+TEST(SymmetricProduct, AnUncompressedMatrixGivesTheSameProduct) {
+  const int n = 150000;
+  Eigen::SparseMatrix<double> lower = random_lower(n, 8, 5);
+  const Eigen::VectorXd x = random_vector(n, 6);
+  const Eigen::VectorXd reference = lower.selfadjointView<Eigen::Lower>() * x;
+  lower.uncompress();
+  lower.reserve(Eigen::VectorXi::Constant(n, 2));  // room between the columns
+  ASSERT_FALSE(lower.isCompressed());
+  EXPECT_LT((symmetric_product(lower, x, 2) - reference).cwiseAbs().maxCoeff(),
+            1e-12 * reference.cwiseAbs().maxCoeff());
+}
+
 TEST(SymmetricProduct, SmallMatricesTakeOnePass) {
   const int n = 2000;
   const Eigen::SparseMatrix<double> lower = random_lower(n, 4, 3);

@@ -35,7 +35,8 @@ void add_columns(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd
 Eigen::VectorXd symmetric_product(const Eigen::SparseMatrix<double>& lower,
                                   const Eigen::VectorXd& x, int threads) {
   const Eigen::Index n = lower.cols();
-  if (lower.nonZeros() < kSplitProductFromEntries) return lower.selfadjointView<Eigen::Lower>() * x;
+  if (lower.nonZeros() < kSplitProductFromEntries || !lower.isCompressed())
+    return lower.selfadjointView<Eigen::Lower>() * x;
   // The first column from which half the entries are stored: the second half touches only the
   // rows from there on.
   const int* outer = lower.outerIndexPtr();

@@ -19,6 +19,7 @@ constexpr long kSplitProductFromEntries = 1L << 20;
 
 // (L + Lᵀ − diag L) x for L the lower triangle (with the diagonal) of a symmetric matrix. The
 // result does not depend on `threads`: the halves and the order of their sum are fixed by L.
+// An uncompressed L (room left between its columns) takes Eigen's one pass.
 Eigen::VectorXd symmetric_product(const Eigen::SparseMatrix<double>& lower,
                                   const Eigen::VectorXd& x, int threads);
 
